@@ -1,0 +1,451 @@
+//! The catalogue of 6-dof leg chains: candidates deduplicated, counted per table, compared with
+//! the paper, and written as `catalogue/chains.json`, `chains.csv` and `README.md`.
+//!
+//! Identity is "letters + parallel marks" (the canonical [`Chain`] text): two chains with the
+//! same letters but different parallel groups move differently (§2.2: UU and UU). The first
+//! occurrence in table order wins and keeps its provenance. "Letters only" counts are reported
+//! beside it because they are what the plain-text Appendix can be checked against.
+
+use crate::notation::{Chain, JointKind};
+use crate::paper::{self, Difference, DifferenceKind, RowComparison};
+use crate::synthesis::{self, Candidate, Options, TABLES, tables};
+use serde::Serialize;
+use std::collections::{BTreeMap, BTreeSet};
+use std::fmt::Write as _;
+use std::path::Path;
+
+/// How many joints of each letter a chain has.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize)]
+pub struct Composition {
+    /// Prismatic joints.
+    pub p: u8,
+    /// Revolute joints.
+    pub r: u8,
+    /// Cylindrical joints.
+    pub c: u8,
+    /// Universal joints.
+    pub u: u8,
+    /// Spherical joints.
+    pub s: u8,
+}
+
+impl Composition {
+    /// Counts the letters of a chain.
+    #[must_use]
+    pub fn of(chain: &Chain) -> Self {
+        let mut c = Composition::default();
+        for j in chain.joints() {
+            match j.kind {
+                JointKind::P => c.p += 1,
+                JointKind::R => c.r += 1,
+                JointKind::C => c.c += 1,
+                JointKind::U => c.u += 1,
+                JointKind::S => c.s += 1,
+            }
+        }
+        c
+    }
+}
+
+/// Where an entry was first found.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+pub struct Provenance {
+    /// Appendix table.
+    pub table: u8,
+    /// Row of the table (the paper's numbering).
+    pub row: usize,
+    /// Variant sub-row within the row.
+    pub variant: usize,
+    /// The variant with its parallel marks, e.g. `PPRaRaRR`.
+    pub variant_label: String,
+}
+
+/// One chain of the catalogue.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+pub struct Entry {
+    /// Stable identifier: table and running number, e.g. `T2-017`.
+    pub id: String,
+    /// Canonical notation, letters and parallel marks (see docs/notation.md).
+    pub notation: String,
+    /// Letters only.
+    pub letters: String,
+    /// The family word (PPPRRR, PPRRRR, PRRRRR or RRRRRR).
+    pub family: String,
+    /// The P/R permutation it is read from.
+    pub word: String,
+    /// Axis direction of each primitive joint at the reference configuration.
+    pub axes: String,
+    /// Parallel groups as 1-based primitive positions.
+    pub parallel_groups: Vec<Vec<usize>>,
+    /// Joint letter counts.
+    pub composition: Composition,
+    /// Where it was first generated.
+    pub provenance: Provenance,
+    /// Whether it is the first entry with its letters (the "letters only" identity).
+    pub first_with_letters: bool,
+    /// Whether its letters are printed in the row it comes from.
+    pub printed_in_row: bool,
+    /// Whether its letters are printed anywhere in the Appendix.
+    pub printed_in_appendix: bool,
+}
+
+/// The counts of one table, each "new": not already found in an earlier table.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+pub struct TableCount {
+    /// Table number.
+    pub table: u8,
+    /// Family word.
+    pub family: String,
+    /// The paper's count (0 where the paper gives only a joint count, Tables 7 and 8).
+    pub published: usize,
+    /// Candidates generated (readings, repeats included).
+    pub candidates: usize,
+    /// New distinct chains by letters only.
+    pub letters_only: usize,
+    /// New distinct chains by letters and parallel marks.
+    pub with_marks: usize,
+    /// New distinct letters printed in the table's rows (misprints included).
+    pub printed_letters: usize,
+}
+
+/// The whole catalogue.
+#[derive(Debug, Clone, Serialize)]
+pub struct Catalogue {
+    /// The options of the paper reading used.
+    pub options: Options,
+    /// The entries, in table order.
+    pub entries: Vec<Entry>,
+    /// Per-table counts.
+    pub counts: Vec<TableCount>,
+    /// The row-by-row comparison with the printed Appendix.
+    #[serde(skip)]
+    pub rows: Vec<RowComparison>,
+    /// Every difference from the printed Appendix.
+    #[serde(skip)]
+    pub differences: Vec<Difference>,
+}
+
+impl Catalogue {
+    /// Enumerates, deduplicates and compares with the paper.
+    #[must_use]
+    pub fn generate(options: &Options) -> Self {
+        let candidates = synthesis::enumerate(options);
+        Self::from_candidates(*options, &candidates)
+    }
+
+    /// Builds the catalogue from enumerated candidates (first occurrence wins).
+    #[must_use]
+    pub fn from_candidates(options: Options, candidates: &[Candidate]) -> Self {
+        let (rows, differences) = paper::compare(candidates);
+        let printed_in_row: BTreeSet<(u8, usize, String)> = paper::appendix()
+            .into_iter()
+            .flat_map(|p| p.chains.into_iter().map(move |c| (p.table, p.row, c)))
+            .collect();
+        let printed_anywhere: BTreeSet<&str> =
+            printed_in_row.iter().map(|(_, _, c)| c.as_str()).collect();
+        let mut seen_marks = BTreeSet::new();
+        let mut seen_letters = BTreeSet::new();
+        let mut seen_printed: BTreeSet<String> = BTreeSet::new();
+        let mut entries = Vec::new();
+        let mut counts = Vec::new();
+        for table in &TABLES {
+            let mut count = TableCount {
+                table: table.number,
+                family: table.family.to_string(),
+                published: table.published,
+                candidates: 0,
+                letters_only: 0,
+                with_marks: 0,
+                printed_letters: 0,
+            };
+            let mut n = 0;
+            for c in candidates.iter().filter(|c| c.table == table.number) {
+                count.candidates += 1;
+                let notation = c.chain.to_string();
+                let letters = c.chain.letters();
+                let first_with_letters = seen_letters.insert(letters.clone());
+                count.letters_only += usize::from(first_with_letters);
+                if !seen_marks.insert(notation.clone()) {
+                    continue;
+                }
+                count.with_marks += 1;
+                n += 1;
+                let in_row = printed_in_row.iter().any(|(t, r, l)| {
+                    *t == c.table && (*r == c.row || c.table >= 5) && *l == letters
+                });
+                entries.push(Entry {
+                    id: format!("T{}-{n:03}", table.number),
+                    notation,
+                    parallel_groups: c.chain.parallel_groups(),
+                    composition: Composition::of(&c.chain),
+                    first_with_letters,
+                    printed_in_row: in_row,
+                    printed_in_appendix: printed_anywhere.contains(letters.as_str()),
+                    letters,
+                    family: table.family.to_string(),
+                    word: c.word.clone(),
+                    axes: c.axes.clone(),
+                    provenance: Provenance {
+                        table: c.table,
+                        row: c.row,
+                        variant: c.variant,
+                        variant_label: c.variant_label.clone(),
+                    },
+                });
+            }
+            for (t, _, l) in &printed_in_row {
+                if *t == table.number && seen_printed.insert(l.clone()) {
+                    count.printed_letters += 1;
+                }
+            }
+            counts.push(count);
+        }
+        Catalogue {
+            options,
+            entries,
+            counts,
+            rows,
+            differences,
+        }
+    }
+
+    /// Finds an entry by id (case-insensitive) or by notation (parsed, so any spelling of the
+    /// same marks matches).
+    #[must_use]
+    pub fn find(&self, query: &str) -> Option<&Entry> {
+        if let Some(e) = self
+            .entries
+            .iter()
+            .find(|e| e.id.eq_ignore_ascii_case(query.trim()))
+        {
+            return Some(e);
+        }
+        let chain: Chain = query.parse().ok()?;
+        let text = chain.without_actuation().to_string();
+        self.entries.iter().find(|e| e.notation == text)
+    }
+
+    /// The entries of one family.
+    pub fn family<'a>(&'a self, family: &'a str) -> impl Iterator<Item = &'a Entry> + 'a {
+        self.entries.iter().filter(move |e| e.family == family)
+    }
+
+    /// Totals: (letters only, letters + marks).
+    #[must_use]
+    pub fn totals(&self) -> (usize, usize) {
+        (
+            self.counts.iter().map(|c| c.letters_only).sum(),
+            self.counts.iter().map(|c| c.with_marks).sum(),
+        )
+    }
+
+    /// How many differences of each kind each table has.
+    #[must_use]
+    pub fn difference_counts(&self) -> BTreeMap<(u8, DifferenceKind), usize> {
+        let mut m = BTreeMap::new();
+        for d in &self.differences {
+            *m.entry((d.key.table, d.kind)).or_insert(0) += 1;
+        }
+        m
+    }
+
+    /// `chains.json`: the entries with the generator's metadata.
+    #[must_use]
+    pub fn to_json(&self) -> String {
+        #[derive(Serialize)]
+        struct File<'a> {
+            format: &'static str,
+            source: &'static str,
+            identity: &'static str,
+            options: &'a Options,
+            counts: &'a [TableCount],
+            entries: &'a [Entry],
+        }
+        let file = File {
+            format: "kinsyn-catalogue/1",
+            source: "paper 000 §2 and Appendix (Ibarreche et al., Multioperation capacity of parallel manipulators basing on generic kinematic chain approach)",
+            identity: "letters + parallel marks, first occurrence in table order",
+            options: &self.options,
+            counts: &self.counts,
+            entries: &self.entries,
+        };
+        let mut s = serde_json::to_string_pretty(&file).expect("catalogue serialises");
+        s.push('\n');
+        s
+    }
+
+    /// `chains.csv`: one flat line per entry.
+    #[must_use]
+    pub fn to_csv(&self) -> String {
+        let mut s = String::from(
+            "id,notation,letters,family,word,axes,parallel_groups,p,r,c,u,s,table,row,variant,variant_label,first_with_letters,printed_in_row,printed_in_appendix\n",
+        );
+        for e in &self.entries {
+            let groups: Vec<String> = e
+                .parallel_groups
+                .iter()
+                .map(|g| {
+                    g.iter()
+                        .map(ToString::to_string)
+                        .collect::<Vec<_>>()
+                        .join(" ")
+                })
+                .collect();
+            let c = e.composition;
+            let _ = writeln!(
+                s,
+                "{},\"{}\",{},{},{},{},\"{}\",{},{},{},{},{},{},{},{},\"{}\",{},{},{}",
+                e.id,
+                e.notation,
+                e.letters,
+                e.family,
+                e.word,
+                e.axes,
+                groups.join("; "),
+                c.p,
+                c.r,
+                c.c,
+                c.u,
+                c.s,
+                e.provenance.table,
+                e.provenance.row,
+                e.provenance.variant,
+                e.provenance.variant_label,
+                e.first_with_letters,
+                e.printed_in_row,
+                e.printed_in_appendix
+            );
+        }
+        s
+    }
+
+    /// The per-table counts as a Markdown table, published numbers beside the generated ones.
+    #[must_use]
+    pub fn counts_markdown(&self) -> String {
+        let mut s = String::from(
+            "| table | family | published | printed letters (new) | generated, letters only (new) | generated, letters + marks (new) | candidates |\n|---|---|---:|---:|---:|---:|---:|\n",
+        );
+        for c in &self.counts {
+            let published = if c.published == 0 {
+                "—".to_string()
+            } else {
+                c.published.to_string()
+            };
+            let _ = writeln!(
+                s,
+                "| {} | {} | {} | {} | {} | {} | {} |",
+                c.table,
+                c.family,
+                published,
+                c.printed_letters,
+                c.letters_only,
+                c.with_marks,
+                c.candidates
+            );
+        }
+        let six_r: Vec<&TableCount> = self.counts.iter().filter(|c| c.table >= 5).collect();
+        let _ = writeln!(
+            s,
+            "| 7 + 8 | RRRRRR | {} | {} | {} | {} | {} |",
+            tables::PUBLISHED_6R,
+            six_r.iter().map(|c| c.printed_letters).sum::<usize>(),
+            six_r.iter().map(|c| c.letters_only).sum::<usize>(),
+            six_r.iter().map(|c| c.with_marks).sum::<usize>(),
+            six_r.iter().map(|c| c.candidates).sum::<usize>()
+        );
+        let (l, m) = self.totals();
+        let _ = writeln!(
+            s,
+            "| all | | {} | {} | {l} | {m} | {} |",
+            tables::PUBLISHED_TOTAL,
+            self.counts.iter().map(|c| c.printed_letters).sum::<usize>(),
+            self.counts.iter().map(|c| c.candidates).sum::<usize>()
+        );
+        s
+    }
+
+    /// The differences from the printed Appendix as the Markdown table kept in
+    /// docs/deviations.md (one line per difference).
+    #[must_use]
+    pub fn differences_markdown(&self) -> String {
+        let mut s = String::from(
+            "| table | row | word | chain | kind | evidence |\n|---|---|---|---|---|---|\n",
+        );
+        for d in &self.differences {
+            let row = if d.key.row == 0 {
+                "all".to_string()
+            } else {
+                d.key.row.to_string()
+            };
+            let _ = writeln!(
+                s,
+                "| {} | {row} | {} | {} | {} | {} |",
+                d.key.table,
+                d.word,
+                d.letters,
+                d.kind.name(),
+                d.evidence
+            );
+        }
+        s
+    }
+
+    /// `catalogue/README.md`.
+    #[must_use]
+    pub fn readme(&self) -> String {
+        let mut s = String::new();
+        s.push_str("# The kinsyn catalogue of 6-dof P/R leg chains\n\n");
+        s.push_str("Generated by `kinsyn catalogue generate`; do not edit by hand (a test regenerates these files and\n");
+        s.push_str("compares them byte for byte). Source: paper 000 §2 and its Appendix, read as `docs/synthesis.md`\n");
+        s.push_str("describes. Notation: `docs/notation.md`.\n\n");
+        s.push_str("## Files\n\n");
+        s.push_str("- `chains.json`: every entry (id, notation, letters, family, P/R word, axis directions, parallel\n");
+        s.push_str("  groups, C/U/S composition, provenance, whether the paper prints it), with the counts below.\n");
+        s.push_str("- `chains.csv`: the same entries, one flat line each.\n\n");
+        s.push_str("## Counts per table\n\n");
+        s.push_str("Each count is of chains new to that table (first occurrence wins, in the paper's table order).\n");
+        s.push_str("\"Printed letters\" counts the distinct names the plain-text Appendix prints, misprints included;\n");
+        s.push_str("the published numbers count the paper's own identity, which rests on typographic marks this\n");
+        s.push_str("copy lost. The catalogue's entries are the \"letters + marks\" column.\n\n");
+        s.push_str(&self.counts_markdown());
+        s.push_str("\n## Differences from the printed Appendix\n\n");
+        s.push_str("Row by row, on letters (see `docs/deviations.md` for every difference with its evidence):\n\n");
+        s.push_str("| table | misprint | carried over | rule violation | outside pattern | not readable | omission, printed elsewhere | omission, not printed |\n|---|---:|---:|---:|---:|---:|---:|---:|\n");
+        let counts = self.difference_counts();
+        for t in &TABLES {
+            let get = |k| counts.get(&(t.number, k)).copied().unwrap_or(0);
+            let _ = writeln!(
+                s,
+                "| {} | {} | {} | {} | {} | {} | {} | {} |",
+                t.number,
+                get(DifferenceKind::Misprint),
+                get(DifferenceKind::CarriedOver),
+                get(DifferenceKind::RuleViolation),
+                get(DifferenceKind::OutsidePattern),
+                get(DifferenceKind::NotReadable),
+                get(DifferenceKind::PrintedElsewhere),
+                get(DifferenceKind::NotPrinted)
+            );
+        }
+        s
+    }
+
+    /// Writes `chains.json`, `chains.csv` and `README.md` into `dir`, creating it.
+    ///
+    /// # Errors
+    /// Any I/O error, with the path that failed.
+    pub fn write(&self, dir: &Path) -> Result<(), std::io::Error> {
+        std::fs::create_dir_all(dir)
+            .map_err(|e| std::io::Error::new(e.kind(), format!("{}: {e}", dir.display())))?;
+        for (name, text) in [
+            ("chains.json", self.to_json()),
+            ("chains.csv", self.to_csv()),
+            ("README.md", self.readme()),
+        ] {
+            let path = dir.join(name);
+            std::fs::write(&path, text)
+                .map_err(|e| std::io::Error::new(e.kind(), format!("{}: {e}", path.display())))?;
+        }
+        Ok(())
+    }
+}
