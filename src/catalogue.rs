@@ -75,7 +75,7 @@ pub struct Entry {
     pub word: String,
     /// Axis direction of each primitive joint at the reference configuration.
     pub axes: String,
-    /// Parallel groups as 1-based primitive positions.
+    /// Parallel groups as 1-based positions in `word` (and `axes`).
     pub parallel_groups: Vec<Vec<usize>>,
     /// Joint letter counts.
     pub composition: Composition,
@@ -96,8 +96,8 @@ pub struct TableCount {
     pub table: u8,
     /// Family word.
     pub family: String,
-    /// The paper's count (0 where the paper gives only a joint count, Tables 7 and 8).
-    pub published: usize,
+    /// The paper's count (none for Tables 7 and 8, which the paper counts together).
+    pub published: Option<usize>,
     /// Candidates generated (readings, repeats included).
     pub candidates: usize,
     /// New distinct chains by letters only.
@@ -176,7 +176,7 @@ impl Catalogue {
                 entries.push(Entry {
                     id: format!("T{}-{n:03}", table.number),
                     notation,
-                    parallel_groups: c.chain.parallel_groups(),
+                    parallel_groups: c.parallel_groups.clone(),
                     composition: Composition::of(&c.chain),
                     first_with_letters,
                     printed_in_row: in_row,
@@ -326,11 +326,9 @@ impl Catalogue {
             "| table | family | published | printed letters (new) | generated, letters only (new) | generated, letters + marks (new) | candidates |\n|---|---|---:|---:|---:|---:|---:|\n",
         );
         for c in &self.counts {
-            let published = if c.published == 0 {
-                "—".to_string()
-            } else {
-                c.published.to_string()
-            };
+            let published = c
+                .published
+                .map_or_else(|| "—".to_string(), |n| n.to_string());
             let _ = writeln!(
                 s,
                 "| {} | {} | {} | {} | {} | {} | {} |",

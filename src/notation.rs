@@ -494,10 +494,10 @@ impl Chain {
         let mut order: Vec<u8> = Vec::new();
         for j in &joints {
             for m in &j.marks {
-                if let Some(g) = m.group {
-                    if !order.contains(&g) {
-                        order.push(g);
-                    }
+                if let Some(g) = m.group
+                    && !order.contains(&g)
+                {
+                    order.push(g);
                 }
             }
         }
@@ -540,7 +540,8 @@ impl Chain {
         self.primitives().map(|(p, _)| p.letter()).collect()
     }
 
-    /// The parallel groups as lists of 1-based primitive positions, in group order.
+    /// The parallel groups as lists of 1-based positions in [`Chain::primitive_word`] (a C
+    /// expanded as PR), in group order.
     #[must_use]
     pub fn parallel_groups(&self) -> Vec<Vec<usize>> {
         let mut groups: Vec<Vec<usize>> = Vec::new();
@@ -637,17 +638,4 @@ pub fn letters_fit_word(letters: &str, word: &str) -> bool {
         }
     }
     fit(letters.as_bytes(), word.as_bytes())
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn fits() {
-        assert!(letters_fit_word("CRC", "PRRRRP"));
-        assert!(letters_fit_word("CRC", "RPRRPR"));
-        assert!(!letters_fit_word("RCPUR", "RPRPRR"));
-        assert!(letters_fit_word("PPS", "PPRRR"));
-    }
 }

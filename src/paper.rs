@@ -272,7 +272,14 @@ fn explain_missing(table: u8, word_text: &str, letters: &str) -> (DifferenceKind
     let spec: &Table = synthesis::tables::table(table).expect("appendix tables exist");
     // The assignment and reading that break the fewest rules: pattern first, then the rules
     // of admissibility, then rule 3's "fewest joints".
-    let mut best: Option<(usize, Vec<rules::Axis>, Vec<rules::Violation>, bool, bool)> = None;
+    struct Reading {
+        score: usize,
+        axes: Vec<rules::Axis>,
+        violations: Vec<rules::Violation>,
+        in_pattern: bool,
+        fewest: bool,
+    }
+    let mut best: Option<Reading> = None;
     for axes in synthesis::all_assignments(&word) {
         let fewest = rules::readings(&word, &axes)
             .iter()
@@ -285,13 +292,26 @@ fn explain_missing(table: u8, word_text: &str, letters: &str) -> (DifferenceKind
             continue;
         }
         let in_pattern = revolute_counts(&word, &axes) == spec.axis_counts;
-        let v = rules::violations(&word, &axes, &Options::default());
-        let score = 2 * v.len() + usize::from(!fewest) + if in_pattern { 0 } else { 100 };
-        if best.as_ref().is_none_or(|b| score < b.0) {
-            best = Some((score, axes, v, in_pattern, fewest));
+        let violations = rules::violations(&word, &axes, &Options::default());
+        let score = 2 * violations.len() + usize::from(!fewest) + if in_pattern { 0 } else { 100 };
+        if best.as_ref().is_none_or(|b| score < b.score) {
+            best = Some(Reading {
+                score,
+                axes,
+                violations,
+                in_pattern,
+                fewest,
+            });
         }
     }
-    let Some((_, axes, v, in_pattern, fewest)) = best else {
+    let Some(Reading {
+        axes,
+        violations: v,
+        in_pattern,
+        fewest,
+        ..
+    }) = best
+    else {
         return (
             DifferenceKind::NotReadable,
             format!(

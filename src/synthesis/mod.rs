@@ -38,6 +38,8 @@ pub struct Candidate {
     pub variant_label: String,
     /// Axis direction of each primitive joint at the reference configuration (e.g. `xyyxzz`).
     pub axes: String,
+    /// The parallel groups, as 1-based positions in `word`.
+    pub parallel_groups: Vec<Vec<usize>>,
     /// The chain in C/U/S letters with its parallel groups.
     pub chain: Chain,
 }
@@ -78,33 +80,43 @@ pub fn variant_label(word: &[Primitive], groups: &[Vec<usize>]) -> String {
     Chain::from_joints(joints).to_string()
 }
 
+/// One variant of a row: the parallel groups its revolute patterns keep (0-based positions in
+/// the word) and those patterns.
+struct Variant {
+    groups: Vec<Vec<usize>>,
+    patterns: Vec<Vec<Axis>>,
+}
+
 /// The variants of a row: revolute direction patterns grouped by the parallel groups they
 /// keep, ordered as the Appendix orders its sub-rows (most revolutes in groups first, then by
 /// the position of the groups; "no group kept" last).
-fn variants(word: &[Primitive], table: &Table) -> Vec<(Vec<Vec<usize>>, Vec<Vec<Axis>>)> {
+fn variants(word: &[Primitive], table: &Table) -> Vec<Variant> {
     let revolutes: Vec<usize> = (0..word.len())
         .filter(|&i| word[i] == Primitive::R)
         .collect();
-    let mut by_groups: Vec<(Vec<Vec<usize>>, Vec<Vec<Axis>>)> = Vec::new();
+    let mut found: Vec<Variant> = Vec::new();
     for pattern in rules::revolute_patterns(revolutes.len(), table.axis_counts) {
         let mut axes = vec![0; word.len()];
         for (k, &i) in revolutes.iter().enumerate() {
             axes[i] = pattern[k];
         }
         let groups = rules::parallel_groups(word, &axes);
-        match by_groups.iter_mut().find(|(g, _)| *g == groups) {
-            Some((_, patterns)) => patterns.push(pattern),
-            None => by_groups.push((groups, vec![pattern])),
+        match found.iter_mut().find(|v| v.groups == groups) {
+            Some(v) => v.patterns.push(pattern),
+            None => found.push(Variant {
+                groups,
+                patterns: vec![pattern],
+            }),
         }
     }
-    by_groups.sort_by_key(|(g, _)| {
+    found.sort_by_key(|v| {
         (
-            std::cmp::Reverse(g.iter().map(Vec::len).sum::<usize>()),
-            g.is_empty(),
-            g.clone(),
+            std::cmp::Reverse(v.groups.iter().map(Vec::len).sum::<usize>()),
+            v.groups.is_empty(),
+            v.groups.clone(),
         )
     });
-    by_groups
+    found
 }
 
 /// Every admissible axis assignment of a row's word in one variant: the revolutes follow the
@@ -146,9 +158,9 @@ pub fn enumerate(options: &Options) -> Vec<Candidate> {
     for table in &TABLES {
         for (r, word_text) in table.words.iter().enumerate() {
             let word = parse_word(word_text).expect("table words are P/R words");
-            for (v, (groups, patterns)) in variants(&word, table).iter().enumerate() {
-                let label = variant_label(&word, groups);
-                for axes in assignments(&word, patterns, options) {
+            for (v, variant) in variants(&word, table).iter().enumerate() {
+                let label = variant_label(&word, &variant.groups);
+                for axes in assignments(&word, &variant.patterns, options) {
                     for chain in rules::readings(&word, &axes) {
                         out.push(Candidate {
                             table: table.number,
@@ -156,7 +168,11 @@ pub fn enumerate(options: &Options) -> Vec<Candidate> {
                             word: (*word_text).to_string(),
                             variant: v + 1,
                             variant_label: label.clone(),
-                            axes: rules::axis_word(&axes),
+                            axes: rules::axis_word(&rules::canonical_axes(&axes)),
+                            parallel_groups: rules::parallel_groups(&word, &axes)
+                                .iter()
+                                .map(|g| g.iter().map(|i| i + 1).collect())
+                                .collect(),
                             chain,
                         });
                     }
@@ -174,17 +190,6 @@ pub fn enumerate(options: &Options) -> Vec<Candidate> {
 pub fn all_assignments(word: &[Primitive]) -> Vec<Vec<Axis>> {
     std::iter::repeat_n(0..3u8, word.len())
         .multi_cartesian_product()
-        .filter(|axes| {
-            let mut next = 0;
-            axes.iter().all(|&a| {
-                if a > next {
-                    return false;
-                }
-                if a == next {
-                    next += 1;
-                }
-                true
-            })
-        })
+        .filter(|axes| rules::canonical_axes(axes) == *axes)
         .collect()
 }

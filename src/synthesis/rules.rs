@@ -11,6 +11,23 @@ use crate::notation::{Chain, Joint, JointKind, Mark, Primitive};
 /// An axis direction at the reference configuration: 0, 1 or 2 for x, y, z.
 pub type Axis = u8;
 
+/// The same directions relabelled so that the first joint lies along x and the next new
+/// direction along y: relabelling the three directions changes no chain.
+#[must_use]
+pub fn canonical_axes(axes: &[Axis]) -> Vec<Axis> {
+    let mut map = [u8::MAX; 3];
+    let mut next = 0;
+    axes.iter()
+        .map(|&a| {
+            if map[a as usize] == u8::MAX {
+                map[a as usize] = next;
+                next += 1;
+            }
+            map[a as usize]
+        })
+        .collect()
+}
+
 /// Prints axis directions as a word such as `xyzxyz`.
 #[must_use]
 pub fn axis_word(axes: &[Axis]) -> String {

@@ -1,0 +1,509 @@
+//! Command-line interface: parses arguments, runs the library, prints results.
+//!
+//! Exit codes: 0 success, 2 bad input (arguments, chain strings, unknown ids or families),
+//! 1 anything else (I/O). Errors are one line on stderr, prefixed `kinsyn: error:`.
+
+use clap::{Args, Parser, Subcommand, ValueEnum};
+use kinsyn::catalogue::{Catalogue, Entry};
+use kinsyn::notation::Chain;
+use kinsyn::synthesis::{Options, PrismaticReading, tables};
+use std::fmt::Write as _;
+use std::path::PathBuf;
+
+/// Structural synthesis and kinematic analysis of parallel manipulators.
+///
+/// kinsyn enumerates the 6-dof serial chains of P and R joints of paper 000 (Ibarreche et al.,
+/// "Multioperation capacity of parallel manipulators basing on generic kinematic chain
+/// approach", §2), reads them in C/U/S letters with their parallel-axis groups, and compares
+/// the result row by row with the paper's printed Appendix.
+#[derive(Debug, Parser)]
+#[command(name = "kinsyn", version, propagate_version = true)]
+#[command(
+    after_help = "Examples:\n  kinsyn catalogue summary\n  kinsyn catalogue list --family PPRRRR\n  kinsyn catalogue show T1-001\n  kinsyn catalogue show 'RaU(a,b)U(b,c)Rc'\n  kinsyn notation 'U(!,-)P!S'"
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Debug, Subcommand)]
+enum Command {
+    /// The catalogue of 6-dof leg chains (paper 000 §2, Tables 1–8).
+    #[command(subcommand)]
+    Catalogue(CatalogueCommand),
+    /// Check a chain string and show what it means: letters, primitive joints, parallel
+    /// groups, actuated joints.
+    ///
+    /// Notation (docs/notation.md): letters P R C U S; a parallel group is a letter a, b, c
+    /// after the revolute it holds; '!' marks an actuated joint; C, U and S take one slot per
+    /// primitive joint in parentheses, e.g. U(a,-), S(-,-,b), C(!,-). 'Ca' marks the R of a C.
+    Notation {
+        /// The chain, e.g. 'RaU(a,b)U(b,c)Rc' or 'U(!,-)P!S' (quote it in the shell).
+        chain: String,
+        /// Print JSON instead of text.
+        #[arg(long)]
+        json: bool,
+    },
+}
+
+#[derive(Debug, Subcommand)]
+enum CatalogueCommand {
+    /// Enumerate the chains and write chains.json, chains.csv and README.md.
+    ///
+    /// The files are byte-for-byte reproducible; the committed catalogue/ is what this writes
+    /// with the default reading.
+    Generate {
+        /// Folder to write into (created if missing).
+        #[arg(long, default_value = "catalogue")]
+        out: PathBuf,
+        #[command(flatten)]
+        reading: Reading,
+    },
+    /// Counts per Appendix table: published, printed, generated (letters only and letters +
+    /// parallel marks), and the differences from the printed Appendix by kind.
+    Summary {
+        /// Print JSON instead of text.
+        #[arg(long)]
+        json: bool,
+        #[command(flatten)]
+        reading: Reading,
+    },
+    /// List catalogue entries, one per line: id, notation, P/R word, axes, provenance.
+    List {
+        /// Only this family: PPPRRR, PPRRRR, PRRRRR or RRRRRR.
+        #[arg(long)]
+        family: Option<String>,
+        /// Only entries first found in this Appendix table (1, 2, 3, 4, 7 or 8).
+        #[arg(long)]
+        table: Option<u8>,
+        /// Print JSON instead of text.
+        #[arg(long)]
+        json: bool,
+        #[command(flatten)]
+        reading: Reading,
+    },
+    /// Show one entry, by id (e.g. T2-017) or by notation (e.g. 'PPUU' or 'PPU(-,a)U(a,-)').
+    ///
+    /// A notation is matched with its parallel marks. Letters without marks find the entry with
+    /// no parallel group, or, if there is none, every entry with those letters.
+    Show {
+        /// Entry id or chain notation.
+        query: String,
+        /// Print JSON instead of text.
+        #[arg(long)]
+        json: bool,
+        #[command(flatten)]
+        reading: Reading,
+    },
+    /// Every difference between the enumeration and the printed Appendix, row by row, with
+    /// its evidence (the table kept in docs/deviations.md).
+    Compare {
+        /// Print JSON instead of a Markdown table.
+        #[arg(long)]
+        json: bool,
+        #[command(flatten)]
+        reading: Reading,
+    },
+}
+
+/// The options of the paper reading (docs/synthesis.md).
+#[derive(Debug, Args)]
+struct Reading {
+    /// How far apart two parallel prismatic guides may be: 'separated' (default: allowed when
+    /// a revolute not parallel to them lies between them) or 'perpendicular' (never parallel).
+    #[arg(long, value_enum, default_value_t = PrismaticsArg::Separated)]
+    prismatics: PrismaticsArg,
+    /// Do not apply §2.3's "three parallel R need a guide along them" to chains with a P.
+    #[arg(long)]
+    no_triple_guide: bool,
+}
+
+#[derive(Debug, Clone, Copy, ValueEnum)]
+enum PrismaticsArg {
+    Separated,
+    Perpendicular,
+}
+
+impl Reading {
+    fn options(&self) -> Options {
+        Options {
+            prismatics: match self.prismatics {
+                PrismaticsArg::Separated => PrismaticReading::Separated,
+                PrismaticsArg::Perpendicular => PrismaticReading::Perpendicular,
+            },
+            triple_group_needs_guide: !self.no_triple_guide,
+        }
+    }
+}
+
+/// A failure the user sees: bad input (exit 2) or an environment problem (exit 1).
+#[derive(Debug, thiserror::Error)]
+enum CliError {
+    #[error("{0}")]
+    Input(String),
+    #[error("{0}")]
+    Io(#[from] std::io::Error),
+}
+
+/// Runs the command line and returns the process exit code.
+pub fn run() -> i32 {
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) => {
+            let code = if e.use_stderr() { 2 } else { 0 };
+            if e.use_stderr() {
+                // clap's message starts with "error: "; keep the first line, as one clear line.
+                let text = e.to_string();
+                let first = text
+                    .lines()
+                    .next()
+                    .unwrap_or("bad arguments")
+                    .trim_start_matches("error: ");
+                eprintln!("kinsyn: error: {first} (see kinsyn --help)");
+            } else {
+                let _ = e.print();
+            }
+            return code;
+        }
+    };
+    match execute(cli.command) {
+        Ok(text) => {
+            print!("{text}");
+            0
+        }
+        Err(e) => {
+            eprintln!("kinsyn: error: {e}");
+            match e {
+                CliError::Input(_) => 2,
+                CliError::Io(_) => 1,
+            }
+        }
+    }
+}
+
+fn execute(command: Command) -> Result<String, CliError> {
+    match command {
+        Command::Notation { chain, json } => notation(&chain, json),
+        Command::Catalogue(c) => catalogue(c),
+    }
+}
+
+fn json<T: serde::Serialize>(value: &T) -> String {
+    let mut s = serde_json::to_string_pretty(value).expect("serialisable");
+    s.push('\n');
+    s
+}
+
+fn notation(text: &str, as_json: bool) -> Result<String, CliError> {
+    let chain: Chain = text
+        .parse()
+        .map_err(|e| CliError::Input(format!("'{text}': {e}")))?;
+    let primitives: Vec<String> = chain
+        .primitives()
+        .enumerate()
+        .map(|(i, (p, m))| {
+            let mut s = format!("{}{}", i + 1, p.letter());
+            if let Some(g) = m.group {
+                s.push((b'a' + g) as char);
+            }
+            if m.actuated {
+                s.push('!');
+            }
+            s
+        })
+        .collect();
+    let actuated: Vec<usize> = chain
+        .primitives()
+        .enumerate()
+        .filter(|(_, (_, m))| m.actuated)
+        .map(|(i, _)| i + 1)
+        .collect();
+    if as_json {
+        return Ok(json(&serde_json::json!({
+            "notation": chain.to_string(),
+            "letters": chain.letters(),
+            "word": chain.primitive_word(),
+            "parallel_groups": chain.parallel_groups(),
+            "actuated": actuated,
+        })));
+    }
+    let mut s = String::new();
+    let _ = writeln!(s, "notation  {chain}");
+    let _ = writeln!(s, "letters   {}", chain.letters());
+    let _ = writeln!(
+        s,
+        "word      {} ({})",
+        chain.primitive_word(),
+        primitives.join(" ")
+    );
+    let groups: Vec<String> = chain
+        .parallel_groups()
+        .iter()
+        .enumerate()
+        .map(|(g, m)| format!("{}: {:?}", (b'a' + g as u8) as char, m))
+        .collect();
+    let _ = writeln!(
+        s,
+        "parallel  {}",
+        if groups.is_empty() {
+            "none".to_string()
+        } else {
+            groups.join(", ")
+        }
+    );
+    let _ = writeln!(
+        s,
+        "actuated  {}",
+        if actuated.is_empty() {
+            "none".to_string()
+        } else {
+            format!("{actuated:?}")
+        }
+    );
+    Ok(s)
+}
+
+fn catalogue(command: CatalogueCommand) -> Result<String, CliError> {
+    match command {
+        CatalogueCommand::Generate { out, reading } => {
+            let cat = Catalogue::generate(&reading.options());
+            cat.write(&out)?;
+            let (letters, marks) = cat.totals();
+            Ok(format!(
+                "wrote {} entries ({letters} distinct by letters) to {}\n",
+                marks,
+                out.display()
+            ))
+        }
+        CatalogueCommand::Summary {
+            json: as_json,
+            reading,
+        } => {
+            let cat = Catalogue::generate(&reading.options());
+            if as_json {
+                let diffs: Vec<serde_json::Value> = cat
+                    .difference_counts()
+                    .iter()
+                    .map(
+                        |((t, k), n)| serde_json::json!({"table": t, "kind": k.name(), "count": n}),
+                    )
+                    .collect();
+                let (letters, marks) = cat.totals();
+                return Ok(json(&serde_json::json!({
+                    "options": cat.options,
+                    "tables": cat.counts,
+                    "published_6r": tables::PUBLISHED_6R,
+                    "published_total": tables::PUBLISHED_TOTAL,
+                    "total_letters_only": letters,
+                    "total_with_marks": marks,
+                    "differences": diffs,
+                })));
+            }
+            let readme = cat.readme();
+            let body = readme
+                .split_once("## Counts per table")
+                .map_or(readme.as_str(), |(_, b)| b);
+            Ok(format!(
+                "kinsyn catalogue: paper 000 §2 structural synthesis{body}"
+            ))
+        }
+        CatalogueCommand::List {
+            family,
+            table,
+            json: as_json,
+            reading,
+        } => {
+            if let Some(f) = &family
+                && !tables::families().contains(&f.as_str())
+            {
+                return Err(CliError::Input(format!(
+                    "unknown family '{f}'; the families are {}",
+                    tables::families().join(", ")
+                )));
+            }
+            if let Some(t) = table
+                && tables::table(t).is_none()
+            {
+                return Err(CliError::Input(format!(
+                    "no Appendix table {t}; the tables with chains are 1, 2, 3, 4, 7, 8"
+                )));
+            }
+            let cat = Catalogue::generate(&reading.options());
+            let entries: Vec<&Entry> = cat
+                .entries
+                .iter()
+                .filter(|e| {
+                    family.as_ref().is_none_or(|f| &e.family == f)
+                        && table.is_none_or(|t| e.provenance.table == t)
+                })
+                .collect();
+            if as_json {
+                return Ok(json(&entries));
+            }
+            let mut s = String::new();
+            for e in entries {
+                let _ = writeln!(
+                    s,
+                    "{:<8} {:<22} {} {} table {} row {} variant {}",
+                    e.id,
+                    e.notation,
+                    e.word,
+                    e.axes,
+                    e.provenance.table,
+                    e.provenance.row,
+                    e.provenance.variant
+                );
+            }
+            Ok(s)
+        }
+        CatalogueCommand::Show {
+            query,
+            json: as_json,
+            reading,
+        } => {
+            let cat = Catalogue::generate(&reading.options());
+            let entry = match cat.find(&query) {
+                Some(e) => e,
+                None if query
+                    .parse::<Chain>()
+                    .is_ok_and(|c| c.parallel_groups().is_empty()) =>
+                {
+                    // Letters only: show every entry with these letters, if any.
+                    let letters = query
+                        .parse::<Chain>()
+                        .map(|c| c.letters())
+                        .unwrap_or_default();
+                    let same: Vec<&Entry> = cat
+                        .entries
+                        .iter()
+                        .filter(|e| e.letters == letters)
+                        .collect();
+                    if same.is_empty() {
+                        return Err(CliError::Input(format!(
+                            "'{letters}' is not in the catalogue: the rules of paper 000 §2 do not give it"
+                        )));
+                    }
+                    if as_json {
+                        return Ok(json(&same));
+                    }
+                    let mut s = format!(
+                        "no entry {letters} without parallel marks; {} entr{} with these letters:\n\n",
+                        same.len(),
+                        if same.len() == 1 { "y" } else { "ies" }
+                    );
+                    s.push_str(
+                        &same
+                            .iter()
+                            .map(|e| describe(&cat, e))
+                            .collect::<Vec<_>>()
+                            .join("\n"),
+                    );
+                    return Ok(s);
+                }
+                None => {
+                    let looks_like_id = query.trim().starts_with(['T', 't'])
+                        && query.contains('-')
+                        && query.chars().any(|c| c.is_ascii_digit());
+                    return Err(CliError::Input(match query.parse::<Chain>() {
+                        Err(_) if looks_like_id => format!(
+                            "no entry with id '{query}' (ids look like T2-017; see kinsyn catalogue list)"
+                        ),
+                        Err(e) => {
+                            format!("'{query}' is neither an entry id nor a valid chain: {e}")
+                        }
+                        Ok(chain) => {
+                            let same: Vec<&str> = cat
+                                .entries
+                                .iter()
+                                .filter(|e| e.letters == chain.letters())
+                                .map(|e| e.notation.as_str())
+                                .collect();
+                            if same.is_empty() {
+                                format!(
+                                    "'{chain}' is not in the catalogue: the rules of paper 000 §2 do not give it"
+                                )
+                            } else {
+                                format!(
+                                    "'{chain}' is not in the catalogue; entries with letters {}: {}",
+                                    chain.letters(),
+                                    same.join(", ")
+                                )
+                            }
+                        }
+                    }));
+                }
+            };
+            if as_json {
+                return Ok(json(entry));
+            }
+            Ok(describe(&cat, entry))
+        }
+        CatalogueCommand::Compare {
+            json: as_json,
+            reading,
+        } => {
+            let cat = Catalogue::generate(&reading.options());
+            if as_json {
+                return Ok(json(&cat.differences));
+            }
+            Ok(cat.differences_markdown())
+        }
+    }
+}
+
+fn describe(cat: &Catalogue, e: &Entry) -> String {
+    let mut s = String::new();
+    let _ = writeln!(s, "{}  {}", e.id, e.notation);
+    let _ = writeln!(s, "letters      {}", e.letters);
+    let _ = writeln!(
+        s,
+        "family       {} (Table {})",
+        e.family, e.provenance.table
+    );
+    let _ = writeln!(s, "word         {}", e.word);
+    let _ = writeln!(
+        s,
+        "axes         {} (direction of each primitive joint at the reference configuration)",
+        e.axes
+    );
+    let groups: Vec<String> = e.parallel_groups.iter().map(|g| format!("{g:?}")).collect();
+    let _ = writeln!(
+        s,
+        "parallel     {}",
+        if groups.is_empty() {
+            "none".to_string()
+        } else {
+            groups.join(", ")
+        }
+    );
+    let c = e.composition;
+    let _ = writeln!(
+        s,
+        "composition  P {} R {} C {} U {} S {}",
+        c.p, c.r, c.c, c.u, c.s
+    );
+    let _ = writeln!(
+        s,
+        "provenance   Table {} row {} variant {} ({})",
+        e.provenance.table, e.provenance.row, e.provenance.variant, e.provenance.variant_label
+    );
+    let _ = writeln!(
+        s,
+        "paper        {}",
+        match (e.printed_in_row, e.printed_in_appendix) {
+            (true, _) => "printed in this row of the Appendix",
+            (false, true) => "printed in another row of the Appendix",
+            (false, false) => "not printed in the Appendix",
+        }
+    );
+    let others: Vec<String> = cat
+        .entries
+        .iter()
+        .filter(|o| o.letters == e.letters && o.id != e.id)
+        .map(|o| format!("{} {}", o.id, o.notation))
+        .collect();
+    if !others.is_empty() {
+        let _ = writeln!(s, "same letters {}", others.join(", "));
+    }
+    s
+}
