@@ -270,16 +270,16 @@ fn explain_missing(table: u8, word_text: &str, letters: &str) -> (DifferenceKind
     }
     let word = synthesis::parse_word(word_text).expect("appendix words are P/R words");
     let spec: &Table = synthesis::tables::table(table).expect("appendix tables exist");
-    // The assignment and reading that break the fewest rules: pattern first, then the rules
-    // of admissibility, then rule 3's "fewest joints".
-    struct Reading {
-        score: usize,
+    // Every way the letters can be read from the word: which axes, which admissibility rules
+    // they break, and whether rule 3's fewest joints hold. The undominated ways are the
+    // evidence (a way is dominated when another breaks a subset of its rules).
+    struct Way {
         axes: Vec<rules::Axis>,
         violations: Vec<rules::Violation>,
         in_pattern: bool,
         fewest: bool,
     }
-    let mut best: Option<Reading> = None;
+    let mut ways: Vec<Way> = Vec::new();
     for axes in synthesis::all_assignments(&word) {
         let fewest = rules::readings(&word, &axes)
             .iter()
@@ -293,10 +293,11 @@ fn explain_missing(table: u8, word_text: &str, letters: &str) -> (DifferenceKind
         }
         let in_pattern = revolute_counts(&word, &axes) == spec.axis_counts;
         let violations = rules::violations(&word, &axes, &Options::default());
-        let score = 2 * violations.len() + usize::from(!fewest) + if in_pattern { 0 } else { 100 };
-        if best.as_ref().is_none_or(|b| score < b.score) {
-            best = Some(Reading {
-                score,
+        if !ways
+            .iter()
+            .any(|w| w.violations == violations && w.in_pattern == in_pattern && w.fewest == fewest)
+        {
+            ways.push(Way {
                 axes,
                 violations,
                 in_pattern,
@@ -304,23 +305,18 @@ fn explain_missing(table: u8, word_text: &str, letters: &str) -> (DifferenceKind
             });
         }
     }
-    let Some(Reading {
-        axes,
-        violations: v,
-        in_pattern,
-        fewest,
-        ..
-    }) = best
-    else {
+    if ways.is_empty() {
         return (
             DifferenceKind::NotReadable,
             format!(
                 "no axis assignment of {word_text} reads as {letters} under rules 2–3 (parallel P–R pairs always merged into C)"
             ),
         );
-    };
-    if !in_pattern {
-        let counts = revolute_counts(&word, &axes);
+    }
+    let in_pattern: Vec<&Way> = ways.iter().filter(|w| w.in_pattern).collect();
+    if in_pattern.is_empty() {
+        let axes = &ways[0].axes;
+        let counts = revolute_counts(&word, axes);
         let owner = synthesis::TABLES
             .iter()
             .filter(|t| t.axis_counts == counts && t.family == word_text_family(word_text))
@@ -331,30 +327,49 @@ fn explain_missing(table: u8, word_text: &str, letters: &str) -> (DifferenceKind
             DifferenceKind::OutsidePattern,
             format!(
                 "needs axes {}: revolutes per direction {:?}, {owner} pattern, not Table {table}'s {:?}",
-                rules::axis_word(&axes),
+                rules::axis_word(axes),
                 counts,
                 spec.axis_counts
             ),
         );
     }
-    let mut why: Vec<String> = v.iter().map(|x| x.describe().to_string()).collect();
-    if !fewest {
-        let usual: Vec<String> = rules::readings(&word, &axes)
-            .iter()
-            .map(|c| c.letters())
-            .collect();
-        why.push(format!(
-            "more U/S/R joints than rule 3's fewest (the fewest reading is {})",
-            usual.join(" or ")
-        ));
-    }
+    let dominated = |w: &Way| {
+        in_pattern.iter().any(|o| {
+            !std::ptr::eq(*o, w)
+                && o.violations.iter().all(|v| w.violations.contains(v))
+                && (o.fewest || !w.fewest)
+                && (o.violations.len() < w.violations.len() || (o.fewest && !w.fewest))
+        })
+    };
+    let alternatives: Vec<String> = in_pattern
+        .iter()
+        .filter(|w| !dominated(w))
+        .map(|w| {
+            let mut why: Vec<String> = w
+                .violations
+                .iter()
+                .map(|x| x.describe().to_string())
+                .collect();
+            if !w.fewest {
+                let usual: Vec<String> = rules::readings(&word, &w.axes)
+                    .iter()
+                    .map(|c| c.letters())
+                    .collect();
+                why.push(format!(
+                    "more U/S/R joints than rule 3's fewest (the fewest reading is {})",
+                    usual.join(" or ")
+                ));
+            }
+            format!(
+                "with axes {}: {}",
+                rules::axis_word(&w.axes),
+                why.join("; ")
+            )
+        })
+        .collect();
     (
         DifferenceKind::RuleViolation,
-        format!(
-            "only with axes {}: {}",
-            rules::axis_word(&axes),
-            why.join("; ")
-        ),
+        format!("only {}", alternatives.join("; or ")),
     )
 }
 

@@ -146,3 +146,62 @@ fn every_difference_from_the_appendix_is_documented() {
         assert!(DifferenceKind::from_name(kind).is_some(), "{kind}");
     }
 }
+
+/// The parallel groups kept by each arrangement of a multiset of revolute directions (runs of
+/// two or more equal neighbours), counted by brute force over all arrangements: a second
+/// algorithm beside `synthesis::rules`.
+fn kept_group_structures(directions: &str) -> usize {
+    let structures: BTreeSet<Vec<(usize, usize)>> = directions
+        .chars()
+        .permutations(directions.len())
+        .map(|p| {
+            let mut runs = Vec::new();
+            let mut start = 0;
+            for i in 1..=p.len() {
+                if i == p.len() || p[i] != p[start] {
+                    if i - start >= 2 {
+                        runs.push((start, i));
+                    }
+                    start = i;
+                }
+            }
+            runs
+        })
+        .collect();
+    structures.len()
+}
+
+#[test]
+fn variant_counts_against_the_paper() {
+    use kinsyn::synthesis::{Candidate, enumerate};
+    let candidates: Vec<Candidate> = enumerate(&Options::default());
+    let variants = |t: u8, row: usize| {
+        candidates
+            .iter()
+            .filter(|c| c.table == t && c.row == row)
+            .map(|c| c.variant)
+            .collect::<BTreeSet<_>>()
+            .len()
+    };
+    // Appendix: Table 2 prints 4 sub-rows per row, Tables 3 and 4 print 8 (Table 3 row 2: 7).
+    assert_eq!(kept_group_structures("aabc"), 4);
+    assert_eq!(kept_group_structures("aaabc"), 8);
+    assert_eq!(kept_group_structures("aabbc"), 8);
+    for row in 1..=15 {
+        assert_eq!(variants(2, row), 4);
+    }
+    for row in 1..=6 {
+        assert_eq!(variants(3, row), 8);
+        assert_eq!(variants(4, row), 8);
+    }
+    // §2.4: "In Table 5 all the variants ... A total of 10 variants are obtained."
+    assert_eq!(kept_group_structures("aabbcc"), 10);
+    assert_eq!(variants(7, 1), 10);
+    // §2.4: "... a total of 16 different combinations are derived" (Table 6). Expected
+    // deviation (docs/deviations.md, "Variant sub-rows"): the pattern 3+2+1 keeps 22 distinct
+    // structures of parallel groups, and the enumeration has all of them.
+    const PAPER_TABLE_6: usize = 16;
+    assert_eq!(kept_group_structures("aaabbc"), 22);
+    assert_ne!(variants(8, 1), PAPER_TABLE_6);
+    assert_eq!(variants(8, 1), kept_group_structures("aaabbc"));
+}
