@@ -242,15 +242,7 @@ fn notation(text: &str, as_json: bool) -> Result<String, CliError> {
         .enumerate()
         .map(|(g, m)| format!("{}: {:?}", (b'a' + g as u8) as char, m))
         .collect();
-    let _ = writeln!(
-        s,
-        "parallel  {}",
-        if groups.is_empty() {
-            "none".to_string()
-        } else {
-            groups.join(", ")
-        }
-    );
+    let _ = writeln!(s, "parallel  {}", list_or_none(&groups));
     let _ = writeln!(
         s,
         "actuated  {}",
@@ -261,6 +253,15 @@ fn notation(text: &str, as_json: bool) -> Result<String, CliError> {
         }
     );
     Ok(s)
+}
+
+/// The items joined by commas, or "none".
+fn list_or_none(items: &[String]) -> String {
+    if items.is_empty() {
+        "none".to_string()
+    } else {
+        items.join(", ")
+    }
 }
 
 fn catalogue(command: CatalogueCommand) -> Result<String, CliError> {
@@ -467,15 +468,7 @@ fn describe(cat: &Catalogue, e: &Entry) -> String {
         e.axes
     );
     let groups: Vec<String> = e.parallel_groups.iter().map(|g| format!("{g:?}")).collect();
-    let _ = writeln!(
-        s,
-        "parallel     {}",
-        if groups.is_empty() {
-            "none".to_string()
-        } else {
-            groups.join(", ")
-        }
-    );
+    let _ = writeln!(s, "parallel     {}", list_or_none(&groups));
     let c = e.composition;
     let _ = writeln!(
         s,
