@@ -4,9 +4,11 @@
 //! 1 anything else (I/O). Errors are one line on stderr, prefixed `kinsyn: error:`.
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
-use kinsyn::catalogue::{Catalogue, Entry};
+use kinsyn::catalogue::{Catalogue, Entry, VERIFICATION_SEED};
+use kinsyn::motion::PatternQuery;
 use kinsyn::notation::Chain;
 use kinsyn::synthesis::{Options, PrismaticReading, tables};
+use kinsyn::verification::{self, Settings};
 use std::fmt::Write as _;
 use std::path::PathBuf;
 
@@ -31,6 +33,29 @@ enum Command {
     /// The catalogue of 6-dof leg chains (paper 000 §2, Tables 1–8).
     #[command(subcommand)]
     Catalogue(CatalogueCommand),
+    /// Find the verified chains that give a motion pattern, directly or by locking joints.
+    ///
+    /// Patterns: the 12 displacement groups E, T(u), R(u), H(u), T2(plane), C(u), G(plane), T3,
+    /// S, Y(u), X(u), D, with u one of x, y, z and plane one of xy, yz, xz (leave the parentheses
+    /// out for any direction), or a non-group pattern nTmR such as 3T1R. Directions are those of
+    /// the entry's reference configuration, where locked joints are held. Each hit lists its
+    /// minimal lock sets: joint positions in the entry's P/R word ('-' for none).
+    Query {
+        /// The pattern, e.g. T3, 'X(z)', 'G(xy)', S, 2T1R (quote parentheses in the shell).
+        #[arg(long)]
+        pattern: String,
+        /// Lock at most this many joints (0: the chain's own motion).
+        #[arg(long, default_value_t = 6)]
+        max_locks: usize,
+        /// Only this family: PPPRRR, PPRRRR, PRRRRR or RRRRRR.
+        #[arg(long)]
+        family: Option<String>,
+        /// Print JSON instead of text.
+        #[arg(long)]
+        json: bool,
+        #[command(flatten)]
+        reading: Reading,
+    },
     /// Check a chain string and show what it means: letters, primitive joints, parallel
     /// groups, actuated joints.
     ///
@@ -89,9 +114,19 @@ enum CatalogueCommand {
     Show {
         /// Entry id or chain notation.
         query: String,
+        /// Also classify the motion with these joints locked (positions in the entry's word,
+        /// e.g. 45 or 1,2,3).
+        #[arg(long)]
+        lock: Option<String>,
         /// Print JSON instead of text.
         #[arg(long)]
         json: bool,
+        #[command(flatten)]
+        reading: Reading,
+    },
+    /// The entries the numerical check rejects (not 3T3R), with rank, singular values and idle
+    /// joints (the table kept in docs/deviations.md).
+    Rejected {
         #[command(flatten)]
         reading: Reading,
     },
@@ -185,7 +220,72 @@ fn execute(command: Command) -> Result<String, CliError> {
     match command {
         Command::Notation { chain, json } => notation(&chain, json),
         Command::Catalogue(c) => catalogue(c),
+        Command::Query {
+            pattern,
+            max_locks,
+            family,
+            json: as_json,
+            reading,
+        } => query(&pattern, max_locks, family.as_deref(), as_json, &reading),
     }
+}
+
+fn check_family(family: Option<&str>) -> Result<(), CliError> {
+    match family {
+        Some(f) if !tables::families().contains(&f) => Err(CliError::Input(format!(
+            "unknown family '{f}'; the families are {}",
+            tables::families().join(", ")
+        ))),
+        _ => Ok(()),
+    }
+}
+
+fn query(
+    pattern: &str,
+    max_locks: usize,
+    family: Option<&str>,
+    as_json: bool,
+    reading: &Reading,
+) -> Result<String, CliError> {
+    let q: PatternQuery = pattern
+        .parse()
+        .map_err(|e| CliError::Input(format!("{e}")))?;
+    check_family(family)?;
+    if max_locks > 6 {
+        return Err(CliError::Input(format!(
+            "--max-locks {max_locks}: a leg has six joints"
+        )));
+    }
+    let cat = Catalogue::generate(&reading.options());
+    let hits = cat.query(&q, max_locks, family);
+    if as_json {
+        let rows: Vec<serde_json::Value> = hits
+            .iter()
+            .map(|h| serde_json::json!({"id": h.entry.id, "notation": h.entry.notation, "family": h.entry.family, "word": h.entry.word, "axes": h.entry.axes, "pattern": h.pattern, "lock_sets": h.lock_sets}))
+            .collect();
+        return Ok(json(&rows));
+    }
+    let mut s = String::new();
+    for h in &hits {
+        let _ = writeln!(
+            s,
+            "{:<8} {:<22} {} {} {:<7} lock {}",
+            h.entry.id,
+            h.entry.notation,
+            h.entry.word,
+            h.entry.axes,
+            h.pattern,
+            h.lock_sets.join(" | ")
+        );
+    }
+    let chains: std::collections::BTreeSet<&str> =
+        hits.iter().map(|h| h.entry.id.as_str()).collect();
+    let _ = writeln!(
+        s,
+        "{} verified chains give {q} with at most {max_locks} locked joints",
+        chains.len()
+    );
+    Ok(s)
 }
 
 fn json<T: serde::Serialize>(value: &T) -> String {
@@ -357,8 +457,12 @@ fn catalogue(command: CatalogueCommand) -> Result<String, CliError> {
             }
             Ok(s)
         }
+        CatalogueCommand::Rejected { reading } => {
+            Ok(Catalogue::generate(&reading.options()).not_3t3r_markdown())
+        }
         CatalogueCommand::Show {
             query,
+            lock,
             json: as_json,
             reading,
         } => {
@@ -434,10 +538,22 @@ fn catalogue(command: CatalogueCommand) -> Result<String, CliError> {
                     }));
                 }
             };
+            let locked = match &lock {
+                None => None,
+                Some(text) => Some(locked_pattern(entry, text)?),
+            };
             if as_json {
-                return Ok(json(entry));
+                let mut v = serde_json::to_value(entry).expect("serialisable");
+                if let Some((set, pattern)) = locked {
+                    v["locked"] = serde_json::json!({"lock_set": set, "pattern": pattern});
+                }
+                return Ok(json(&v));
             }
-            Ok(describe(&cat, entry))
+            let mut s = describe(&cat, entry);
+            if let Some((set, pattern)) = locked {
+                let _ = writeln!(s, "locked {set:<6} {pattern}");
+            }
+            Ok(s)
         }
         CatalogueCommand::Compare {
             json: as_json,
@@ -450,6 +566,24 @@ fn catalogue(command: CatalogueCommand) -> Result<String, CliError> {
             Ok(cat.differences_markdown())
         }
     }
+}
+
+/// The motion of an entry's chain with the joints of `text` locked (its verification's
+/// geometry and sample configurations).
+fn locked_pattern(entry: &Entry, text: &str) -> Result<(String, String), CliError> {
+    let chain = entry
+        .serial_chain(VERIFICATION_SEED)
+        .map_err(|e| CliError::Input(format!("{}: {e}", entry.id)))?;
+    let mask = verification::parse_lock_set(text, chain.len())
+        .map_err(|e| CliError::Input(format!("{}: {e}", entry.id)))?;
+    let settings = Settings::default();
+    let configurations =
+        verification::configurations(&chain, &settings, entry.sample_seed(VERIFICATION_SEED));
+    let c = verification::locked_motion(&chain, mask, &configurations, &settings);
+    Ok((
+        verification::lock_text(mask, chain.len()),
+        c.pattern.to_string(),
+    ))
 }
 
 fn describe(cat: &Catalogue, e: &Entry) -> String {
@@ -489,6 +623,60 @@ fn describe(cat: &Catalogue, e: &Entry) -> String {
             (false, false) => "not printed in the Appendix",
         }
     );
+    if let Some(v) = &e.verification {
+        let _ = writeln!(
+            s,
+            "verified     {} (rank {} at every sample, smallest kept singular value {:.3e} of the largest{})",
+            if v.is_3t3r { "3T3R" } else { "NOT 3T3R" },
+            v.rank,
+            v.gap,
+            if v.idle_joints.is_empty() {
+                String::new()
+            } else {
+                format!("; idle joints {:?}", v.idle_joints)
+            }
+        );
+        let sv: Vec<String> = v
+            .singular_values
+            .iter()
+            .map(|x| format!("{x:.4}"))
+            .collect();
+        let _ = writeln!(s, "singular     {}", sv.join(" "));
+        let _ = writeln!(
+            s,
+            "patterns     (lock sets: joint positions in the word; minimal sets only)"
+        );
+        let mut groups: Vec<(&String, &Vec<String>)> = v
+            .patterns
+            .iter()
+            .filter(|(p, _)| {
+                p.parse::<PatternQuery>()
+                    .is_ok_and(|q| matches!(q, PatternQuery::Group { .. }))
+            })
+            .collect();
+        groups.sort_by_key(|(p, locks)| {
+            (
+                locks
+                    .iter()
+                    .map(|l| if l.as_str() == "-" { 0 } else { l.len() })
+                    .min(),
+                (*p).clone(),
+            )
+        });
+        for (p, locks) in groups {
+            let _ = writeln!(s, "  {p:<8} {}", locks.join(" | "));
+        }
+        let others: Vec<String> = v
+            .patterns
+            .keys()
+            .filter(|p| {
+                p.parse::<PatternQuery>()
+                    .is_ok_and(|q| matches!(q, PatternQuery::NonGroup { .. }))
+            })
+            .cloned()
+            .collect();
+        let _ = writeln!(s, "  non-group: {}", others.join(" "));
+    }
     let others: Vec<String> = cat
         .entries
         .iter()

@@ -8,6 +8,10 @@
 #![deny(missing_docs)]
 
 pub mod catalogue;
+pub mod chain;
+pub mod motion;
 pub mod notation;
 pub mod paper;
+pub mod screw;
 pub mod synthesis;
+pub mod verification;

@@ -1,0 +1,592 @@
+//! Motion patterns: the 12 displacement subgroups of Hervé (paper 000 §1, ref. [16]) and the
+//! non-group patterns `nTmR`, and the classification of a finite motion from its twist spaces.
+//!
+//! A motion is of group type when its spatial twist space (twists referred to the base origin)
+//! is one and the same Lie subalgebra of se(3) at every sampled configuration. The subalgebra is
+//! then classified by its dimension, the rank of its rotational part, its pure-translation
+//! subspace and its pitch:
+//!
+//! | dim | rotations | translations | group |
+//! |---|---|---|---|
+//! | 0 | 0 | 0 | E, identity |
+//! | 1 | 0 | 1 | T(u), translation along u |
+//! | 1 | 1 | 0 | R(N,u) (pitch 0) or H(N,u,p) (pitch p) |
+//! | 2 | 0 | 2 | T2(P), translations parallel to plane P |
+//! | 2 | 1 | 1 | C(N,u), rotation about and translation along one line |
+//! | 3 | 0 | 3 | T3, spatial translation |
+//! | 3 | 1 | 2 | G(P) (pitch 0) planar motion, or Y(w,p) (pitch p) |
+//! | 3 | 3 | 0 | S(N), rotations about point N |
+//! | 4 | 1 | 3 | X(w), Schönflies motion |
+//! | 6 | 3 | 3 | D, every displacement |
+//!
+//! Any other twist space is a non-group pattern, written `nTmR` with m the rank of its
+//! rotational part and n the rest of its dimension (e.g. `1T2R`, the 3-RPS platform).
+//!
+//! ```
+//! use kinsyn::motion::{Pattern, PatternQuery};
+//! let q: PatternQuery = "X(z)".parse().unwrap();
+//! assert_eq!(q.to_string(), "X(z)");
+//! assert!("3T1R".parse::<PatternQuery>().is_ok());
+//! assert!("Q(z)".parse::<PatternQuery>().is_err());
+//! ```
+
+use crate::screw::{self, Twist, lie_bracket};
+use nalgebra::{DMatrix, Vector3};
+use serde::Serialize;
+use std::fmt;
+use std::str::FromStr;
+
+/// The twelve displacement subgroups (their kinds, without parameters).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
+pub enum GroupKind {
+    /// Identity: no motion.
+    E,
+    /// Translation along a direction.
+    T,
+    /// Rotation about a line.
+    R,
+    /// Helical motion about a line with a pitch.
+    H,
+    /// Translations parallel to a plane.
+    T2,
+    /// Cylindrical: rotation about and translation along a line.
+    C,
+    /// Planar: translations parallel to a plane and rotations normal to it.
+    G,
+    /// Spatial translation.
+    T3,
+    /// Spherical: rotations about a point.
+    S,
+    /// Translating screw: translations parallel to a plane and helical motion normal to it.
+    Y,
+    /// Schönflies: spatial translation and rotations about one direction.
+    X,
+    /// Every displacement.
+    D,
+}
+
+impl GroupKind {
+    /// All twelve, in order of dimension.
+    pub const ALL: [GroupKind; 12] = [
+        GroupKind::E,
+        GroupKind::T,
+        GroupKind::R,
+        GroupKind::H,
+        GroupKind::T2,
+        GroupKind::C,
+        GroupKind::G,
+        GroupKind::T3,
+        GroupKind::S,
+        GroupKind::Y,
+        GroupKind::X,
+        GroupKind::D,
+    ];
+
+    /// The symbol used in text.
+    #[must_use]
+    pub fn symbol(self) -> &'static str {
+        match self {
+            GroupKind::E => "E",
+            GroupKind::T => "T",
+            GroupKind::R => "R",
+            GroupKind::H => "H",
+            GroupKind::T2 => "T2",
+            GroupKind::C => "C",
+            GroupKind::G => "G",
+            GroupKind::T3 => "T3",
+            GroupKind::S => "S",
+            GroupKind::Y => "Y",
+            GroupKind::X => "X",
+            GroupKind::D => "D",
+        }
+    }
+
+    /// Dimension of the group (degrees of freedom of the motion).
+    #[must_use]
+    pub fn dimension(self) -> usize {
+        match self {
+            GroupKind::E => 0,
+            GroupKind::T | GroupKind::R | GroupKind::H => 1,
+            GroupKind::T2 | GroupKind::C => 2,
+            GroupKind::G | GroupKind::T3 | GroupKind::S | GroupKind::Y => 3,
+            GroupKind::X => 4,
+            GroupKind::D => 6,
+        }
+    }
+
+    /// Whether the group's parameter is a direction (T, R, H, C, Y, X) or a plane normal (T2, G).
+    fn parameter(self) -> Parameter {
+        match self {
+            GroupKind::T
+            | GroupKind::R
+            | GroupKind::H
+            | GroupKind::C
+            | GroupKind::Y
+            | GroupKind::X => Parameter::Direction,
+            GroupKind::T2 | GroupKind::G => Parameter::Plane,
+            _ => Parameter::None,
+        }
+    }
+}
+
+#[derive(PartialEq)]
+enum Parameter {
+    None,
+    Direction,
+    Plane,
+}
+
+/// A displacement subgroup with its parameters.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Group {
+    /// Which of the twelve.
+    pub kind: GroupKind,
+    /// The direction u or w (T, R, H, C, Y, X) or the normal of the plane P (T2, G); unit.
+    pub direction: Option<[f64; 3]>,
+    /// A point N of the axis (R, H, C) or the centre (S).
+    pub point: Option<[f64; 3]>,
+    /// The pitch (H, Y).
+    pub pitch: Option<f64>,
+}
+
+/// A motion pattern: a displacement subgroup, or a non-group pattern with its numbers of
+/// independent translations and rotations.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub enum Pattern {
+    /// One of the 12 displacement subgroups.
+    Group(Group),
+    /// Not a group: `translations`T`rotations`R, dimension their sum.
+    NonGroup {
+        /// Dimension minus rotational rank.
+        translations: usize,
+        /// Rank of the rotational part.
+        rotations: usize,
+    },
+}
+
+impl Pattern {
+    /// Degrees of freedom of the motion.
+    #[must_use]
+    pub fn dof(&self) -> usize {
+        match self {
+            Pattern::Group(g) => g.kind.dimension(),
+            Pattern::NonGroup {
+                translations,
+                rotations,
+            } => translations + rotations,
+        }
+    }
+
+    /// Whether the pattern is one of the 12 groups.
+    #[must_use]
+    pub fn is_group(&self) -> bool {
+        matches!(self, Pattern::Group(_))
+    }
+}
+
+/// Names a unit direction: `x`, `y`, `z` when it lies along an axis (either sense), else its
+/// components.
+fn direction_text(d: &[f64; 3]) -> String {
+    for (i, name) in ["x", "y", "z"].iter().enumerate() {
+        if (d[i].abs() - 1.0).abs() < 1e-6 {
+            return (*name).to_string();
+        }
+    }
+    // Rounded, and −0 written as 0, so that one direction always prints the same.
+    let c = |x: f64| (x * 1000.0).round() / 1000.0 + 0.0;
+    format!("[{:.3},{:.3},{:.3}]", c(d[0]), c(d[1]), c(d[2]))
+}
+
+/// Names the plane with unit normal `n`: `xy` for normal z, and so on.
+fn plane_text(n: &[f64; 3]) -> String {
+    match direction_text(n).as_str() {
+        "x" => "yz".to_string(),
+        "y" => "xz".to_string(),
+        "z" => "xy".to_string(),
+        other => format!("n={other}"),
+    }
+}
+
+impl fmt::Display for Pattern {
+    /// The text form: the group symbol with its direction (`X(z)`, `G(xy)`, `T3`, `S`), or
+    /// `nTmR`. Points and pitches are in the JSON form only (they depend on the geometry).
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Pattern::NonGroup {
+                translations,
+                rotations,
+            } => write!(f, "{translations}T{rotations}R"),
+            Pattern::Group(g) => {
+                f.write_str(g.kind.symbol())?;
+                match (g.kind.parameter(), g.direction) {
+                    (Parameter::Direction, Some(d)) => write!(f, "({})", direction_text(&d)),
+                    (Parameter::Plane, Some(n)) => write!(f, "({})", plane_text(&n)),
+                    _ => Ok(()),
+                }
+            }
+        }
+    }
+}
+
+/// A pattern asked for by the user: a group kind with an optional direction or plane (axis
+/// aligned), or `nTmR`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum PatternQuery {
+    /// A group, with `axis` the direction (0, 1, 2 = x, y, z) or the plane normal when given.
+    Group {
+        /// Which group.
+        kind: GroupKind,
+        /// Direction or plane normal along x, y or z; `None` matches any.
+        axis: Option<u8>,
+    },
+    /// A non-group pattern.
+    NonGroup {
+        /// Translations.
+        translations: usize,
+        /// Rotations.
+        rotations: usize,
+    },
+}
+
+/// Why a pattern string was rejected.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum PatternError {
+    /// Not a known form.
+    #[error(
+        "'{0}' is not a motion pattern; write a group (E, T(x), R(z), H(z), T2(xy), C(z), G(xy), T3, S, Y(z), X(z), D) or nTmR such as 3T1R"
+    )]
+    Unknown(String),
+    /// A group that takes no direction was given one, or a bad direction.
+    #[error("'{text}': {why}")]
+    BadParameter {
+        /// The input.
+        text: String,
+        /// What is wrong.
+        why: String,
+    },
+}
+
+impl FromStr for PatternQuery {
+    type Err = PatternError;
+
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        let text: String = s.chars().filter(|c| !c.is_whitespace()).collect();
+        if let Some((t, r)) = text.strip_suffix('R').and_then(|x| x.split_once('T'))
+            && let (Ok(translations), Ok(rotations)) = (t.parse::<usize>(), r.parse::<usize>())
+        {
+            if translations > 3 || rotations > 3 {
+                return Err(PatternError::BadParameter {
+                    text,
+                    why: "at most 3 translations and 3 rotations".into(),
+                });
+            }
+            return Ok(PatternQuery::NonGroup {
+                translations,
+                rotations,
+            });
+        }
+        let (symbol, param) = match text.split_once('(') {
+            Some((sym, rest)) => {
+                let Some(p) = rest.strip_suffix(')') else {
+                    return Err(PatternError::BadParameter {
+                        text: text.clone(),
+                        why: "unclosed parenthesis".into(),
+                    });
+                };
+                (sym.to_string(), Some(p.to_string()))
+            }
+            None => (text.clone(), None),
+        };
+        let kind = GroupKind::ALL
+            .into_iter()
+            .find(|k| k.symbol() == symbol)
+            .ok_or_else(|| PatternError::Unknown(text.clone()))?;
+        let axis = match (kind.parameter(), param.as_deref()) {
+            (_, None) => None,
+            (Parameter::None, Some(_)) => {
+                return Err(PatternError::BadParameter {
+                    text,
+                    why: format!("{symbol} takes no direction"),
+                });
+            }
+            (Parameter::Direction, Some(p)) => Some(match p {
+                "x" => 0,
+                "y" => 1,
+                "z" => 2,
+                _ => {
+                    return Err(PatternError::BadParameter {
+                        text,
+                        why: format!("direction '{p}' is not x, y or z"),
+                    });
+                }
+            }),
+            (Parameter::Plane, Some(p)) => Some(match p {
+                "yz" | "zy" => 0,
+                "xz" | "zx" => 1,
+                "xy" | "yx" => 2,
+                _ => {
+                    return Err(PatternError::BadParameter {
+                        text,
+                        why: format!("plane '{p}' is not xy, yz or xz"),
+                    });
+                }
+            }),
+        };
+        Ok(PatternQuery::Group { kind, axis })
+    }
+}
+
+impl fmt::Display for PatternQuery {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match *self {
+            PatternQuery::NonGroup {
+                translations,
+                rotations,
+            } => write!(f, "{translations}T{rotations}R"),
+            PatternQuery::Group { kind, axis } => {
+                f.write_str(kind.symbol())?;
+                match (kind.parameter(), axis) {
+                    (Parameter::Direction, Some(a)) => {
+                        write!(f, "({})", ["x", "y", "z"][a as usize])
+                    }
+                    (Parameter::Plane, Some(a)) => {
+                        write!(f, "({})", ["yz", "xz", "xy"][a as usize])
+                    }
+                    _ => Ok(()),
+                }
+            }
+        }
+    }
+}
+
+impl PatternQuery {
+    /// Whether a classified pattern is the one asked for (a direction must be parallel).
+    #[must_use]
+    pub fn matches(&self, p: &Pattern) -> bool {
+        match (self, p) {
+            (
+                PatternQuery::NonGroup {
+                    translations,
+                    rotations,
+                },
+                Pattern::NonGroup {
+                    translations: t,
+                    rotations: r,
+                },
+            ) => translations == t && rotations == r,
+            (PatternQuery::Group { kind, axis }, Pattern::Group(g)) => {
+                g.kind == *kind
+                    && axis.is_none_or(|a| {
+                        g.direction
+                            .is_some_and(|d| (d[a as usize].abs() - 1.0).abs() < 1e-6)
+                    })
+            }
+            _ => false,
+        }
+    }
+}
+
+/// The relative tolerance for deciding that twists lie in a subspace, that a bracket closes,
+/// or that a pitch is zero.
+pub const SUBSPACE_TOLERANCE: f64 = 1e-7;
+
+/// The residual of `x` after projection onto the span of the orthonormal columns of `basis`.
+fn residual(basis: &DMatrix<f64>, x: &nalgebra::DVector<f64>) -> f64 {
+    if basis.ncols() == 0 {
+        return x.norm();
+    }
+    (x - basis * (basis.transpose() * x)).norm()
+}
+
+/// Whether two orthonormal bases span the same subspace.
+#[must_use]
+pub fn same_span(a: &DMatrix<f64>, b: &DMatrix<f64>, tolerance: f64) -> bool {
+    a.ncols() == b.ncols()
+        && (0..b.ncols()).all(|j| residual(a, &b.column(j).into_owned()) < tolerance)
+}
+
+fn v3(col: nalgebra::DVectorView<'_, f64>) -> Vector3<f64> {
+    Vector3::new(col[0], col[1], col[2])
+}
+
+fn twist_of(col: nalgebra::DVectorView<'_, f64>) -> Twist {
+    Twist {
+        w: Vector3::new(col[0], col[1], col[2]),
+        v: Vector3::new(col[3], col[4], col[5]),
+    }
+}
+
+/// Whether the span of the orthonormal twists `basis` is closed under the Lie bracket, i.e. the
+/// Lie algebra of a displacement subgroup.
+#[must_use]
+pub fn is_subalgebra(basis: &DMatrix<f64>, tolerance: f64) -> bool {
+    let n = basis.ncols();
+    for i in 0..n {
+        for j in i + 1..n {
+            let b = lie_bracket(&twist_of(basis.column(i)), &twist_of(basis.column(j)));
+            let v = nalgebra::DVector::from_column_slice(b.to_vector().as_slice());
+            if residual(basis, &v) > tolerance * (1.0 + v.norm()) {
+                return false;
+            }
+        }
+    }
+    true
+}
+
+/// The displacement subgroup whose Lie algebra is the span of `basis` (orthonormal twists),
+/// assuming [`is_subalgebra`] holds; `None` if the subalgebra is none of the twelve (which
+/// cannot happen for a closed span, but numerical noise is reported rather than guessed).
+#[must_use]
+pub fn classify_subalgebra(basis: &DMatrix<f64>, tolerance: f64) -> Option<Group> {
+    let k = basis.ncols();
+    let omega = basis.rows(0, 3).into_owned();
+    // The basis is orthonormal, so the blocks are judged against 1, not their own largest value.
+    let (rot_basis, rot_rank) = screw::span_basis_scaled(&omega, tolerance, Some(1.0));
+    let r = rot_rank.rank;
+    // Pure translations in the span: combinations x with ω-part zero.
+    let (null, _) = screw::nullspace_scaled(&omega, tolerance, Some(1.0));
+    let translations = basis * &null; // 6 × (k − r)
+    let t_dirs = translations.rows(3, 3).into_owned();
+    let group = |kind,
+                 direction: Option<Vector3<f64>>,
+                 point: Option<Vector3<f64>>,
+                 pitch: Option<f64>| Group {
+        kind,
+        direction: direction.map(|d| canonical_sign(d.normalize()).into()),
+        point: point.map(Into::into),
+        pitch,
+    };
+    match (k, r) {
+        (0, _) => Some(group(GroupKind::E, None, None, None)),
+        (6, 3) => Some(group(GroupKind::D, None, None, None)),
+        (_, 0) => match k {
+            1 => Some(group(GroupKind::T, Some(v3(t_dirs.column(0))), None, None)),
+            2 => Some(group(
+                GroupKind::T2,
+                Some(v3(t_dirs.column(0)).cross(&v3(t_dirs.column(1)))),
+                None,
+                None,
+            )),
+            3 => Some(group(GroupKind::T3, None, None, None)),
+            _ => None,
+        },
+        (_, 1) => {
+            let w: Vector3<f64> = v3(rot_basis.column(0)).normalize();
+            // A twist of the span whose rotation is exactly w: solve basis·c with ω-part = w.
+            let w_dyn = nalgebra::DVector::from_column_slice(w.as_slice());
+            let c = omega.clone().pseudo_inverse(1e-12).ok()? * w_dyn;
+            let mut t = twist_of((basis * c).column(0));
+            // Remove pure translations from v, then read axis and pitch.
+            if translations.ncols() > 0 {
+                let (tb, _) = screw::span_basis_scaled(&t_dirs, tolerance, Some(1.0));
+                for j in 0..tb.ncols() {
+                    let d = v3(tb.column(j));
+                    t.v -= d * d.dot(&t.v);
+                }
+            }
+            let pitch = t.w.dot(&t.v);
+            let point = t.w.cross(&t.v);
+            let zero_pitch = pitch.abs() < tolerance.sqrt();
+            match k {
+                1 => Some(if zero_pitch {
+                    group(GroupKind::R, Some(w), Some(point), None)
+                } else {
+                    group(GroupKind::H, Some(w), Some(point), Some(pitch))
+                }),
+                2 => Some(group(GroupKind::C, Some(w), Some(point), None)),
+                3 => Some(if zero_pitch {
+                    group(GroupKind::G, Some(w), None, None)
+                } else {
+                    group(GroupKind::Y, Some(w), None, Some(pitch))
+                }),
+                4 => Some(group(GroupKind::X, Some(w), None, None)),
+                _ => None,
+            }
+        }
+        (3, 3) => {
+            // Rotations about N: every twist is (ω; N × ω); solve for N by least squares.
+            let mut a = DMatrix::zeros(9, 3);
+            let mut b = nalgebra::DVector::zeros(9);
+            for j in 0..3 {
+                let t = twist_of(basis.column(j));
+                // N × ω = v  ⇔  −[ω] N = v.
+                let m = -screw::skew(&t.w);
+                a.view_mut((3 * j, 0), (3, 3)).copy_from(&m);
+                b.rows_mut(3 * j, 3).copy_from(&t.v);
+            }
+            let n = a.svd(true, true).solve(&b, 1e-12).ok()?;
+            Some(group(
+                GroupKind::S,
+                None,
+                Some(Vector3::new(n[0], n[1], n[2])),
+                None,
+            ))
+        }
+        _ => None,
+    }
+}
+
+/// A direction with its first non-zero component positive, so that `u` and `−u` print alike.
+fn canonical_sign(d: Vector3<f64>) -> Vector3<f64> {
+    let first = d.iter().copied().find(|c| c.abs() > 1e-9).unwrap_or(1.0);
+    if first < 0.0 { -d } else { d }
+}
+
+/// The result of classifying a sampled finite motion.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Classification {
+    /// The pattern.
+    pub pattern: Pattern,
+    /// Dimension of the twist space (the largest over the samples: the generic local dof).
+    pub dof: usize,
+    /// Whether the twist spaces agreed at every sample.
+    pub same_span: bool,
+}
+
+/// Classifies a motion from its twist spaces at several sampled configurations (the columns of
+/// each matrix span the spatial twists there). The motion is the group whose Lie algebra is the
+/// common span when all spans agree and the span is closed under the bracket; otherwise
+/// `nTmR` from the generic dimension and rotational rank.
+#[must_use]
+pub fn classify(samples: &[DMatrix<f64>], tolerance: f64) -> Classification {
+    let spans: Vec<(DMatrix<f64>, screw::Rank)> = samples
+        .iter()
+        .map(|m| screw::span_basis(m, screw::DEFAULT_RANK_TOLERANCE))
+        .collect();
+    let dof = spans.iter().map(|(_, r)| r.rank).max().unwrap_or(0);
+    let generic: Vec<&DMatrix<f64>> = spans
+        .iter()
+        .filter(|(_, r)| r.rank == dof)
+        .map(|(b, _)| b)
+        .collect();
+    let same = spans.iter().all(|(_, r)| r.rank == dof)
+        && generic.windows(2).all(|w| same_span(w[0], w[1], tolerance));
+    if let Some(first) = generic.first()
+        && same
+        && is_subalgebra(first, tolerance)
+        && let Some(g) = classify_subalgebra(first, tolerance)
+    {
+        return Classification {
+            pattern: Pattern::Group(g),
+            dof,
+            same_span: true,
+        };
+    }
+    let rotations = generic
+        .iter()
+        .map(|b| {
+            screw::span_basis_scaled(&b.rows(0, 3).into_owned(), tolerance, Some(1.0))
+                .1
+                .rank
+        })
+        .max()
+        .unwrap_or(0);
+    Classification {
+        pattern: Pattern::NonGroup {
+            translations: dof - rotations,
+            rotations,
+        },
+        dof,
+        same_span: same,
+    }
+}

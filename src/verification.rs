@@ -1,0 +1,235 @@
+//! Numerical verification of a leg chain: the rank of its Jacobian at random configurations,
+//! its idle joints, and the motion pattern left by every subset of locked joints (paper 000's
+//! "multioperation capacity" of a leg).
+//!
+//! Geometry: the chain's axes have the catalogue directions at the reference configuration;
+//! joints of one C, U or S share a point, other consecutive joints are offset by generic
+//! non-zero vectors ([`SerialChain::from_layout`]), all drawn from a seeded generator. Locked
+//! joints are held at their reference values, where the catalogue's directions hold; free joints
+//! are sampled at random (revolutes in [−π, π), prismatics in [−1, 1)).
+//!
+//! ```
+//! use kinsyn::verification::{verify, Settings};
+//! use kinsyn::chain::SerialChain;
+//! use kinsyn::notation::Primitive::{P, R};
+//! use rand::SeedableRng;
+//! // PPPS: three perpendicular guides and a spherical wrist (Table 1 row 1).
+//! let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(7);
+//! let chain = SerialChain::from_layout(&[P, P, P, R, R, R], &[0, 1, 2, 0, 1, 2], &[1, 1, 1, 3], &mut rng).unwrap();
+//! let v = verify(&chain, &Settings::default(), 7);
+//! assert!(v.is_3t3r);
+//! assert_eq!(v.patterns["T3"], vec!["456"]); // lock the S: spatial translation
+//! assert_eq!(v.patterns["S"], vec!["123"]);  // lock the guides: spherical motion
+//! ```
+
+use crate::chain::SerialChain;
+use crate::motion::{self, Classification};
+use crate::notation::Primitive;
+use crate::screw::{self, DEFAULT_RANK_TOLERANCE};
+use nalgebra::DMatrix;
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+use serde::Serialize;
+use std::collections::BTreeMap;
+
+/// How a chain is verified.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Settings {
+    /// Random configurations sampled.
+    pub samples: usize,
+    /// Relative rank tolerance (of the largest singular value).
+    pub rank_tolerance: f64,
+    /// Relative tolerance for comparing twist spaces and brackets.
+    pub subspace_tolerance: f64,
+}
+
+impl Default for Settings {
+    fn default() -> Self {
+        Settings {
+            samples: 3,
+            rank_tolerance: DEFAULT_RANK_TOLERANCE,
+            subspace_tolerance: motion::SUBSPACE_TOLERANCE,
+        }
+    }
+}
+
+/// What the numerical check found for one chain.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Verification {
+    /// The seed of the random configurations (the geometry's seed is the caller's).
+    pub seed: u64,
+    /// Generic rank of the chain Jacobian (the largest over the samples).
+    pub rank: usize,
+    /// Singular values at the sample where the smallest kept one is smallest (rounded to 6
+    /// significant digits).
+    pub singular_values: Vec<f64>,
+    /// The smallest kept singular value over the largest, at that sample: how far the rank is
+    /// from dropping.
+    pub gap: f64,
+    /// The largest dropped singular value over the largest, over all samples (0 when none is
+    /// dropped): how far the rank is from rising.
+    pub dropped: f64,
+    /// Joints (1-based) whose removal does not lower the rank at any sample.
+    pub idle_joints: Vec<usize>,
+    /// Rank 6 at every sample and no idle joint.
+    pub is_3t3r: bool,
+    /// Every pattern the chain gives with some joints locked, by text form, with its minimal
+    /// lock sets (each a string of 1-based joint positions, `-` for none).
+    pub patterns: BTreeMap<String, Vec<String>>,
+}
+
+/// Rounds to `digits` significant digits, so that files do not carry floating-point noise.
+#[must_use]
+pub fn round_significant(x: f64, digits: i32) -> f64 {
+    if x == 0.0 || !x.is_finite() {
+        return x;
+    }
+    let scale = 10f64.powi(digits - 1 - x.abs().log10().floor() as i32);
+    (x * scale).round() / scale
+}
+
+/// A random configuration: revolutes in [−π, π), prismatics in [−1, 1).
+pub fn random_configuration(chain: &SerialChain, rng: &mut impl Rng) -> Vec<f64> {
+    chain
+        .joints()
+        .iter()
+        .map(|j| match j.kind {
+            Primitive::R => rng.random_range(-std::f64::consts::PI..std::f64::consts::PI),
+            Primitive::P => rng.random_range(-1.0..1.0),
+        })
+        .collect()
+}
+
+/// A lock set as text: the 1-based positions of the locked joints, `-` for none.
+#[must_use]
+pub fn lock_text(mask: u32, n: usize) -> String {
+    let s: String = (0..n)
+        .filter(|i| mask & (1 << i) != 0)
+        .map(|i| char::from_digit((i + 1) as u32, 10).unwrap_or('?'))
+        .collect();
+    if s.is_empty() { "-".to_string() } else { s }
+}
+
+/// The motion left when the joints in `mask` are locked at their reference values, classified
+/// from the twist spaces at the given configurations of the free joints.
+#[must_use]
+pub fn locked_motion(
+    chain: &SerialChain,
+    mask: u32,
+    configurations: &[Vec<f64>],
+    settings: &Settings,
+) -> Classification {
+    let n = chain.len();
+    let free: Vec<usize> = (0..n).filter(|i| mask & (1 << i) == 0).collect();
+    let samples: Vec<DMatrix<f64>> = configurations
+        .iter()
+        .map(|q| {
+            let q: Vec<f64> = (0..n)
+                .map(|i| if mask & (1 << i) == 0 { q[i] } else { 0.0 })
+                .collect();
+            let j = chain.jacobian(&q);
+            DMatrix::from_fn(6, free.len(), |r, c| j[(r, free[c])])
+        })
+        .collect();
+    motion::classify(&samples, settings.subspace_tolerance)
+}
+
+/// The sampled configurations [`verify`] uses for `seed`.
+#[must_use]
+pub fn configurations(chain: &SerialChain, settings: &Settings, seed: u64) -> Vec<Vec<f64>> {
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    (0..settings.samples.max(1))
+        .map(|_| random_configuration(chain, &mut rng))
+        .collect()
+}
+
+/// Parses a lock set written as joint positions (`"45"`, `"1,4,5"`, `"-"` for none) for a chain
+/// of `n` joints into a bit mask.
+///
+/// # Errors
+/// A character that is not a joint position of the chain, or a joint named twice.
+pub fn parse_lock_set(text: &str, n: usize) -> Result<u32, String> {
+    let mut mask = 0u32;
+    for c in text.chars().filter(|c| !matches!(c, ',' | ' ' | '-')) {
+        let Some(d) = c.to_digit(10).filter(|&d| d >= 1 && (d as usize) <= n) else {
+            return Err(format!(
+                "lock set '{text}': '{c}' is not a joint of this chain (joints 1 to {n})"
+            ));
+        };
+        if mask & (1 << (d - 1)) != 0 {
+            return Err(format!("lock set '{text}': joint {d} named twice"));
+        }
+        mask |= 1 << (d - 1);
+    }
+    Ok(mask)
+}
+
+/// Verifies a chain (up to 31 joints): rank, idle joints and the patterns of all lock subsets.
+#[must_use]
+pub fn verify(chain: &SerialChain, settings: &Settings, seed: u64) -> Verification {
+    let n = chain.len();
+    let configurations = configurations(chain, settings, seed);
+    let jacobians: Vec<DMatrix<f64>> = configurations
+        .iter()
+        .map(|q| DMatrix::from_column_slice(6, n, chain.jacobian(q).as_slice()))
+        .collect();
+    let ranks: Vec<screw::Rank> = jacobians
+        .iter()
+        .map(|j| screw::rank(j, settings.rank_tolerance))
+        .collect();
+    let rank = ranks.iter().map(|r| r.rank).max().unwrap_or(0);
+    let worst = ranks
+        .iter()
+        .min_by(|a, b| a.gap().0.total_cmp(&b.gap().0))
+        .cloned()
+        .unwrap_or(screw::Rank {
+            rank: 0,
+            singular_values: vec![],
+            tolerance: settings.rank_tolerance,
+        });
+    let idle_joints: Vec<usize> = (0..n)
+        .filter(|&i| {
+            jacobians.iter().all(|j| {
+                let without = j.clone().remove_column(i);
+                screw::rank(&without, settings.rank_tolerance).rank == rank
+            })
+        })
+        .map(|i| i + 1)
+        .collect();
+    let is_3t3r = ranks.iter().all(|r| r.rank == 6) && idle_joints.is_empty();
+
+    // Every lock subset, then the minimal lock sets of each pattern.
+    let mut by_pattern: BTreeMap<String, Vec<u32>> = BTreeMap::new();
+    for mask in 0u32..(1 << n) {
+        let c = locked_motion(chain, mask, &configurations, settings);
+        by_pattern
+            .entry(c.pattern.to_string())
+            .or_default()
+            .push(mask);
+    }
+    let patterns = by_pattern
+        .into_iter()
+        .map(|(p, masks)| {
+            let minimal: Vec<String> = masks
+                .iter()
+                .filter(|&&m| !masks.iter().any(|&o| o != m && o & m == o))
+                .map(|&m| lock_text(m, n))
+                .collect();
+            (p, minimal)
+        })
+        .collect();
+    Verification {
+        seed,
+        rank,
+        singular_values: worst
+            .singular_values
+            .iter()
+            .map(|&s| round_significant(s, 6))
+            .collect(),
+        gap: round_significant(worst.gap().0, 6),
+        dropped: round_significant(ranks.iter().map(|r| r.gap().1).fold(0.0, f64::max), 3),
+        idle_joints,
+        is_3t3r,
+        patterns,
+    }
+}
