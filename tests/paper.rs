@@ -87,7 +87,7 @@ fn the_families_are_all_permutations() {
 fn table_1_matches_row_by_row_except_misprints() {
     // Table 1 (63 chains, §2.1): every difference is a misprinted name or the omission that
     // misprint leaves, or a crossed-out repeat left out (docs/deviations.md).
-    let cat = Catalogue::generate(&Options::default());
+    let cat = Catalogue::synthesise(&Options::default());
     for d in cat.differences.iter().filter(|d| d.key.table == 1) {
         assert!(
             matches!(
@@ -118,7 +118,7 @@ fn documented() -> Vec<String> {
 
 #[test]
 fn every_difference_from_the_appendix_is_documented() {
-    let cat = Catalogue::generate(&Options::default());
+    let cat = Catalogue::synthesise(&Options::default());
     let generated: Vec<String> = cat
         .differences_markdown()
         .lines()
