@@ -119,3 +119,28 @@ fn help_teaches() {
     let h = stdout(&o);
     assert!(h.contains("T2-017") && h.contains("notation"), "{h}");
 }
+
+#[test]
+fn query_and_locks() {
+    // PPPS with its S locked translates (hand derivation, issue 3).
+    let o = kinsyn(&["query", "--pattern", "T3", "--max-locks", "3", "--family", "PPPRRR"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(stdout(&o).lines().any(|l| l.contains("PPPS") && l.contains("lock 456")), "{}", stdout(&o));
+    let o = kinsyn(&["query", "--pattern", "X(z)", "--json"]);
+    let v: serde_json::Value = serde_json::from_str(&stdout(&o)).unwrap();
+    assert!(v.as_array().unwrap().iter().all(|h| h["pattern"] == "X(z)"));
+    let o = kinsyn(&["catalogue", "show", "T1-001", "--lock", "4,5"]);
+    assert!(stdout(&o).contains("locked 45     X(z)"), "{}", stdout(&o));
+    for args in [
+        &["query", "--pattern", "Q(z)"][..],
+        &["query", "--pattern", "X(w)"],
+        &["query", "--pattern", "T3", "--family", "PPP"],
+        &["query", "--pattern", "T3", "--max-locks", "9"],
+        &["catalogue", "show", "T1-001", "--lock", "7"],
+        &["catalogue", "show", "T1-001", "--lock", "11"],
+    ] {
+        let o = kinsyn(args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}");
+        assert_eq!(stderr(&o).lines().count(), 1, "{args:?}: {}", stderr(&o));
+    }
+}
