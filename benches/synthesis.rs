@@ -12,9 +12,15 @@ fn synthesis(c: &mut Criterion) {
     c.bench_function("enumerate all tables", |b| {
         b.iter(|| enumerate(black_box(&options)))
     });
-    c.bench_function("catalogue generate (enumerate + dedupe + compare)", |b| {
+    c.bench_function("catalogue synthesise (enumerate + dedupe + compare)", |b| {
+        b.iter(|| Catalogue::synthesise(black_box(&options)))
+    });
+    let mut group = c.benchmark_group("catalogue");
+    group.sample_size(10);
+    group.bench_function("generate (synthesise + verify every entry)", |b| {
         b.iter(|| Catalogue::generate(black_box(&options)))
     });
+    group.finish();
     let cat = Catalogue::generate(&options);
     c.bench_function("catalogue files to text", |b| {
         b.iter(|| (cat.to_json(), cat.to_csv(), cat.readme()))

@@ -123,9 +123,23 @@ fn help_teaches() {
 #[test]
 fn query_and_locks() {
     // PPPS with its S locked translates (hand derivation, issue 3).
-    let o = kinsyn(&["query", "--pattern", "T3", "--max-locks", "3", "--family", "PPPRRR"]);
+    let o = kinsyn(&[
+        "query",
+        "--pattern",
+        "T3",
+        "--max-locks",
+        "3",
+        "--family",
+        "PPPRRR",
+    ]);
     assert!(o.status.success(), "{}", stderr(&o));
-    assert!(stdout(&o).lines().any(|l| l.contains("PPPS") && l.contains("lock 456")), "{}", stdout(&o));
+    assert!(
+        stdout(&o)
+            .lines()
+            .any(|l| l.contains("PPPS") && l.contains("lock 456")),
+        "{}",
+        stdout(&o)
+    );
     let o = kinsyn(&["query", "--pattern", "X(z)", "--json"]);
     let v: serde_json::Value = serde_json::from_str(&stdout(&o)).unwrap();
     assert!(v.as_array().unwrap().iter().all(|h| h["pattern"] == "X(z)"));

@@ -51,12 +51,20 @@ fn verified_entries_have_a_clear_rank_6_and_rejected_ones_a_clear_rank_5() {
             assert_eq!(v.rank, 6, "{}", e.id);
             // A clear gap: the smallest kept singular value at least 1000× the rank tolerance.
             assert!(v.gap > 1e-6, "{}: gap {}", e.id, v.gap);
-            assert!(ratio > 1e-5, "{}: finite differences give σ6/σ1 = {ratio}", e.id);
+            assert!(
+                ratio > 1e-5,
+                "{}: finite differences give σ6/σ1 = {ratio}",
+                e.id
+            );
         } else {
             rejected += 1;
             assert!(v.rank < 6 || !v.idle_joints.is_empty(), "{}", e.id);
             assert!(v.dropped < 1e-12, "{}: dropped {}", e.id, v.dropped);
-            assert!(ratio < 1e-8, "{}: finite differences give σ6/σ1 = {ratio}", e.id);
+            assert!(
+                ratio < 1e-8,
+                "{}: finite differences give σ6/σ1 = {ratio}",
+                e.id
+            );
         }
     }
     assert!(rejected > 0);
@@ -75,21 +83,35 @@ fn every_entry_reaches_d_and_e_and_queries_find_hand_derived_cases() {
     // the last one (z at the reference configuration).
     let t3: PatternQuery = "T3".parse().unwrap();
     let hits = cat.query(&t3, 3, Some("PPPRRR"));
-    let ppps = hits.iter().find(|h| h.entry.notation == "PPPS").expect("PPPS gives T3");
+    let ppps = hits
+        .iter()
+        .find(|h| h.entry.notation == "PPPS")
+        .expect("PPPS gives T3");
     assert_eq!(ppps.lock_sets, vec!["456"]);
     let xz: PatternQuery = "X(z)".parse().unwrap();
-    assert!(cat.query(&xz, 2, None).iter().any(|h| h.entry.notation == "PPPS" && h.lock_sets == vec!["45"]));
+    assert!(
+        cat.query(&xz, 2, None)
+            .iter()
+            .any(|h| h.entry.notation == "PPPS" && h.lock_sets == vec!["45"])
+    );
     // With no lock at all, no 6-dof chain is anything but D.
     assert!(cat.query(&t3, 0, None).is_empty());
 }
 
 #[test]
 fn every_rejected_entry_is_documented() {
-    let doc = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/docs/deviations.md")).unwrap();
+    let doc = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/docs/deviations.md"))
+        .unwrap();
     let begin = doc.find("<!-- not-3t3r:begin -->").expect("begin marker");
     let end = doc.find("<!-- not-3t3r:end -->").expect("end marker");
-    let documented: Vec<&str> = doc[begin..end].lines().filter(|l| l.starts_with("| T")).collect();
+    let documented: Vec<&str> = doc[begin..end]
+        .lines()
+        .filter(|l| l.starts_with("| T"))
+        .collect();
     let generated = catalogue().not_3t3r_markdown();
     let generated: Vec<&str> = generated.lines().filter(|l| l.starts_with("| T")).collect();
-    assert_eq!(documented, generated, "docs/deviations.md is out of date: regenerate with `kinsyn catalogue rejected`");
+    assert_eq!(
+        documented, generated,
+        "docs/deviations.md is out of date: regenerate with `kinsyn catalogue rejected`"
+    );
 }
