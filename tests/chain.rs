@@ -1,33 +1,16 @@
 //! Serial chains (src/chain.rs): the Jacobian against finite differences of the forward
 //! kinematics, and the generic chain of paper 000 §3 against its own velocity equation.
 
+mod common;
+
+use common::finite_difference_column;
 use kinsyn::chain::{GenericChain, GenericValues, SerialChain, random_unit};
 use kinsyn::notation::Primitive::{self, P, R};
 use kinsyn::screw::Twist;
-use nalgebra::{Matrix3, Vector3};
+use nalgebra::Vector3;
 use proptest::prelude::*;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
-
-/// The spatial twist of the motion q(t) = q + t·e_i by central differences of g(q):
-/// ω from (dR/dt) Rᵀ, v = dp/dt − ω × p.
-fn finite_difference_column(c: &SerialChain, q: &[f64], i: usize, h: f64) -> Twist {
-    let mut qp = q.to_vec();
-    let mut qm = q.to_vec();
-    qp[i] += h;
-    qm[i] -= h;
-    let (rp, pp) = c.forward(&qp);
-    let (rm, pm) = c.forward(&qm);
-    let (r0, p0) = c.forward(q);
-    let dr: Matrix3<f64> = (rp.matrix() - rm.matrix()) / (2.0 * h);
-    let w_hat = dr * r0.matrix().transpose();
-    let w = Vector3::new(w_hat[(2, 1)], w_hat[(0, 2)], w_hat[(1, 0)]);
-    let dp = (pp - pm) / (2.0 * h);
-    Twist {
-        w,
-        v: dp - w.cross(&p0),
-    }
-}
 
 fn random_chain(rng: &mut ChaCha8Rng, n: usize) -> SerialChain {
     let joints: Vec<(Primitive, Vector3<f64>, Vector3<f64>)> = (0..n)

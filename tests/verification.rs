@@ -2,35 +2,19 @@
 //! with an independent Jacobian (finite differences of the forward kinematics) and against
 //! docs/deviations.md.
 
+mod common;
+
+use common::finite_difference_jacobian;
 use kinsyn::catalogue::{Catalogue, VERIFICATION_SEED};
-use kinsyn::chain::SerialChain;
 use kinsyn::motion::PatternQuery;
 use kinsyn::synthesis::Options;
 use kinsyn::verification::random_configuration;
-use nalgebra::{DMatrix, Matrix3, Vector3};
 use rand::SeedableRng;
 use std::sync::OnceLock;
 
 fn catalogue() -> &'static Catalogue {
     static C: OnceLock<Catalogue> = OnceLock::new();
     C.get_or_init(|| Catalogue::generate(&Options::default()))
-}
-
-/// The Jacobian by central differences of g(q): column i is (ω; ṗ − ω × p) for q̇ = e_i.
-fn finite_difference_jacobian(c: &SerialChain, q: &[f64]) -> DMatrix<f64> {
-    let h = 1e-6;
-    let (r0, p0) = c.forward(q);
-    DMatrix::from_fn(6, c.len(), |_, _| 0.0).map_with_location(|row, i, _| {
-        let (mut qp, mut qm) = (q.to_vec(), q.to_vec());
-        qp[i] += h;
-        qm[i] -= h;
-        let ((rp, pp), (rm, pm)) = (c.forward(&qp), c.forward(&qm));
-        let dr: Matrix3<f64> = (rp.matrix() - rm.matrix()) / (2.0 * h);
-        let w_hat = dr * r0.matrix().transpose();
-        let w = Vector3::new(w_hat[(2, 1)], w_hat[(0, 2)], w_hat[(1, 0)]);
-        let v = (pp - pm) / (2.0 * h) - w.cross(&p0);
-        if row < 3 { w[row] } else { v[row - 3] }
-    })
 }
 
 #[test]
@@ -45,7 +29,7 @@ fn verified_entries_have_a_clear_rank_6_and_rejected_ones_a_clear_rank_5() {
         let chain = e.serial_chain(VERIFICATION_SEED).unwrap();
         let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(99);
         let q = random_configuration(&chain, &mut rng);
-        let sv = finite_difference_jacobian(&chain, &q).singular_values();
+        let sv = finite_difference_jacobian(&chain, &q, 1e-6).singular_values();
         let ratio = sv.min() / sv.max();
         if v.is_3t3r {
             assert_eq!(v.rank, 6, "{}", e.id);
