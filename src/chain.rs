@@ -23,7 +23,7 @@
 //! ```
 
 use crate::notation::Primitive;
-use crate::screw::Twist;
+use crate::screw::{Twist, transform_twist};
 use nalgebra::{Matrix6xX, Rotation3, Unit, Vector3};
 use rand::Rng;
 
@@ -174,28 +174,13 @@ impl SerialChain {
             q.len() >= self.joints.len() && out.ncols() >= self.joints.len(),
             "one joint value and column per joint"
         );
-        let mut rot = Rotation3::identity();
-        let mut pos = Vector3::zeros();
+        // The displacement of the joints before joint i carries its reference screw along.
+        let mut g: Displacement = (Rotation3::identity(), Vector3::zeros());
         for (i, (joint, &qi)) in self.joints.iter().zip(q).enumerate() {
-            let axis = rot * joint.axis;
-            let (w, v) = match joint.kind {
-                Primitive::P => (Vector3::zeros(), axis),
-                Primitive::R => {
-                    let point = rot * joint.point + pos;
-                    (axis, point.cross(&axis))
-                }
-            };
-            let mut col = out.column_mut(i);
-            col[0] = w.x;
-            col[1] = w.y;
-            col[2] = w.z;
-            col[3] = v.x;
-            col[4] = v.y;
-            col[5] = v.z;
+            let t = transform_twist(&g.0, &g.1, &joint.screw());
+            out.column_mut(i).copy_from(&t.to_vector());
             if qi != 0.0 {
-                let d = joint.displacement(qi);
-                pos = rot * d.1 + pos;
-                rot *= d.0;
+                g = compose(&g, &joint.displacement(qi));
             }
         }
     }

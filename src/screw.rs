@@ -277,15 +277,117 @@ impl Rank {
     }
 }
 
+/// A singular value decomposition `m = U Σ Vᵀ` with the values sorted, largest first: `u` is
+/// rows × cols, `v` cols × cols (all right singular vectors, for null spaces).
+#[derive(Debug, Clone)]
+pub struct Svd {
+    /// Left singular vectors (columns), one per singular value.
+    pub u: DMatrix<f64>,
+    /// Singular values, largest first (as many as `m` has columns).
+    pub singular_values: Vec<f64>,
+    /// Right singular vectors (columns).
+    pub v: DMatrix<f64>,
+}
+
+/// The SVD of `m`, checked: nalgebra's SVD (0.35) occasionally returns factors that do not
+/// reconstruct the matrix (seen on chain Jacobians with two equal columns, error 2e-2). The
+/// result is accepted only when `‖U Σ Vᵀ − m‖ ≤ 1e-12 ‖m‖`; otherwise the SVD of the matrix with
+/// its columns reversed is tried, and last the eigen-decomposition of `mᵀm` (exact for the
+/// singular vectors of well-separated values, less accurate below `1e-8` of the largest value).
+#[must_use]
+pub fn svd(m: &DMatrix<f64>) -> Svd {
+    let (rows, cols) = m.shape();
+    if cols == 0 {
+        return Svd {
+            u: DMatrix::zeros(rows, 0),
+            singular_values: Vec::new(),
+            v: DMatrix::zeros(0, 0),
+        };
+    }
+    // Pad to at least as many rows as columns so that every right singular vector is returned.
+    let mut a = DMatrix::zeros(rows.max(cols), cols);
+    a.view_mut((0, 0), (rows, cols)).copy_from(m);
+    let scale = a.norm();
+    let reconstructs = |d: &Svd| {
+        let mut sigma_vt = d.v.transpose();
+        for (k, s) in d.singular_values.iter().enumerate() {
+            sigma_vt.row_mut(k).scale_mut(*s);
+        }
+        (&d.u * sigma_vt - &a).norm() <= 1e-12 * scale.max(f64::MIN_POSITIVE)
+    };
+    let nalgebra_svd = |a: &DMatrix<f64>, reversed: bool| {
+        let s = a.clone().svd(true, true);
+        let (u, v_t) = (s.u.expect("requested U"), s.v_t.expect("requested V"));
+        let mut order: Vec<usize> = (0..cols).collect();
+        order.sort_by(|&x, &y| s.singular_values[y].total_cmp(&s.singular_values[x]));
+        let mut v = DMatrix::from_columns(
+            &order
+                .iter()
+                .map(|&i| v_t.row(i).transpose())
+                .collect::<Vec<_>>(),
+        );
+        if reversed {
+            let flipped = DMatrix::from_fn(cols, cols, |r, c| v[(cols - 1 - r, c)]);
+            v = flipped;
+        }
+        Svd {
+            u: DMatrix::from_columns(
+                &order
+                    .iter()
+                    .map(|&i| u.column(i).into_owned())
+                    .collect::<Vec<_>>(),
+            ),
+            singular_values: order.iter().map(|&i| s.singular_values[i]).collect(),
+            v,
+        }
+    };
+    let reversed_a = DMatrix::from_fn(a.nrows(), cols, |r, c| a[(r, cols - 1 - c)]);
+    let mut d = nalgebra_svd(&a, false);
+    if !reconstructs(&d) {
+        d = nalgebra_svd(&reversed_a, true);
+    }
+    if !reconstructs(&d) {
+        d = gram_svd(&a);
+    }
+    d.u = d.u.rows(0, rows).into_owned();
+    d
+}
+
+/// The SVD from the eigen-decomposition of `aᵀa`: the fallback of [`svd`].
+fn gram_svd(a: &DMatrix<f64>) -> Svd {
+    let cols = a.ncols();
+    let eig = nalgebra::SymmetricEigen::new(a.transpose() * a);
+    let mut order: Vec<usize> = (0..cols).collect();
+    order.sort_by(|&x, &y| eig.eigenvalues[y].total_cmp(&eig.eigenvalues[x]));
+    let singular_values: Vec<f64> = order
+        .iter()
+        .map(|&i| eig.eigenvalues[i].max(0.0).sqrt())
+        .collect();
+    let v = DMatrix::from_columns(
+        &order
+            .iter()
+            .map(|&i| eig.eigenvectors.column(i).into_owned())
+            .collect::<Vec<_>>(),
+    );
+    let top = singular_values.first().copied().unwrap_or(0.0);
+    let mut u = DMatrix::zeros(a.nrows(), cols);
+    for (k, &s) in singular_values.iter().enumerate() {
+        if top > 0.0 && s > 1e-14 * top {
+            let col = a * v.column(k) / s;
+            u.column_mut(k).copy_from(&col);
+        }
+    }
+    Svd {
+        u,
+        singular_values,
+        v,
+    }
+}
+
 /// The rank of the screws in the columns of `m`, by SVD with relative tolerance `tolerance`.
 #[must_use]
 pub fn rank(m: &DMatrix<f64>, tolerance: f64) -> Rank {
-    let mut sv: Vec<f64> = if m.ncols() == 0 || m.nrows() == 0 {
-        Vec::new()
-    } else {
-        m.singular_values().iter().copied().collect()
-    };
-    sv.sort_by(|a, b| b.total_cmp(a));
+    let sv = svd(m).singular_values;
     let top = sv.first().copied().unwrap_or(0.0);
     let rank = sv
         .iter()
@@ -335,11 +437,7 @@ pub fn rank6(m: &nalgebra::Matrix6xX<f64>, tolerance: f64) -> usize {
     if k >= 1 && lower(k) > tolerance && upper(k) <= tolerance {
         return k;
     }
-    let sv = fixed.singular_values();
-    let top = sv.max();
-    sv.iter()
-        .filter(|&&s| top > 0.0 && s > tolerance * top)
-        .count()
+    rank(&DMatrix::from_column_slice(6, 6, m.as_slice()), tolerance).rank
 }
 
 /// An orthonormal basis (columns) of the span of the columns of `m`, and its rank report
@@ -367,31 +465,19 @@ pub fn span_basis_scaled(
             },
         );
     }
-    let svd = m.clone().svd(true, false);
-    let u = svd.u.expect("requested U");
-    let mut order: Vec<usize> = (0..svd.singular_values.len()).collect();
-    order.sort_by(|&a, &b| svd.singular_values[b].total_cmp(&svd.singular_values[a]));
-    let sv: Vec<f64> = order.iter().map(|&i| svd.singular_values[i]).collect();
-    let top = scale.unwrap_or_else(|| sv.first().copied().unwrap_or(0.0));
-    let r = sv
+    let d = svd(m);
+    let top = scale.unwrap_or_else(|| d.singular_values.first().copied().unwrap_or(0.0));
+    let r = d
+        .singular_values
         .iter()
         .filter(|&&s| top > 0.0 && s > tolerance * top)
         .count();
-    let basis = if r == 0 {
-        DMatrix::zeros(m.nrows(), 0)
-    } else {
-        DMatrix::from_columns(
-            &order[..r]
-                .iter()
-                .map(|&i| u.column(i).into_owned())
-                .collect::<Vec<_>>(),
-        )
-    };
+    let basis = d.u.columns(0, r).into_owned();
     (
         basis,
         Rank {
             rank: r,
-            singular_values: sv,
+            singular_values: d.singular_values,
             tolerance,
         },
     )
@@ -411,7 +497,7 @@ pub fn nullspace_scaled(
     tolerance: f64,
     scale: Option<f64>,
 ) -> (DMatrix<f64>, Rank) {
-    let (rows, cols) = m.shape();
+    let cols = m.ncols();
     if cols == 0 {
         return (
             DMatrix::zeros(0, 0),
@@ -422,34 +508,19 @@ pub fn nullspace_scaled(
             },
         );
     }
-    // Pad to at least as many rows as columns so that the SVD gives every right singular vector.
-    let mut a = DMatrix::zeros(rows.max(cols), cols);
-    a.view_mut((0, 0), (rows, cols)).copy_from(m);
-    let svd = a.svd(false, true);
-    let v_t = svd.v_t.expect("requested V");
-    let sv: Vec<f64> = svd.singular_values.iter().copied().collect();
-    let top = scale.unwrap_or_else(|| sv.iter().copied().fold(0.0, f64::max));
-    let kept: Vec<bool> = sv
+    let d = svd(m);
+    let top = scale.unwrap_or_else(|| d.singular_values.first().copied().unwrap_or(0.0));
+    let r = d
+        .singular_values
         .iter()
-        .map(|&s| top > 0.0 && s > tolerance * top)
-        .collect();
-    let null: Vec<_> = (0..cols)
-        .filter(|&i| !kept[i])
-        .map(|i| v_t.row(i).transpose())
-        .collect();
-    let basis = if null.is_empty() {
-        DMatrix::zeros(cols, 0)
-    } else {
-        DMatrix::from_columns(&null)
-    };
-    let mut sorted = sv;
-    sorted.sort_by(|a, b| b.total_cmp(a));
-    let r = kept.iter().filter(|&&k| k).count();
+        .filter(|&&s| top > 0.0 && s > tolerance * top)
+        .count();
+    let basis = d.v.columns(r, cols - r).into_owned();
     (
         basis,
         Rank {
             rank: r,
-            singular_values: sorted,
+            singular_values: d.singular_values,
             tolerance,
         },
     )

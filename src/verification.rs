@@ -66,8 +66,8 @@ pub struct Verification {
     /// The smallest kept singular value over the largest, at that sample: how far the rank is
     /// from dropping.
     pub gap: f64,
-    /// The largest dropped singular value over the largest, over all samples (0 when none is
-    /// dropped): how far the rank is from rising.
+    /// The largest dropped singular value over the largest, over all samples: how far the rank
+    /// is from rising. Ratios below 1e-12 are round-off and written as 0.
     pub dropped: f64,
     /// Joints (1-based) whose removal does not lower the rank at any sample.
     pub idle_joints: Vec<usize>,
@@ -86,6 +86,15 @@ pub fn round_significant(x: f64, digits: i32) -> f64 {
     }
     let scale = 10f64.powi(digits - 1 - x.abs().log10().floor() as i32);
     (x * scale).round() / scale
+}
+
+/// A ratio of singular values rounded to 3 digits, and 0 below 1e-12 (round-off).
+fn round_off_to_zero(x: f64) -> f64 {
+    if x < 1e-12 {
+        0.0
+    } else {
+        round_significant(x, 3)
+    }
 }
 
 /// A random configuration: revolutes in [−π, π), prismatics in [−1, 1).
@@ -221,13 +230,21 @@ pub fn verify(chain: &SerialChain, settings: &Settings, seed: u64) -> Verificati
     Verification {
         seed,
         rank,
+        // Values the rank drops are round-off: written as 0 so that files carry no noise.
         singular_values: worst
             .singular_values
             .iter()
-            .map(|&s| round_significant(s, 6))
+            .enumerate()
+            .map(|(k, &s)| {
+                if k < worst.rank {
+                    round_significant(s, 6)
+                } else {
+                    0.0
+                }
+            })
             .collect(),
         gap: round_significant(worst.gap().0, 6),
-        dropped: round_significant(ranks.iter().map(|r| r.gap().1).fold(0.0, f64::max), 3),
+        dropped: round_off_to_zero(ranks.iter().map(|r| r.gap().1).fold(0.0, f64::max)),
         idle_joints,
         is_3t3r,
         patterns,

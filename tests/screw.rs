@@ -143,3 +143,29 @@ mod fast_rank {
         }
     }
 }
+
+mod checked_svd {
+    use kinsyn::screw::svd;
+    use nalgebra::DMatrix;
+    use proptest::prelude::*;
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(256))]
+        /// The SVD reconstructs the matrix and has orthonormal singular vectors, also with
+        /// repeated columns (two guides along one direction), the case that broke nalgebra's.
+        #[test]
+        fn svd_reconstructs_with_repeated_columns(x in proptest::collection::vec(-1.0f64..1.0, 18), dup in 0usize..3) {
+            let mut m = DMatrix::from_fn(6, 4, |r, c| if c < 3 { x[r * 3 + c] } else { 0.0 });
+            let col = m.column(dup).into_owned();
+            m.set_column(3, &col);
+            let d = svd(&m);
+            let mut sigma_vt = d.v.transpose();
+            for (k, s) in d.singular_values.iter().enumerate() {
+                sigma_vt.row_mut(k).scale_mut(*s);
+            }
+            prop_assert!((&d.u * sigma_vt - &m).norm() < 1e-12 * m.norm().max(1.0));
+            prop_assert!((d.v.transpose() * &d.v - DMatrix::<f64>::identity(4, 4)).norm() < 1e-12);
+            prop_assert!(d.singular_values[3] < 1e-12 * d.singular_values[0]);
+        }
+    }
+}

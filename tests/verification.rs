@@ -99,3 +99,24 @@ fn every_rejected_entry_is_documented() {
         "docs/deviations.md is out of date: regenerate with `kinsyn catalogue rejected`"
     );
 }
+
+#[test]
+fn equal_guide_columns_do_not_fool_the_classification() {
+    // T1-005 PCCR (axes xyyxxz) with C's guide and revolute (joints 2, 3) locked: P1 and P4 both
+    // slide along x and nothing turns them apart, R5 turns about x and R6 about an axis that R5
+    // swings in the yz plane. Hand derivation: one translation, rotations spanning two
+    // directions, not a group: 1T2R. (nalgebra's SVD mis-factored one sample of this motion,
+    // which once made it 0T3R; `screw::svd` now checks its factors.)
+    let e = catalogue().find("T1-005").expect("T1-005");
+    let v = e.verification.as_ref().unwrap();
+    assert!(
+        v.patterns["1T2R"].contains(&"23".to_string()),
+        "{:?}",
+        v.patterns
+    );
+    assert!(
+        !v.patterns
+            .get("0T3R")
+            .is_some_and(|l| l.contains(&"23".to_string()))
+    );
+}
