@@ -291,9 +291,9 @@ pub struct Svd {
 
 /// The SVD of `m`, checked: nalgebra's SVD (0.35) occasionally returns factors that do not
 /// reconstruct the matrix (seen on chain Jacobians with two equal columns, error 2e-2). The
-/// result is accepted only when `‖U Σ Vᵀ − m‖ ≤ 1e-12 ‖m‖`; otherwise the SVD of the matrix with
-/// its columns reversed is tried, and last the eigen-decomposition of `mᵀm` (exact for the
-/// singular vectors of well-separated values, less accurate below `1e-8` of the largest value).
+/// result is accepted only when `‖U Σ Vᵀ − m‖ ≤ 1e-12 ‖m‖` and the singular vectors are
+/// orthonormal to 1e-12; otherwise the SVD of the matrix with
+/// its columns reversed is tried, and last a one-sided Jacobi SVD.
 #[must_use]
 pub fn svd(m: &DMatrix<f64>) -> Svd {
     let (rows, cols) = m.shape();
@@ -313,7 +313,16 @@ pub fn svd(m: &DMatrix<f64>) -> Svd {
         for (k, s) in d.singular_values.iter().enumerate() {
             sigma_vt.row_mut(k).scale_mut(*s);
         }
+        let top = d.singular_values.first().copied().unwrap_or(0.0);
+        let kept = d
+            .singular_values
+            .iter()
+            .filter(|&&s| s > 1e-14 * top)
+            .count();
+        let u = d.u.columns(0, kept);
         (&d.u * sigma_vt - &a).norm() <= 1e-12 * scale.max(f64::MIN_POSITIVE)
+            && (d.v.transpose() * &d.v - DMatrix::<f64>::identity(cols, cols)).norm() <= 1e-12
+            && (u.transpose() * u - DMatrix::<f64>::identity(kept, kept)).norm() <= 1e-12
     };
     let nalgebra_svd = |a: &DMatrix<f64>, reversed: bool| {
         let s = a.clone().svd(true, true);
@@ -347,40 +356,65 @@ pub fn svd(m: &DMatrix<f64>) -> Svd {
         d = nalgebra_svd(&reversed_a, true);
     }
     if !reconstructs(&d) {
-        d = gram_svd(&a);
+        d = jacobi_svd(&a);
     }
     d.u = d.u.rows(0, rows).into_owned();
     d
 }
 
-/// The SVD from the eigen-decomposition of `aᵀa`: the fallback of [`svd`].
-fn gram_svd(a: &DMatrix<f64>) -> Svd {
+/// The SVD by one-sided (Hestenes) Jacobi rotations: the fallback of [`svd`]. Slower than
+/// nalgebra's bidiagonal method but robust, and accurate for small singular values.
+fn jacobi_svd(a: &DMatrix<f64>) -> Svd {
     let cols = a.ncols();
-    let eig = nalgebra::SymmetricEigen::new(a.transpose() * a);
+    let mut w = a.clone();
+    let mut v = DMatrix::<f64>::identity(cols, cols);
+    for _sweep in 0..60 {
+        let mut rotated = false;
+        for i in 0..cols {
+            for j in i + 1..cols {
+                let alpha = w.column(i).norm_squared();
+                let beta = w.column(j).norm_squared();
+                let gamma = w.column(i).dot(&w.column(j));
+                if gamma == 0.0 || gamma.abs() <= f64::EPSILON * (alpha * beta).sqrt() {
+                    continue;
+                }
+                rotated = true;
+                let zeta = (beta - alpha) / (2.0 * gamma);
+                let t = zeta.signum() / (zeta.abs() + (1.0 + zeta * zeta).sqrt());
+                let c = 1.0 / (1.0 + t * t).sqrt();
+                let sn = c * t;
+                for m in [&mut w, &mut v] {
+                    for r in 0..m.nrows() {
+                        let (x, y) = (m[(r, i)], m[(r, j)]);
+                        m[(r, i)] = c * x - sn * y;
+                        m[(r, j)] = sn * x + c * y;
+                    }
+                }
+            }
+        }
+        if !rotated {
+            break;
+        }
+    }
+    let norms: Vec<f64> = (0..cols).map(|k| w.column(k).norm()).collect();
     let mut order: Vec<usize> = (0..cols).collect();
-    order.sort_by(|&x, &y| eig.eigenvalues[y].total_cmp(&eig.eigenvalues[x]));
-    let singular_values: Vec<f64> = order
-        .iter()
-        .map(|&i| eig.eigenvalues[i].max(0.0).sqrt())
-        .collect();
-    let v = DMatrix::from_columns(
-        &order
-            .iter()
-            .map(|&i| eig.eigenvectors.column(i).into_owned())
-            .collect::<Vec<_>>(),
-    );
-    let top = singular_values.first().copied().unwrap_or(0.0);
+    order.sort_by(|&x, &y| norms[y].total_cmp(&norms[x]));
+    let top = norms.iter().copied().fold(0.0, f64::max);
     let mut u = DMatrix::zeros(a.nrows(), cols);
-    for (k, &s) in singular_values.iter().enumerate() {
-        if top > 0.0 && s > 1e-14 * top {
-            let col = a * v.column(k) / s;
-            u.column_mut(k).copy_from(&col);
+    for (k, &i) in order.iter().enumerate() {
+        if top > 0.0 && norms[i] > 0.0 {
+            u.column_mut(k).copy_from(&(w.column(i) / norms[i]));
         }
     }
     Svd {
         u,
-        singular_values,
-        v,
+        singular_values: order.iter().map(|&i| norms[i]).collect(),
+        v: DMatrix::from_columns(
+            &order
+                .iter()
+                .map(|&i| v.column(i).into_owned())
+                .collect::<Vec<_>>(),
+        ),
     }
 }
 
