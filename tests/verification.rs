@@ -120,3 +120,17 @@ fn equal_guide_columns_do_not_fool_the_classification() {
             .is_some_and(|l| l.contains(&"23".to_string()))
     );
 }
+
+#[test]
+fn two_guides_left_parallel_by_locks_are_one_translation() {
+    // T2-105 RPRCaRa (word RPRRPR, axes xyzyyy) with R3 and R4 locked: the guides P2 and P5 both
+    // lie along y and no free joint between them turns them apart, so they give one translation;
+    // R1 turns about x and R6 about y. Hand derivation: 1T2R (3 dof, rotations in two directions).
+    let e = catalogue().find("T2-105").expect("T2-105");
+    let v = e.verification.as_ref().unwrap();
+    assert!(
+        v.patterns["1T2R"].contains(&"34".to_string()),
+        "{:?}",
+        v.patterns
+    );
+}
