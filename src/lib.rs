@@ -9,6 +9,8 @@
 
 pub mod catalogue;
 pub mod chain;
+pub mod manipulator;
+pub mod mechanism;
 pub mod motion;
 pub mod notation;
 pub mod paper;

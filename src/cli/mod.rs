@@ -3,6 +3,8 @@
 //! Exit codes: 0 success, 2 bad input (arguments, chain strings, unknown ids or families),
 //! 1 anything else (I/O). Errors are one line on stderr, prefixed `kinsyn: error:`.
 
+mod manipulator;
+
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use kinsyn::catalogue::{Catalogue, Entry, VERIFICATION_SEED};
 use kinsyn::motion::PatternQuery;
@@ -69,6 +71,110 @@ enum Command {
         #[arg(long)]
         json: bool,
     },
+    /// Multioperation capacity: the platform's dof and motion pattern for every subset of
+    /// locked inputs, then the displacement groups reached with their minimal lock sets.
+    ///
+    /// Each locked input is held at its reference value; the platform's finite motion is
+    /// sampled by loop closure (Newton steps along random compatible joint rates, seeded) and
+    /// classified among the 12 displacement groups, or as nTmR when it is not a group (paper
+    /// 000 §1, §5). Inputs are labelled by kind, leg and joint: P1.3 is leg 1's third joint.
+    Modes {
+        /// A manipulator file (docs/mechanism-format.md), e.g. mechanisms/3-ups.json.
+        file: PathBuf,
+        #[command(flatten)]
+        sampling: Sampling,
+        /// Print JSON instead of text.
+        #[arg(long)]
+        json: bool,
+    },
+    /// Jacobians J_D and J_I (paper 000 eqs. 11, 18–21), mobility and singularities at a pose.
+    ///
+    /// Rows of J_D are wrenches (f; m_P) at the platform point P acting on (v_P; ω): one per
+    /// free input (its J_I entry), one per locked input and one per leg constraint wrench (zero
+    /// J_I rows: the constraint equations, eq. 22). Singularities are rank drops against nearby
+    /// configurations: inverse (an input without effect), direct (J_D), constraint.
+    Analyze {
+        /// A manipulator file (docs/mechanism-format.md).
+        file: PathBuf,
+        /// The platform pose: x,y,z,rx,ry,rz — the platform frame's origin and rotation vector
+        /// (angles in the file's unit), like the file's platform.position and
+        /// platform.orientation. Default: the file's reference pose.
+        #[arg(long, allow_hyphen_values = true)]
+        pose: Option<String>,
+        /// Inputs to lock, e.g. 'R1.1,R2.1,R3.1' (labels as in kinsyn modes).
+        #[arg(long)]
+        lock: Option<String>,
+        #[command(flatten)]
+        sampling: Sampling,
+        /// Print JSON instead of text.
+        #[arg(long)]
+        json: bool,
+    },
+    /// Write a manipulator file with a symmetric geometry whose legs are one chain.
+    ///
+    /// Legs stand on a base circle, one every 360°/n, and reach a platform circle above it, so
+    /// they lie in different planes (paper 000 §3). The chain's axis letters x, y, z (from the
+    /// catalogue, or --axes) are read in each leg's frame: z along the leg, y horizontal, x = y × z.
+    #[command(
+        after_help = "Examples:\n  kinsyn build --legs 3 --chain 'U(!,-)P!S' --name 3-UPS\n  kinsyn build --legs 3 --chain RP!S --axes yzxyz --name 3-RPS\n  kinsyn build --legs 6 --chain T4-034 --actuated 3 --twist 20 --alternate"
+    )]
+    Build {
+        /// Number of legs, 3 to 6.
+        #[arg(long, default_value_t = 3)]
+        legs: usize,
+        /// The leg: a catalogue id (T4-034) or a chain in notation, '!' marking inputs.
+        #[arg(long)]
+        chain: String,
+        /// Axis letters x, y, z per primitive joint in the leg frame (default: the catalogue's).
+        #[arg(long)]
+        axes: Option<String>,
+        /// Actuated primitive joints, 1-based, comma separated (instead of '!' marks).
+        #[arg(long, value_delimiter = ',')]
+        actuated: Option<Vec<usize>>,
+        /// Radius of the base circle.
+        #[arg(long, default_value_t = 1.0)]
+        base_radius: f64,
+        /// Radius of the platform circle.
+        #[arg(long, default_value_t = 0.5)]
+        platform_radius: f64,
+        /// Height of the platform above the base.
+        #[arg(long, default_value_t = 1.0)]
+        height: f64,
+        /// Degrees each platform point is turned from its leg's base point about the vertical.
+        #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
+        twist: f64,
+        /// Turn legs 2, 4, 6 the other way: pairs the platform points of a six-legged
+        /// Gough–Stewart platform (the regular-hexagon form is singular everywhere).
+        #[arg(long)]
+        alternate: bool,
+        /// The manipulator's name (default n-LETTERS).
+        #[arg(long)]
+        name: Option<String>,
+        /// Write to this file instead of standard output.
+        #[arg(long, short)]
+        output: Option<PathBuf>,
+    },
+}
+
+/// How finite motion is sampled (seeded, reproducible).
+#[derive(Debug, Args)]
+struct Sampling {
+    /// Seed of the random walks.
+    #[arg(long, default_value_t = 2026)]
+    seed: u64,
+    /// Configurations sampled per motion.
+    #[arg(long, default_value_t = 3)]
+    samples: usize,
+}
+
+impl Sampling {
+    fn settings(&self) -> kinsyn::mechanism::SampleSettings {
+        kinsyn::mechanism::SampleSettings {
+            seed: self.seed,
+            samples: self.samples.max(2),
+            ..Default::default()
+        }
+    }
 }
 
 #[derive(Debug, Subcommand)]
@@ -227,6 +333,51 @@ fn execute(command: Command) -> Result<String, CliError> {
             json: as_json,
             reading,
         } => query(&pattern, max_locks, family.as_deref(), as_json, &reading),
+        Command::Modes {
+            file,
+            sampling,
+            json: as_json,
+        } => manipulator::modes(&file, &sampling.settings(), as_json),
+        Command::Analyze {
+            file,
+            pose,
+            lock,
+            sampling,
+            json: as_json,
+        } => manipulator::analyze(
+            &file,
+            pose.as_deref(),
+            lock.as_deref(),
+            &sampling.settings(),
+            as_json,
+        ),
+        Command::Build {
+            legs,
+            chain,
+            axes,
+            actuated,
+            base_radius,
+            platform_radius,
+            height,
+            twist,
+            alternate,
+            name,
+            output,
+        } => manipulator::build_command(
+            &kinsyn::manipulator::build::BuildSpec {
+                legs,
+                chain,
+                axes,
+                actuated,
+                base_radius,
+                platform_radius,
+                height,
+                twist,
+                alternate,
+                name,
+            },
+            output.as_deref(),
+        ),
     }
 }
 

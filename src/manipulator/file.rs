@@ -1,0 +1,215 @@
+//! Manipulator description files (`mechanisms/*.json`, format `kinsyn-manipulator/1`),
+//! documented in `docs/mechanism-format.md`.
+//!
+//! A file gives the platform's reference pose and reference point, and each leg as a chain (in
+//! kinsyn notation, or a catalogue id) with the points and axes of its joints in the ground frame
+//! at the reference configuration, and which of its joints are actuated.
+
+use serde::{Deserialize, Serialize};
+
+/// The format tag every manipulator file carries.
+pub const FORMAT: &str = "kinsyn-manipulator/1";
+
+/// A whole manipulator file.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Description {
+    /// Always [`FORMAT`].
+    pub format: String,
+    /// A name, e.g. `3-UPS`.
+    pub name: String,
+    /// Where the manipulator comes from (paper, section, figure).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub source: Option<String>,
+    /// Units of lengths and angles in this file.
+    pub units: Units,
+    /// The moving platform.
+    pub platform: PlatformSpec,
+    /// The legs, each from the ground to the platform.
+    pub legs: Vec<LegSpec>,
+}
+
+/// Units of a file. Lengths are kept in the file's unit; angles are read in `angle` and used in
+/// radians inside.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Units {
+    /// The length unit's name (e.g. `m`, `mm`); a label, lengths are not converted.
+    pub length: String,
+    /// The unit of angles: `deg` or `rad`.
+    pub angle: AngleUnit,
+}
+
+/// Degrees or radians.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum AngleUnit {
+    /// Degrees.
+    Deg,
+    /// Radians.
+    Rad,
+}
+
+impl AngleUnit {
+    /// An angle in this unit, in radians.
+    #[must_use]
+    pub fn to_radians(self, a: f64) -> f64 {
+        match self {
+            AngleUnit::Deg => a.to_radians(),
+            AngleUnit::Rad => a,
+        }
+    }
+}
+
+/// The platform at the reference configuration.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PlatformSpec {
+    /// The platform frame's origin in the ground frame.
+    pub position: [f64; 3],
+    /// The platform frame's orientation: a rotation vector (axis × angle, in the file's angle
+    /// unit) from the ground frame.
+    #[serde(default)]
+    pub orientation: [f64; 3],
+    /// The reference point P, in the platform frame (the paper's P; default the origin).
+    #[serde(default)]
+    pub point: [f64; 3],
+}
+
+/// One leg.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct LegSpec {
+    /// The chain from ground to platform: kinsyn notation (`U(!,-)!PS`, `!` marks actuated
+    /// joints) or a catalogue id (`T4-034`).
+    pub chain: String,
+    /// The point of the first joint, in the ground frame (the centre of a U or S, a point of an
+    /// R or C axis; unused for a P).
+    pub base: [f64; 3],
+    /// The point of the last joint, in the platform frame.
+    pub platform: [f64; 3],
+    /// The points of the joints between the first and the last, one per joint letter, in the
+    /// ground frame at the reference configuration; default evenly spaced from base to platform.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub points: Option<Vec<[f64; 3]>>,
+    /// One axis per primitive joint (ground frame, reference configuration): a vector, or
+    /// `"leg"` for the unit vector from the base point to the platform point. Default: the
+    /// catalogue entry's axes read in the leg frame (docs/mechanism-format.md).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub axes: Option<Vec<AxisSpec>>,
+    /// Actuated primitive joints, 1-based positions in the leg (instead of `!` marks).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub actuated: Option<Vec<usize>>,
+}
+
+/// An axis as written in a file.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(untagged)]
+pub enum AxisSpec {
+    /// A direction (normalised when read).
+    Vector([f64; 3]),
+    /// A named direction: `leg`.
+    Named(String),
+}
+
+/// A description file that cannot be used, with the field at fault.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("{field}: {message}")]
+pub struct DescriptionError {
+    /// The field, e.g. `legs[2].axes[4]`.
+    pub field: String,
+    /// What is wrong and how to fix it.
+    pub message: String,
+}
+
+impl DescriptionError {
+    /// An error at `field`.
+    pub fn new(field: impl Into<String>, message: impl Into<String>) -> Self {
+        DescriptionError {
+            field: field.into(),
+            message: message.into(),
+        }
+    }
+}
+
+impl Description {
+    /// Reads a description from JSON text, checking first that it claims to be a manipulator
+    /// file of this format.
+    ///
+    /// # Errors
+    /// Text that is not JSON, a missing or different `format`, unknown or missing fields,
+    /// values of the wrong type (serde's message, with line and column).
+    pub fn from_json(text: &str) -> Result<Self, DescriptionError> {
+        let value: serde_json::Value = serde_json::from_str(text)
+            .map_err(|e| DescriptionError::new("file", format!("not JSON ({e})")))?;
+        match value.get("format").and_then(|f| f.as_str()) {
+            Some(FORMAT) => {}
+            Some(other) => {
+                return Err(DescriptionError::new(
+                    "format",
+                    format!("'{other}' is not a manipulator file format; expected '{FORMAT}'"),
+                ));
+            }
+            None => {
+                return Err(DescriptionError::new(
+                    "format",
+                    format!(
+                        "missing: not a kinsyn manipulator file (expected \"format\": \"{FORMAT}\")"
+                    ),
+                ));
+            }
+        }
+        serde_json::from_str(text).map_err(|e| DescriptionError::new("file", e.to_string()))
+    }
+
+    /// The description as pretty JSON with a final newline.
+    #[must_use]
+    pub fn to_json(&self) -> String {
+        let mut s = collapse_number_arrays(&serde_json::to_string_pretty(self).unwrap_or_default());
+        s.push('\n');
+        s
+    }
+}
+
+/// Pretty JSON with every array of plain numbers on one line (`[0.5, 0.0, 1.0]`), so that
+/// points and axes read as points and axes.
+fn collapse_number_arrays(pretty: &str) -> String {
+    let mut out = String::with_capacity(pretty.len());
+    let lines: Vec<&str> = pretty.lines().collect();
+    let mut i = 0;
+    while i < lines.len() {
+        let line = lines[i];
+        if line.trim_end().ends_with('[') {
+            // Collect the items up to the closing bracket if they are all numbers.
+            let mut items = Vec::new();
+            let mut j = i + 1;
+            while j < lines.len() {
+                let t = lines[j].trim();
+                if t.starts_with(']') {
+                    break;
+                }
+                let item = t.trim_end_matches(',');
+                if item.parse::<f64>().is_err() {
+                    items.clear();
+                    break;
+                }
+                items.push(item);
+                j += 1;
+            }
+            if !items.is_empty() && j < lines.len() {
+                let close = lines[j].trim();
+                out.push_str(line.trim_end());
+                out.push_str(&items.join(", "));
+                out.push_str(close);
+                out.push('\n');
+                i = j + 1;
+                continue;
+            }
+        }
+        out.push_str(line);
+        out.push('\n');
+        i += 1;
+    }
+    out.pop();
+    out
+}

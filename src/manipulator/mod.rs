@@ -1,0 +1,520 @@
+//! Parallel manipulators built from serial legs: their mechanism graph, Jacobians from
+//! reciprocal screws (paper 000 §4–5), singularities, locking, and multioperation capacity.
+//!
+//! A [`Manipulator`] is read from a description ([`file::Description`], `mechanisms/*.json`):
+//! each leg becomes a chain of primitive joints from the ground to the platform in a
+//! [`Mechanism`], with intermediate bodies between consecutive primitives. The actuated joints
+//! are the manipulator's inputs; locking an input holds its joint at its reference value
+//! (paper 000 §5: `α̇ = 0` turns the 3-UPS into the 3-RPS).
+//!
+//! ```
+//! use kinsyn::manipulator::Manipulator;
+//! let text = std::fs::read_to_string("mechanisms/3-ups.json").unwrap();
+//! let m = Manipulator::from_json(&text).unwrap();
+//! assert_eq!((m.legs().len(), m.actuators().len()), (3, 6));
+//! ```
+
+pub mod build;
+pub mod file;
+mod jacobian;
+mod modes;
+
+pub use jacobian::{Analysis, Jacobians, RowKind, Singularity, SingularityKind, WrenchRow};
+pub use modes::{Mode, Modes, PatternModes};
+
+use crate::catalogue::Catalogue;
+use crate::chain::Displacement;
+use crate::mechanism::{JointSpec, Mechanism, MechanismError};
+use crate::notation::{Chain, JointKind, Primitive};
+use crate::synthesis::Options;
+use file::{AxisSpec, Description, DescriptionError};
+use nalgebra::{Rotation3, Vector3};
+use std::ops::Range;
+
+/// Why a manipulator could not be built or analysed.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum ManipulatorError {
+    /// The description is unusable; the message names the field.
+    #[error("{0}")]
+    Description(#[from] DescriptionError),
+    /// The mechanism could not be built or assembled.
+    #[error("{0}")]
+    Mechanism(#[from] MechanismError),
+    /// A pose that the manipulator cannot reach.
+    #[error("the pose does not assemble: {0}")]
+    Pose(String),
+}
+
+/// One leg of a manipulator.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Leg {
+    /// The chain as read (with its actuation marks).
+    pub chain: Chain,
+    /// The leg's primitive joints in the mechanism, base to platform.
+    pub joints: Range<usize>,
+}
+
+/// One input of a manipulator.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Actuator {
+    /// 0-based leg.
+    pub leg: usize,
+    /// 0-based position of the primitive joint in the leg.
+    pub position: usize,
+    /// The joint in the mechanism.
+    pub joint: usize,
+    /// P or R.
+    pub kind: Primitive,
+}
+
+impl Actuator {
+    /// The actuator's label: its kind, leg and position, e.g. `P1.3` (leg 1, third joint).
+    #[must_use]
+    pub fn label(&self) -> String {
+        format!(
+            "{}{}.{}",
+            self.kind.letter(),
+            self.leg + 1,
+            self.position + 1
+        )
+    }
+}
+
+/// A parallel manipulator: legs from the ground to one platform, with actuated joints.
+#[derive(Debug, Clone)]
+pub struct Manipulator {
+    name: String,
+    units: file::Units,
+    mechanism: Mechanism,
+    legs: Vec<Leg>,
+    actuators: Vec<Actuator>,
+    platform: usize,
+    /// P at the reference configuration, in the ground frame.
+    point: Vector3<f64>,
+    /// The platform frame at the reference configuration.
+    frame: Displacement,
+}
+
+/// Angle between two unit vectors below which they count as parallel, and above which as
+/// crossing, in the geometric checks of a description.
+const PARALLEL: f64 = 1e-9;
+
+impl Manipulator {
+    /// Reads and builds a manipulator from the JSON text of a description file.
+    ///
+    /// # Errors
+    /// See [`Description::from_json`] and [`Manipulator::new`].
+    pub fn from_json(text: &str) -> Result<Self, ManipulatorError> {
+        Self::new(&Description::from_json(text)?)
+    }
+
+    /// Builds a manipulator from a description.
+    ///
+    /// # Errors
+    /// A chain that does not parse or an unknown catalogue id, axes or points in the wrong
+    /// number, axes of no length, joints whose axes break the joint's definition (a C whose
+    /// revolute is not parallel to its slider, a U with parallel axes, an S with dependent
+    /// axes), a one-joint leg whose base and platform points differ, actuated positions out of
+    /// range, or no leg at all. Each error names its field.
+    pub fn new(d: &Description) -> Result<Self, ManipulatorError> {
+        if d.legs.is_empty() {
+            return Err(
+                DescriptionError::new("legs", "no leg: a manipulator needs at least one").into(),
+            );
+        }
+        let angle = d.units.angle;
+        finite(&d.platform.position, "platform.position")?;
+        finite(&d.platform.orientation, "platform.orientation")?;
+        finite(&d.platform.point, "platform.point")?;
+        let rotation = Rotation3::from_scaled_axis(
+            Vector3::from(d.platform.orientation).map(|a| angle.to_radians(a)),
+        );
+        let frame: Displacement = (rotation, Vector3::from(d.platform.position));
+        let to_ground = |p: &[f64; 3]| frame.0 * Vector3::from(*p) + frame.1;
+        let mut catalogue: Option<Catalogue> = None;
+        let mut bodies: Vec<String> = vec!["ground".into(), "platform".into()];
+        let mut joints = Vec::new();
+        let mut legs = Vec::new();
+        let mut actuators = Vec::new();
+        for (i, spec) in d.legs.iter().enumerate() {
+            let field = |f: &str| format!("legs[{i}].{f}");
+            finite(&spec.base, &field("base"))?;
+            finite(&spec.platform, &field("platform"))?;
+            let (chain, entry_axes) = leg_chain(&spec.chain, &mut catalogue)
+                .map_err(|m| DescriptionError::new(field("chain"), m))?;
+            let kinds: Vec<Primitive> = chain.primitives().map(|(p, _)| p).collect();
+            let letters = chain.joints().len();
+            let base = Vector3::from(spec.base);
+            let end = to_ground(&spec.platform);
+            // One point per joint letter.
+            let points: Vec<Vector3<f64>> = match &spec.points {
+                Some(between) => {
+                    if between.len() + 2 != letters.max(2) || letters < 2 {
+                        return Err(DescriptionError::new(
+                            field("points"),
+                            format!(
+                                "{} points for the {} joints of {} between the first and the last (expected {})",
+                                between.len(),
+                                letters.saturating_sub(2),
+                                chain,
+                                letters.saturating_sub(2)
+                            ),
+                        )
+                        .into());
+                    }
+                    for (k, p) in between.iter().enumerate() {
+                        finite(p, &field(&format!("points[{k}]")))?;
+                    }
+                    std::iter::once(base)
+                        .chain(between.iter().map(|p| Vector3::from(*p)))
+                        .chain(std::iter::once(end))
+                        .collect()
+                }
+                None if letters == 1 => vec![base],
+                None => (0..letters)
+                    .map(|k| base + (end - base) * (k as f64 / (letters - 1) as f64))
+                    .collect(),
+            };
+            if letters == 1 && (end - base).norm() > 1e-9 * (1.0 + base.norm()) {
+                return Err(DescriptionError::new(
+                    field("platform"),
+                    format!("the leg {chain} has one joint, so it does not reach the platform point unless base and platform are the same point"),
+                )
+                .into());
+            }
+            let along = end - base;
+            let axes: Vec<Vector3<f64>> = match (&spec.axes, entry_axes) {
+                (Some(axes), _) => {
+                    if axes.len() != kinds.len() {
+                        return Err(DescriptionError::new(
+                            field("axes"),
+                            format!(
+                                "{} axes for the {} primitive joints of {chain}",
+                                axes.len(),
+                                kinds.len()
+                            ),
+                        )
+                        .into());
+                    }
+                    axes.iter()
+                        .enumerate()
+                        .map(|(k, a)| {
+                            axis_vector(a, &along)
+                                .map_err(|m| DescriptionError::new(field(&format!("axes[{k}]")), m))
+                        })
+                        .collect::<Result<_, _>>()?
+                }
+                (None, Some(word)) => {
+                    let frame = build::leg_frame(&base, &end);
+                    word.bytes().map(|b| frame[(b - b'x') as usize]).collect()
+                }
+                (None, None) => {
+                    return Err(DescriptionError::new(
+                        field("axes"),
+                        format!("missing, and {chain} is not a catalogue chain whose axes could be used; give one axis per primitive joint"),
+                    )
+                    .into());
+                }
+            };
+            check_joint_axes(&chain, &axes)
+                .map_err(|(k, m)| DescriptionError::new(field(&format!("axes[{k}]")), m))?;
+            // Actuation: '!' marks or the `actuated` list.
+            let marked: Vec<usize> = chain
+                .primitives()
+                .enumerate()
+                .filter(|(_, (_, m))| m.actuated)
+                .map(|(k, _)| k)
+                .collect();
+            let actuated: Vec<usize> = match &spec.actuated {
+                None => marked,
+                Some(list) => {
+                    let mut positions = Vec::new();
+                    for &p in list {
+                        if p == 0 || p > kinds.len() {
+                            return Err(DescriptionError::new(
+                                field("actuated"),
+                                format!(
+                                    "{p} is not a joint of {chain} (joints 1 to {})",
+                                    kinds.len()
+                                ),
+                            )
+                            .into());
+                        }
+                        if positions.contains(&(p - 1)) {
+                            return Err(DescriptionError::new(
+                                field("actuated"),
+                                format!("joint {p} named twice"),
+                            )
+                            .into());
+                        }
+                        positions.push(p - 1);
+                    }
+                    positions.sort_unstable();
+                    if !marked.is_empty() && marked != positions {
+                        return Err(DescriptionError::new(
+                            field("actuated"),
+                            format!(
+                                "disagrees with the '!' marks of {chain}; give one or the other"
+                            ),
+                        )
+                        .into());
+                    }
+                    positions
+                }
+            };
+            // Joints: ground → link 1 → ... → platform.
+            let first = joints.len();
+            let mut previous = 0;
+            let mut k = 0;
+            for (letter, joint) in chain.joints().iter().enumerate() {
+                for _ in joint.kind.primitives() {
+                    let next = if k + 1 == kinds.len() {
+                        1
+                    } else {
+                        bodies.push(format!("leg {} link {}", i + 1, k + 1));
+                        bodies.len() - 1
+                    };
+                    joints.push(JointSpec::new(
+                        kinds[k],
+                        axes[k],
+                        points[letter],
+                        previous,
+                        next,
+                    ));
+                    previous = next;
+                    k += 1;
+                }
+            }
+            for &p in &actuated {
+                actuators.push(Actuator {
+                    leg: i,
+                    position: p,
+                    joint: first + p,
+                    kind: kinds[p],
+                });
+            }
+            legs.push(Leg {
+                chain,
+                joints: first..joints.len(),
+            });
+        }
+        let names: Vec<&str> = bodies.iter().map(String::as_str).collect();
+        let mechanism = Mechanism::new(&names, 0, joints)?;
+        Ok(Manipulator {
+            name: d.name.clone(),
+            units: d.units.clone(),
+            mechanism,
+            legs,
+            actuators,
+            platform: 1,
+            point: to_ground(&d.platform.point),
+            frame,
+        })
+    }
+
+    /// The manipulator's name.
+    #[must_use]
+    pub fn name(&self) -> &str {
+        &self.name
+    }
+
+    /// The units of its description.
+    #[must_use]
+    pub fn units(&self) -> &file::Units {
+        &self.units
+    }
+
+    /// The mechanism graph.
+    #[must_use]
+    pub fn mechanism(&self) -> &Mechanism {
+        &self.mechanism
+    }
+
+    /// The legs.
+    #[must_use]
+    pub fn legs(&self) -> &[Leg] {
+        &self.legs
+    }
+
+    /// The inputs, leg by leg.
+    #[must_use]
+    pub fn actuators(&self) -> &[Actuator] {
+        &self.actuators
+    }
+
+    /// The platform body.
+    #[must_use]
+    pub fn platform(&self) -> usize {
+        self.platform
+    }
+
+    /// The reference configuration (all joint values zero: the geometry of the description).
+    #[must_use]
+    pub fn reference(&self) -> Vec<f64> {
+        vec![0.0; self.mechanism.joints().len()]
+    }
+
+    /// The reference point P at joint values `q`, in the ground frame.
+    #[must_use]
+    pub fn point(&self, q: &[f64]) -> Vector3<f64> {
+        let g = self.mechanism.poses(q)[self.platform];
+        g.0 * self.point + g.1
+    }
+
+    /// The platform frame (orientation, origin) at joint values `q`.
+    #[must_use]
+    pub fn platform_frame(&self, q: &[f64]) -> Displacement {
+        let g = self.mechanism.poses(q)[self.platform];
+        crate::mechanism::compose(&g, &self.frame)
+    }
+
+    /// The joint lock mask of a set of locked actuators (indices into [`Manipulator::actuators`]).
+    #[must_use]
+    pub fn lock_mask(&self, locked: &[usize]) -> Vec<bool> {
+        let mut mask = vec![false; self.mechanism.joints().len()];
+        for &a in locked {
+            if let Some(act) = self.actuators.get(a) {
+                mask[act.joint] = true;
+            }
+        }
+        mask
+    }
+
+    /// Parses a set of actuator labels (`P1.3,R2.1`, or `-` for none) into actuator indices.
+    ///
+    /// # Errors
+    /// A label that names no actuator.
+    pub fn parse_locks(&self, text: &str) -> Result<Vec<usize>, String> {
+        let mut out = Vec::new();
+        for label in text
+            .split([',', ' '])
+            .filter(|s| !s.is_empty() && *s != "-")
+        {
+            let Some(a) = self
+                .actuators
+                .iter()
+                .position(|a| a.label().eq_ignore_ascii_case(label))
+            else {
+                let all: Vec<String> = self.actuators.iter().map(Actuator::label).collect();
+                return Err(format!(
+                    "'{label}' is not an actuator of {} (actuators: {})",
+                    self.name,
+                    all.join(" ")
+                ));
+            };
+            if !out.contains(&a) {
+                out.push(a);
+            }
+        }
+        out.sort_unstable();
+        Ok(out)
+    }
+
+    /// Assembles the manipulator with its platform frame at `position` and `orientation`
+    /// (rotation vector, radians), starting from the reference configuration, with the `locked`
+    /// actuators held.
+    ///
+    /// # Errors
+    /// [`ManipulatorError::Pose`] when the loops cannot be closed at that pose.
+    pub fn assemble_at(
+        &self,
+        position: Vector3<f64>,
+        orientation: Vector3<f64>,
+        locked: &[usize],
+    ) -> Result<Vec<f64>, ManipulatorError> {
+        let goal_frame: Displacement = (Rotation3::from_scaled_axis(orientation), position);
+        // The platform body's displacement that puts its frame there.
+        let goal = crate::mechanism::compose(&goal_frame, &crate::mechanism::inverse(&self.frame));
+        self.mechanism
+            .assemble(
+                &self.reference(),
+                &self.lock_mask(locked),
+                Some((self.platform, &goal)),
+            )
+            .map_err(|e| ManipulatorError::Pose(e.to_string()))
+    }
+}
+
+fn finite(p: &[f64; 3], field: &str) -> Result<(), DescriptionError> {
+    if p.iter().all(|x| x.is_finite()) {
+        Ok(())
+    } else {
+        Err(DescriptionError::new(field, "not a finite point"))
+    }
+}
+
+/// The chain of a leg (notation or catalogue id), and the catalogue's axis word when the chain
+/// is a catalogue chain.
+pub(crate) fn leg_chain(
+    text: &str,
+    catalogue: &mut Option<Catalogue>,
+) -> Result<(Chain, Option<String>), String> {
+    let looks_like_id = text.len() > 3
+        && text.as_bytes()[0].eq_ignore_ascii_case(&b'T')
+        && text[1..].contains('-')
+        && text[1..2].chars().all(|c| c.is_ascii_digit());
+    let cat = catalogue.get_or_insert_with(|| Catalogue::synthesise(&Options::default()));
+    if looks_like_id {
+        let entry = cat
+            .find(text)
+            .ok_or_else(|| format!("'{text}' is not a catalogue id (see kinsyn catalogue list)"))?;
+        let chain: Chain = entry
+            .notation
+            .parse()
+            .map_err(|e| format!("catalogue entry {}: {e}", entry.id))?;
+        return Ok((chain, Some(entry.axes.clone())));
+    }
+    let chain: Chain = text.parse().map_err(|e| format!("'{text}': {e}"))?;
+    let axes = cat.find(text).map(|e| e.axes.clone());
+    Ok((chain, axes))
+}
+
+fn axis_vector(a: &AxisSpec, along: &Vector3<f64>) -> Result<Vector3<f64>, String> {
+    let v = match a {
+        AxisSpec::Vector(v) => Vector3::from(*v),
+        AxisSpec::Named(name) if name == "leg" => {
+            if along.norm() < 1e-12 {
+                return Err("'leg' needs the base and platform points apart".into());
+            }
+            *along
+        }
+        AxisSpec::Named(name) => {
+            return Err(format!(
+                "'{name}' is not an axis (a vector [x, y, z] or \"leg\")"
+            ));
+        }
+    };
+    let n = v.norm();
+    if !n.is_finite() || n < 1e-12 {
+        return Err("the axis has no length".into());
+    }
+    Ok(v / n)
+}
+
+/// Checks that the axes of each C, U and S are what the joint means (paper 000 §2: a C's revolute
+/// is parallel to its slider; a U's two axes cross; an S's three axes are independent).
+/// Returns the index of the offending primitive and the reason.
+fn check_joint_axes(chain: &Chain, axes: &[Vector3<f64>]) -> Result<(), (usize, String)> {
+    let mut k = 0;
+    for joint in chain.joints() {
+        let n = joint.kind.primitives().len();
+        let a = &axes[k..k + n];
+        match joint.kind {
+            JointKind::C if a[0].cross(&a[1]).norm() > PARALLEL.sqrt() => {
+                return Err((
+                    k + 1,
+                    "a C joint's revolute must be parallel to its slider".into(),
+                ));
+            }
+            JointKind::U if a[0].cross(&a[1]).norm() < 1e-6 => {
+                return Err((k + 1, "a U joint's two axes must not be parallel".into()));
+            }
+            JointKind::S if a[0].cross(&a[1]).dot(&a[2]).abs() < 1e-6 => {
+                return Err((k + 2, "an S joint's three axes must be independent".into()));
+            }
+            _ => {}
+        }
+        k += n;
+    }
+    Ok(())
+}

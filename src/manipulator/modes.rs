@@ -1,0 +1,180 @@
+//! Multioperation capacity (paper 000 §1, §5): the motion patterns a manipulator's platform
+//! produces when subsets of its inputs are locked.
+//!
+//! For every subset of the inputs, the locked joints are held at their reference values and the
+//! platform's finite motion is sampled by loop closure and classified
+//! ([`crate::mechanism::Mechanism::motion_pattern`]). The distinct displacement groups reached
+//! are the paper's measure of a manipulator's practical effectiveness.
+
+use super::Manipulator;
+use crate::mechanism::SampleSettings;
+use crate::motion::Classification;
+use rayon::prelude::*;
+use serde::Serialize;
+use std::collections::BTreeMap;
+
+/// The platform's motion with one subset of the inputs locked.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Mode {
+    /// The locked inputs (indices into the actuators).
+    pub locked: Vec<usize>,
+    /// The locked inputs' labels, `-` for none.
+    pub lock_text: String,
+    /// The platform's degrees of freedom.
+    pub dof: usize,
+    /// The pattern's text form (`X(z)`, `1T2R`, ...), or `?` when the motion could not be
+    /// sampled.
+    pub pattern: String,
+    /// Whether the pattern is one of the 12 displacement groups.
+    pub group: bool,
+    /// The classification (with the group's point and pitch), when sampled.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub classification: Option<Classification>,
+    /// Why the motion could not be sampled, if it could not.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub error: Option<String>,
+}
+
+/// A group pattern reached, with the minimal lock sets that reach it.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct PatternModes {
+    /// The pattern's text form.
+    pub pattern: String,
+    /// The minimal lock sets (no proper subset gives the same pattern), as label lists.
+    pub lock_sets: Vec<String>,
+}
+
+/// Every lock subset and the group patterns reached.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Modes {
+    /// The manipulator's name.
+    pub manipulator: String,
+    /// The input labels, in actuator order.
+    pub actuators: Vec<String>,
+    /// How the motions were sampled (the seed included).
+    pub settings: SampleSettings,
+    /// One mode per subset of the inputs, by number of locks then lexicographically.
+    pub modes: Vec<Mode>,
+    /// The distinct displacement groups reached, with their minimal lock sets.
+    pub groups: Vec<PatternModes>,
+    /// The distinct non-group patterns reached, with their minimal lock sets.
+    pub non_groups: Vec<PatternModes>,
+}
+
+/// The largest number of inputs whose lock subsets are all enumerated (2^16 subsets).
+pub const MAX_INPUTS: usize = 16;
+
+impl Manipulator {
+    /// The platform's motion with the `locked` inputs held, sampled from the reference
+    /// configuration.
+    #[must_use]
+    pub fn mode(&self, locked: &[usize], settings: &SampleSettings) -> Mode {
+        let mask = self.lock_mask(locked);
+        let lock_text = self.lock_text(locked);
+        match self
+            .mechanism
+            .motion_pattern(self.platform, &self.reference(), &mask, settings)
+        {
+            Ok(c) => Mode {
+                locked: locked.to_vec(),
+                lock_text,
+                dof: c.dof,
+                pattern: c.pattern.to_string(),
+                group: c.pattern.is_group(),
+                classification: Some(c),
+                error: None,
+            },
+            Err(e) => Mode {
+                locked: locked.to_vec(),
+                lock_text,
+                dof: 0,
+                pattern: "?".into(),
+                group: false,
+                classification: None,
+                error: Some(e.to_string()),
+            },
+        }
+    }
+
+    /// Labels of a set of inputs, space separated, `-` for none.
+    #[must_use]
+    pub fn lock_text(&self, locked: &[usize]) -> String {
+        if locked.is_empty() {
+            return "-".into();
+        }
+        locked
+            .iter()
+            .map(|&a| self.actuators[a].label())
+            .collect::<Vec<_>>()
+            .join(" ")
+    }
+
+    /// The motion of every lock subset of the inputs, and the patterns reached (in parallel
+    /// over the subsets; each subset's walk has its own seed derived from `settings.seed`, so the
+    /// result does not depend on the thread count).
+    ///
+    /// # Errors
+    /// More than [`MAX_INPUTS`] inputs.
+    pub fn modes(&self, settings: &SampleSettings) -> Result<Modes, String> {
+        let n = self.actuators.len();
+        if n > MAX_INPUTS {
+            return Err(format!(
+                "{} has {n} inputs; at most {MAX_INPUTS} can have all their lock subsets enumerated",
+                self.name
+            ));
+        }
+        let mut subsets: Vec<Vec<usize>> = (0u32..(1 << n))
+            .map(|mask| (0..n).filter(|a| mask & (1 << a) != 0).collect())
+            .collect();
+        subsets.sort_by(|a, b| a.len().cmp(&b.len()).then(a.cmp(b)));
+        let modes: Vec<Mode> = subsets
+            .par_iter()
+            .map(|locked| {
+                let mask: u64 = locked.iter().map(|a| 1u64 << a).sum();
+                let own = SampleSettings {
+                    seed: settings.seed ^ mask.wrapping_mul(0x9e37_79b9_7f4a_7c15),
+                    ..*settings
+                };
+                self.mode(locked, &own)
+            })
+            .collect();
+        let mut by_pattern: BTreeMap<(bool, String), Vec<&Mode>> = BTreeMap::new();
+        for m in modes.iter().filter(|m| m.error.is_none()) {
+            by_pattern
+                .entry((!m.group, m.pattern.clone()))
+                .or_default()
+                .push(m);
+        }
+        let mut groups = Vec::new();
+        let mut non_groups = Vec::new();
+        for ((non_group, pattern), ms) in by_pattern {
+            let minimal: Vec<String> = ms
+                .iter()
+                .filter(|m| {
+                    !ms.iter().any(|o| {
+                        o.locked.len() < m.locked.len()
+                            && o.locked.iter().all(|a| m.locked.contains(a))
+                    })
+                })
+                .map(|m| m.lock_text.clone())
+                .collect();
+            let entry = PatternModes {
+                pattern,
+                lock_sets: minimal,
+            };
+            if non_group {
+                non_groups.push(entry);
+            } else {
+                groups.push(entry);
+            }
+        }
+        Ok(Modes {
+            manipulator: self.name.clone(),
+            actuators: self.actuators.iter().map(super::Actuator::label).collect(),
+            settings: *settings,
+            modes,
+            groups,
+            non_groups,
+        })
+    }
+}

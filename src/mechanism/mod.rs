@@ -1,0 +1,678 @@
+//! Mechanisms as graphs of bodies and joints: loop closure, mobility, the twist space of a body,
+//! and finite motion sampled by position-level loop closure.
+//!
+//! A [`Mechanism`] is an undirected graph (petgraph) whose nodes are rigid bodies and whose edges
+//! are primitive joints (P or R; C, U and S joints are chains of primitives through massless
+//! intermediate bodies). One body is the ground. Every joint is given at the *reference
+//! configuration* (all joint values zero): its kind, its unit axis and a point of the axis in
+//! the ground frame, and the two bodies it joins, `from` and `to`: its joint value moves `to`
+//! relative to `from`.
+//!
+//! A spanning tree grown from the ground gives every body a path of joints; the joints off the
+//! tree (chords) close one loop each — a fundamental cycle basis, so the mechanism has
+//! `joints − bodies + 1` independent loops. With the screws of the product-of-exponentials
+//! convention (DESIGN.md: twist `(ω; v)` at the ground origin),
+//! - a body's displacement is the product of `exp(±ξ q)` along its tree path;
+//! - a chord `a → b` closes when `g_a exp(ξ q) g_b⁻¹ = I`;
+//! - the loop-closure Jacobian `C` says `V_b − V_a − ξ' q̇ = 0` for each chord, with `V` the
+//!   spatial twist of a body and `ξ'` the chord's current screw;
+//! - the mobility is the dimension of the null space of `C` (joint rates compatible with every
+//!   loop), and a body's local degrees of freedom are the dimension of its twists over it.
+//!
+//! Rank decisions use a dimensionless copy of each matrix: lengths are divided by the
+//! mechanism's length [`Mechanism::scale`], so millimetres and metres give the same ranks.
+//!
+//! ```
+//! use kinsyn::mechanism::{Mechanism, JointSpec};
+//! use kinsyn::notation::Primitive::R;
+//! use nalgebra::Vector3;
+//! // A planar four-bar: ground, crank, coupler, rocker; axes along z.
+//! let z = Vector3::z();
+//! let p = |x: f64, y: f64| Vector3::new(x, y, 0.0);
+//! let m = Mechanism::new(
+//!     &["ground", "crank", "coupler", "rocker"],
+//!     0,
+//!     vec![
+//!         JointSpec::new(R, z, p(0.0, 0.0), 0, 1),
+//!         JointSpec::new(R, z, p(0.0, 1.0), 1, 2),
+//!         JointSpec::new(R, z, p(2.0, 1.5), 2, 3),
+//!         JointSpec::new(R, z, p(2.5, 0.0), 3, 0),
+//!     ],
+//! ).unwrap();
+//! assert_eq!(m.loop_count(), 1);
+//! let q = vec![0.0; 4];
+//! // Grübler–Kutzbach in the plane gives 1; the spatial count 4 − 6 would give −2.
+//! assert_eq!(m.mobility(&q, &[false; 4]).dof, 1);
+//! ```
+
+mod motion;
+
+pub use motion::{MotionSample, SampleSettings};
+
+use crate::chain::Displacement;
+use crate::notation::Primitive;
+use crate::screw::{self, Twist, transform_twist};
+use nalgebra::{DMatrix, DVector, Matrix3, Rotation3, Unit, Vector3};
+use petgraph::graph::{NodeIndex, UnGraph};
+use petgraph::visit::{Bfs, EdgeRef};
+
+/// The rank tolerance of loop-closure and twist-space matrices (relative to the largest
+/// singular value of their dimensionless form).
+pub const MOBILITY_TOLERANCE: f64 = 1e-9;
+
+/// A primitive joint of a mechanism at the reference configuration.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct JointSpec {
+    /// P or R.
+    pub kind: Primitive,
+    /// Unit axis (rotation axis or sliding direction) in the ground frame.
+    pub axis: Vector3<f64>,
+    /// A point of the axis in the ground frame (ignored for P).
+    pub point: Vector3<f64>,
+    /// The body the joint is fixed to.
+    pub from: usize,
+    /// The body the joint value moves relative to `from`.
+    pub to: usize,
+}
+
+impl JointSpec {
+    /// A joint from `from` to `to`; the axis is normalised by [`Mechanism::new`].
+    #[must_use]
+    pub fn new(
+        kind: Primitive,
+        axis: Vector3<f64>,
+        point: Vector3<f64>,
+        from: usize,
+        to: usize,
+    ) -> Self {
+        JointSpec {
+            kind,
+            axis,
+            point,
+            from,
+            to,
+        }
+    }
+
+    /// The unit screw at the reference configuration.
+    #[must_use]
+    pub fn screw(&self) -> Twist {
+        match self.kind {
+            Primitive::R => Twist::revolute(self.axis, self.point),
+            Primitive::P => Twist::prismatic(self.axis),
+        }
+    }
+
+    fn displacement(&self, q: f64) -> Displacement {
+        match self.kind {
+            Primitive::P => (Rotation3::identity(), self.axis * q),
+            Primitive::R => {
+                let r = Rotation3::from_axis_angle(&Unit::new_unchecked(self.axis), q);
+                (r, self.point - r * self.point)
+            }
+        }
+    }
+}
+
+/// Why a mechanism could not be built or moved.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum MechanismError {
+    /// A joint names a body that does not exist.
+    #[error("joint {joint}: body {body} does not exist ({bodies} bodies)")]
+    UnknownBody {
+        /// 1-based joint index.
+        joint: usize,
+        /// The body index named.
+        body: usize,
+        /// The number of bodies.
+        bodies: usize,
+    },
+    /// A joint joins a body to itself.
+    #[error("joint {joint} joins body '{body}' to itself")]
+    SelfJoint {
+        /// 1-based joint index.
+        joint: usize,
+        /// The body's name.
+        body: String,
+    },
+    /// An axis of no length or a non-finite point.
+    #[error("joint {joint}: {what}")]
+    BadAxis {
+        /// 1-based joint index.
+        joint: usize,
+        /// What is wrong.
+        what: String,
+    },
+    /// A body no chain of joints connects to the ground.
+    #[error("body '{0}' is not connected to the ground")]
+    Disconnected(String),
+    /// Newton's method did not close the loops (or reach the asked-for pose).
+    #[error(
+        "the loops do not close: residual {residual:.3e} after {iterations} Newton steps (the pose is not reachable, or too far from the reference)"
+    )]
+    NotAssembled {
+        /// The final residual (rotation in rad, translation over the length scale).
+        residual: f64,
+        /// Newton steps taken.
+        iterations: usize,
+    },
+}
+
+/// One step of a body's tree path: the joint, and +1 when the path crosses it from `from` to
+/// `to`, −1 the other way.
+type PathStep = (usize, f64);
+
+/// A mechanism: bodies, primitive joints, a ground, and the loops they close.
+#[derive(Debug, Clone)]
+pub struct Mechanism {
+    graph: UnGraph<String, usize>,
+    joints: Vec<JointSpec>,
+    ground: usize,
+    /// For each body, the joints from the ground to it along the spanning tree.
+    paths: Vec<Vec<PathStep>>,
+    /// Bodies in breadth-first order from the ground, with the tree joint reaching each.
+    order: Vec<(usize, Option<PathStep>)>,
+    /// The joints off the spanning tree: one independent loop each.
+    chords: Vec<usize>,
+    scale: f64,
+}
+
+/// The result of a mobility analysis at one configuration.
+#[derive(Debug, Clone)]
+pub struct Mobility {
+    /// Dimension of the joint-rate null space of the loop-closure Jacobian (free joints only).
+    pub dof: usize,
+    /// Rank report of the (dimensionless) loop-closure Jacobian.
+    pub closure_rank: screw::Rank,
+    /// A basis of compatible rates of the free joints (columns, one entry per free joint, in
+    /// joint order; prismatic rates in length units).
+    pub rates: DMatrix<f64>,
+}
+
+impl Mechanism {
+    /// A mechanism of named bodies, the body that is the ground, and primitive joints.
+    ///
+    /// # Errors
+    /// A joint naming a body that does not exist or the same body twice, an axis of no length,
+    /// a non-finite point, or a body not connected to the ground.
+    pub fn new(
+        bodies: &[&str],
+        ground: usize,
+        joints: Vec<JointSpec>,
+    ) -> Result<Self, MechanismError> {
+        let mut graph = UnGraph::<String, usize>::new_undirected();
+        let nodes: Vec<NodeIndex> = bodies
+            .iter()
+            .map(|b| graph.add_node((*b).to_string()))
+            .collect();
+        let mut normalised = Vec::with_capacity(joints.len());
+        for (i, mut j) in joints.into_iter().enumerate() {
+            for body in [j.from, j.to] {
+                if body >= bodies.len() {
+                    return Err(MechanismError::UnknownBody {
+                        joint: i + 1,
+                        body,
+                        bodies: bodies.len(),
+                    });
+                }
+            }
+            if j.from == j.to {
+                return Err(MechanismError::SelfJoint {
+                    joint: i + 1,
+                    body: bodies[j.from].to_string(),
+                });
+            }
+            let n = j.axis.norm();
+            if !n.is_finite() || n < 1e-12 {
+                return Err(MechanismError::BadAxis {
+                    joint: i + 1,
+                    what: "the axis direction has no length".into(),
+                });
+            }
+            if !j.point.iter().all(|c| c.is_finite()) {
+                return Err(MechanismError::BadAxis {
+                    joint: i + 1,
+                    what: "the axis point is not finite".into(),
+                });
+            }
+            j.axis /= n;
+            graph.add_edge(nodes[j.from], nodes[j.to], i);
+            normalised.push(j);
+        }
+        if ground >= bodies.len() {
+            return Err(MechanismError::Disconnected(format!("ground #{ground}")));
+        }
+        // Spanning tree by breadth-first search from the ground.
+        let mut paths: Vec<Option<Vec<PathStep>>> = vec![None; bodies.len()];
+        paths[ground] = Some(Vec::new());
+        let mut order = vec![(ground, None)];
+        let mut tree = vec![false; normalised.len()];
+        let mut bfs = Bfs::new(&graph, nodes[ground]);
+        while let Some(node) = bfs.next(&graph) {
+            let here = node.index();
+            for edge in graph.edges(node) {
+                let other = if edge.source() == node {
+                    edge.target()
+                } else {
+                    edge.source()
+                }
+                .index();
+                let joint = *edge.weight();
+                if paths[other].is_none() {
+                    let sign = if normalised[joint].from == here {
+                        1.0
+                    } else {
+                        -1.0
+                    };
+                    let mut path = paths[here].clone().unwrap_or_default();
+                    path.push((joint, sign));
+                    paths[other] = Some(path);
+                    order.push((other, Some((joint, sign))));
+                    tree[joint] = true;
+                }
+            }
+        }
+        let paths = paths
+            .into_iter()
+            .enumerate()
+            .map(|(b, p)| p.ok_or_else(|| MechanismError::Disconnected(bodies[b].to_string())))
+            .collect::<Result<Vec<_>, _>>()?;
+        let chords = (0..normalised.len()).filter(|&j| !tree[j]).collect();
+        let scale = length_scale(&normalised);
+        Ok(Mechanism {
+            graph,
+            joints: normalised,
+            ground,
+            paths,
+            order,
+            chords,
+            scale,
+        })
+    }
+
+    /// The joints, in the order given.
+    #[must_use]
+    pub fn joints(&self) -> &[JointSpec] {
+        &self.joints
+    }
+
+    /// The number of bodies, ground included.
+    #[must_use]
+    pub fn body_count(&self) -> usize {
+        self.graph.node_count()
+    }
+
+    /// A body's name.
+    #[must_use]
+    pub fn body_name(&self, body: usize) -> &str {
+        &self.graph[NodeIndex::new(body)]
+    }
+
+    /// The ground body.
+    #[must_use]
+    pub fn ground(&self) -> usize {
+        self.ground
+    }
+
+    /// The number of independent loops (joints off the spanning tree).
+    #[must_use]
+    pub fn loop_count(&self) -> usize {
+        self.chords.len()
+    }
+
+    /// The joints that close the loops, one per loop.
+    #[must_use]
+    pub fn loop_joints(&self) -> &[usize] {
+        &self.chords
+    }
+
+    /// The characteristic length: the largest distance of a revolute axis point from their
+    /// centroid (1 when there is none). Rank decisions and tolerances are taken relative to it.
+    #[must_use]
+    pub fn scale(&self) -> f64 {
+        self.scale
+    }
+
+    /// The displacement of every body from its reference pose at joint values `q`.
+    ///
+    /// # Panics
+    /// If `q` has fewer values than the mechanism has joints.
+    #[must_use]
+    pub fn poses(&self, q: &[f64]) -> Vec<Displacement> {
+        assert!(q.len() >= self.joints.len(), "one value per joint");
+        let mut poses = vec![(Rotation3::identity(), Vector3::zeros()); self.body_count()];
+        for &(body, step) in &self.order {
+            if let Some((joint, sign)) = step {
+                let j = &self.joints[joint];
+                let parent = if sign > 0.0 { j.from } else { j.to };
+                poses[body] = compose(&poses[parent], &j.displacement(sign * q[joint]));
+            }
+        }
+        poses
+    }
+
+    /// The current screw of every joint at `q` (in the ground frame): the reference screw
+    /// carried by the displacement of the body it is fixed to.
+    #[must_use]
+    pub fn joint_screws(&self, q: &[f64]) -> Vec<Twist> {
+        let poses = self.poses(q);
+        self.joints
+            .iter()
+            .map(|j| {
+                let g = &poses[j.from];
+                transform_twist(&g.0, &g.1, &j.screw())
+            })
+            .collect()
+    }
+
+    /// The tree path from the ground to `body`: each joint with +1 when crossed from its
+    /// `from` body to its `to` body.
+    #[must_use]
+    pub fn path(&self, body: usize) -> &[(usize, f64)] {
+        &self.paths[body]
+    }
+
+    /// The spatial Jacobian of `body` along its tree path: its twist is `J q̇` (6 × joints,
+    /// zero columns for joints off the path).
+    #[must_use]
+    pub fn body_jacobian(&self, body: usize, screws: &[Twist]) -> DMatrix<f64> {
+        let mut j = DMatrix::zeros(6, self.joints.len());
+        for &(joint, sign) in &self.paths[body] {
+            j.column_mut(joint)
+                .copy_from(&(screws[joint].to_vector() * sign));
+        }
+        j
+    }
+
+    /// The loop-closure Jacobian (6 rows per loop × joints): for the chord `a → b` of each loop,
+    /// `V_b − V_a − ξ' q̇ = 0`.
+    #[must_use]
+    pub fn closure_jacobian(&self, screws: &[Twist]) -> DMatrix<f64> {
+        let mut c = DMatrix::zeros(6 * self.chords.len(), self.joints.len());
+        for (l, &chord) in self.chords.iter().enumerate() {
+            let j = &self.joints[chord];
+            let mut block = self.body_jacobian(j.to, screws) - self.body_jacobian(j.from, screws);
+            let s = screws[chord].to_vector();
+            for r in 0..6 {
+                block[(r, chord)] -= s[r];
+            }
+            c.view_mut((6 * l, 0), (6, self.joints.len()))
+                .copy_from(&block);
+        }
+        c
+    }
+
+    /// How far each loop is from closing at `q`: for the chord `a → b`, the screw `ε = log D`
+    /// of `D = g_a exp(ξ q) g_b⁻¹` (6 entries per loop). Zero when assembled.
+    #[must_use]
+    pub fn closure_residual(&self, q: &[f64]) -> DVector<f64> {
+        let poses = self.poses(q);
+        let mut r = DVector::zeros(6 * self.chords.len());
+        for (l, &chord) in self.chords.iter().enumerate() {
+            let j = &self.joints[chord];
+            let d = compose(
+                &compose(&poses[j.from], &j.displacement(q[chord])),
+                &inverse(&poses[j.to]),
+            );
+            r.rows_mut(6 * l, 6).copy_from(&log(&d).to_vector());
+        }
+        r
+    }
+
+    /// The dimensionless copy of a matrix of twists over joint rates: translational rows over
+    /// the length scale, prismatic columns times it.
+    fn dimensionless(&self, m: &DMatrix<f64>) -> DMatrix<f64> {
+        let mut out = m.clone();
+        for r in 0..out.nrows() {
+            if r % 6 >= 3 {
+                out.row_mut(r).scale_mut(1.0 / self.scale);
+            }
+        }
+        for (c, j) in self.joints.iter().enumerate() {
+            if j.kind == Primitive::P && c < out.ncols() {
+                out.column_mut(c).scale_mut(self.scale);
+            }
+        }
+        out
+    }
+
+    /// The free joints of a lock mask.
+    fn free(&self, locked: &[bool]) -> Vec<usize> {
+        (0..self.joints.len())
+            .filter(|&j| !locked.get(j).copied().unwrap_or(false))
+            .collect()
+    }
+
+    /// The mobility at `q` with the `locked` joints held: the dimension of the null space of the
+    /// loop-closure Jacobian over the free joints.
+    #[must_use]
+    pub fn mobility(&self, q: &[f64], locked: &[bool]) -> Mobility {
+        let screws = self.joint_screws(q);
+        self.mobility_with(&screws, locked)
+    }
+
+    fn mobility_with(&self, screws: &[Twist], locked: &[bool]) -> Mobility {
+        let free = self.free(locked);
+        let c = self.dimensionless(&self.closure_jacobian(screws));
+        let cf = DMatrix::from_fn(c.nrows(), free.len(), |r, k| c[(r, free[k])]);
+        let (mut basis, rank) = if cf.nrows() == 0 {
+            (
+                DMatrix::identity(free.len(), free.len()),
+                screw::Rank {
+                    rank: 0,
+                    singular_values: Vec::new(),
+                    tolerance: MOBILITY_TOLERANCE,
+                },
+            )
+        } else {
+            screw::nullspace(&cf, MOBILITY_TOLERANCE)
+        };
+        // Back to physical rates: prismatic rates in length units.
+        for (k, &j) in free.iter().enumerate() {
+            if self.joints[j].kind == Primitive::P {
+                basis.row_mut(k).scale_mut(self.scale);
+            }
+        }
+        Mobility {
+            dof: basis.ncols(),
+            closure_rank: rank,
+            rates: basis,
+        }
+    }
+
+    /// The twist space of `body` at `q` with the `locked` joints held: a basis (columns) of the
+    /// spatial twists `(ω; v)` it can have, and the local degrees of freedom (its dimension).
+    #[must_use]
+    pub fn twist_space(&self, body: usize, q: &[f64], locked: &[bool]) -> (DMatrix<f64>, usize) {
+        let screws = self.joint_screws(q);
+        let twists = self.body_twists(body, &screws, locked);
+        let (basis, rank) = screw::span_basis(&self.dimensionless(&twists), MOBILITY_TOLERANCE);
+        let mut basis = basis;
+        for r in 3..6 {
+            basis.row_mut(r).scale_mut(self.scale);
+        }
+        (basis, rank.rank)
+    }
+
+    /// The body's twists over the compatible rates (columns, physical units).
+    fn body_twists(&self, body: usize, screws: &[Twist], locked: &[bool]) -> DMatrix<f64> {
+        let free = self.free(locked);
+        let m = self.mobility_with(screws, locked);
+        let j = self.body_jacobian(body, screws);
+        let jf = DMatrix::from_fn(6, free.len(), |r, k| j[(r, free[k])]);
+        jf * m.rates
+    }
+
+    /// Closes the loops by Newton's method from `q` with the `locked` joints held, and when
+    /// `target` is given also moves `body` to the displacement `target` from its reference
+    /// pose. Each step is the least-squares (minimum-norm) correction of the free joints.
+    ///
+    /// # Errors
+    /// [`MechanismError::NotAssembled`] when the residual does not fall below `1e-10` (rotation
+    /// in radians, translation over the length scale) in 60 steps.
+    pub fn assemble(
+        &self,
+        q: &[f64],
+        locked: &[bool],
+        target: Option<(usize, &Displacement)>,
+    ) -> Result<Vec<f64>, MechanismError> {
+        let free = self.free(locked);
+        let mut q = q.to_vec();
+        let tolerance = 1e-10;
+        let mut residual = f64::INFINITY;
+        for iteration in 0..60 {
+            let screws = self.joint_screws(&q);
+            // Equations: C Δ = ε (loops) and J_body Δ = −log(g g_target⁻¹) (target).
+            let mut rows = self.closure_jacobian(&screws);
+            let mut rhs = self.closure_residual(&q);
+            if let Some((body, goal)) = target {
+                let g = self.poses(&q)[body];
+                let e = log(&compose(&g, &inverse(goal))).to_vector();
+                let jb = self.body_jacobian(body, &screws);
+                let n = rows.nrows();
+                rows = rows.insert_rows(n, 6, 0.0);
+                rows.view_mut((n, 0), (6, self.joints.len())).copy_from(&jb);
+                rhs = rhs.insert_rows(n, 6, 0.0);
+                rhs.rows_mut(n, 6).copy_from(&(-e));
+            }
+            let scaled_rhs = DVector::from_fn(rhs.len(), |r, _| {
+                if r % 6 >= 3 {
+                    rhs[r] / self.scale
+                } else {
+                    rhs[r]
+                }
+            });
+            residual = scaled_rhs.amax();
+            if residual < tolerance {
+                return Ok(q);
+            }
+            let a = self.dimensionless(&rows);
+            let af = DMatrix::from_fn(a.nrows(), free.len(), |r, k| a[(r, free[k])]);
+            let step = solve_least_squares(&af, &scaled_rhs);
+            // Damp steps that would turn a joint by more than half a radian.
+            let largest = step.amax();
+            let damping = if largest > 0.5 { 0.5 / largest } else { 1.0 };
+            for (k, &j) in free.iter().enumerate() {
+                let unit = if self.joints[j].kind == Primitive::P {
+                    self.scale
+                } else {
+                    1.0
+                };
+                q[j] += damping * step[k] * unit;
+            }
+            if !q.iter().all(|x| x.is_finite()) {
+                return Err(MechanismError::NotAssembled {
+                    residual: f64::INFINITY,
+                    iterations: iteration + 1,
+                });
+            }
+        }
+        Err(MechanismError::NotAssembled {
+            residual,
+            iterations: 60,
+        })
+    }
+}
+
+/// The minimum-norm least-squares solution of `a x = b` (checked SVD, relative cut 1e-12).
+fn solve_least_squares(a: &DMatrix<f64>, b: &DVector<f64>) -> DVector<f64> {
+    if a.ncols() == 0 {
+        return DVector::zeros(0);
+    }
+    let d = screw::svd(a);
+    let top = d.singular_values.first().copied().unwrap_or(0.0);
+    let mut x = DVector::zeros(a.ncols());
+    for (k, &s) in d.singular_values.iter().enumerate() {
+        if top > 0.0 && s > 1e-12 * top {
+            let coefficient = d.u.column(k).dot(b) / s;
+            x += d.v.column(k) * coefficient;
+        }
+    }
+    x
+}
+
+/// The characteristic length of a set of joints (see [`Mechanism::scale`]).
+fn length_scale(joints: &[JointSpec]) -> f64 {
+    let points: Vec<&Vector3<f64>> = joints
+        .iter()
+        .filter(|j| j.kind == Primitive::R)
+        .map(|j| &j.point)
+        .collect();
+    if points.is_empty() {
+        return 1.0;
+    }
+    let centroid = points.iter().fold(Vector3::zeros(), |s, p| s + *p) / points.len() as f64;
+    let r = points
+        .iter()
+        .map(|p| (*p - centroid).norm())
+        .fold(0.0, f64::max);
+    if r > 1e-12 { r } else { 1.0 }
+}
+
+/// `a` then `b`: the displacement `a · b`.
+#[must_use]
+pub fn compose(a: &Displacement, b: &Displacement) -> Displacement {
+    (a.0 * b.0, a.0 * b.1 + a.1)
+}
+
+/// The inverse displacement.
+#[must_use]
+pub fn inverse(g: &Displacement) -> Displacement {
+    let r = g.0.inverse();
+    (r, -(r * g.1))
+}
+
+/// The screw `ε` (a spatial twist) with `exp(ε) = g`: the logarithm of a rigid displacement.
+#[must_use]
+pub fn log(g: &Displacement) -> Twist {
+    let w = rotation_log(&g.0);
+    let theta = w.norm();
+    if theta < 1e-12 {
+        return Twist { w, v: g.1 };
+    }
+    // p = V v with V = I + (1 − cos θ)/θ² [w] + (θ − sin θ)/θ³ [w]².
+    let k = screw::skew(&w);
+    let v_matrix = Matrix3::identity()
+        + k * ((1.0 - theta.cos()) / (theta * theta))
+        + k * k * ((theta - theta.sin()) / (theta * theta * theta));
+    let v = v_matrix.try_inverse().map_or(g.1, |inverse| inverse * g.1);
+    Twist { w, v }
+}
+
+/// The rotation vector (axis × angle, angle in [0, π]) of a rotation, accurate for small angles:
+/// the angle from `atan2(sin θ, cos θ)` with `sin θ` read from the skew part.
+#[must_use]
+pub fn rotation_log(r: &Rotation3<f64>) -> Vector3<f64> {
+    let m = r.matrix();
+    let skew = Vector3::new(
+        m[(2, 1)] - m[(1, 2)],
+        m[(0, 2)] - m[(2, 0)],
+        m[(1, 0)] - m[(0, 1)],
+    ) / 2.0;
+    let sin = skew.norm();
+    let cos = ((m.trace() - 1.0) / 2.0).clamp(-1.0, 1.0);
+    let theta = sin.atan2(cos);
+    if sin > 1e-6 || cos > 0.0 && sin > 0.0 {
+        return skew * (theta / sin);
+    }
+    if cos > 0.0 {
+        return Vector3::zeros();
+    }
+    // Near a half turn the skew part vanishes: nalgebra's axis-angle is accurate there.
+    r.scaled_axis()
+}
+
+/// The rigid displacement `exp(ε)` of a twist held for unit time (the inverse of [`log`]).
+#[must_use]
+pub fn exp(t: &Twist) -> Displacement {
+    let theta = t.w.norm();
+    let r = Rotation3::from_scaled_axis(t.w);
+    if theta < 1e-12 {
+        return (r, t.v);
+    }
+    let k = screw::skew(&t.w);
+    let v_matrix = Matrix3::identity()
+        + k * ((1.0 - theta.cos()) / (theta * theta))
+        + k * k * ((theta - theta.sin()) / (theta * theta * theta));
+    (r, v_matrix * t.v)
+}
