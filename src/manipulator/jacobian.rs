@@ -344,6 +344,15 @@ impl Manipulator {
                 ),
             });
         }
+        if generic.0 < 6 {
+            singularities.push(Singularity {
+                kind: SingularityKind::Direct,
+                detail: format!(
+                    "the held inputs and constraints never fix the platform here or nearby: J_D of rank {} at every sampled configuration (too few inputs, or an architecture singularity)",
+                    generic.0
+                ),
+            });
+        }
         if jd_rank.rank < generic.0 {
             singularities.push(Singularity {
                 kind: SingularityKind::Direct,

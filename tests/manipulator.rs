@@ -1,0 +1,434 @@
+//! Parallel manipulators (src/manipulator): the Jacobians of paper 000 §4–5 (eqs. 11, 12–19,
+//! 20–22) checked element by element against the paper's formulas evaluated from the geometry,
+//! against finite differences of the inverse kinematics, and against the loop-closure mechanism
+//! (a second algorithm); motion patterns checked on manipulators whose pattern follows from first
+//! principles.
+
+use kinsyn::manipulator::{Manipulator, RowKind};
+use kinsyn::mechanism::SampleSettings;
+use kinsyn::motion::{GroupKind, Pattern};
+use nalgebra::{DMatrix, DVector, Rotation3, Vector3};
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+
+fn load(name: &str) -> Manipulator {
+    let text = std::fs::read_to_string(format!("mechanisms/{name}.json")).unwrap();
+    Manipulator::from_json(&text).unwrap()
+}
+
+fn description(name: &str) -> kinsyn::manipulator::file::Description {
+    let text = std::fs::read_to_string(format!("mechanisms/{name}.json")).unwrap();
+    kinsyn::manipulator::file::Description::from_json(&text).unwrap()
+}
+
+/// A random platform pose near the file's reference pose: the frame origin moved by up to
+/// `reach` in each coordinate, and turned by up to `turn` radians about a random axis.
+fn random_pose(
+    d: &kinsyn::manipulator::file::Description,
+    rng: &mut ChaCha8Rng,
+    reach: f64,
+    turn: f64,
+) -> (Vector3<f64>, Vector3<f64>) {
+    let p = Vector3::from(d.platform.position)
+        + Vector3::from_fn(|_, _| rng.random_range(-reach..reach));
+    let axis = Vector3::from_fn(|_, _| rng.random_range(-1.0..1.0)).normalize();
+    (p, axis * rng.random_range(-turn..turn))
+}
+
+/// Leg `i`'s base point A_i and platform attachment G_i at the pose `(p, r)`, from the file.
+fn attachment(
+    d: &kinsyn::manipulator::file::Description,
+    i: usize,
+    p: &Vector3<f64>,
+    r: &Rotation3<f64>,
+) -> (Vector3<f64>, Vector3<f64>) {
+    (
+        Vector3::from(d.legs[i].base),
+        r * Vector3::from(d.legs[i].platform) + p,
+    )
+}
+
+fn row(j: &DMatrix<f64>, r: usize) -> Vec<f64> {
+    (0..j.ncols()).map(|c| j[(r, c)]).collect()
+}
+
+fn paper_row(u: &Vector3<f64>, gp: &Vector3<f64>) -> Vec<f64> {
+    let m = u.cross(gp);
+    vec![u.x, u.y, u.z, m.x, m.y, m.z]
+}
+
+fn assert_close(a: &[f64], b: &[f64], tol: f64, what: &str) {
+    let err = a
+        .iter()
+        .zip(b)
+        .map(|(x, y)| (x - y).abs())
+        .fold(0.0, f64::max);
+    assert!(err < tol, "{what}: {a:?} vs {b:?} (error {err:e})");
+}
+
+/// Equal up to a common sign (a row and its `J_I` entry can both be negated).
+fn assert_close_up_to_sign(a: &[f64], b: &[f64], tol: f64, what: &str) {
+    let neg: Vec<f64> = b.iter().map(|x| -x).collect();
+    let plus = a.iter().zip(b).map(|(x, y)| (x - y).abs()).fold(0.0, f64::max);
+    let minus = a.iter().zip(&neg).map(|(x, y)| (x - y).abs()).fold(0.0, f64::max);
+    assert!(
+        plus.min(minus) < tol,
+        "{what}: {a:?} vs ±{b:?} (error {:e})",
+        plus.min(minus)
+    );
+}
+
+#[test]
+fn six_ups_direct_jacobian_is_eq_11_element_by_element_at_random_poses() {
+    // Paper 000 eq. 11: row i of J_D is ((u_ci)ᵀ, (u_ci × G_iP)ᵀ) and J_I = I, with u_ci the
+    // unit vector from the U centre A_i to the S centre G_i and G_iP = P − G_i. The expected
+    // values come from the file's geometry and the pose, not from the mechanism.
+    let d = description("6-ups");
+    let m = load("6-ups");
+    let mut rng = ChaCha8Rng::seed_from_u64(11);
+    for _ in 0..5 {
+        let (p, rv) = random_pose(&d, &mut rng, 0.1, 0.15);
+        let q = m.assemble_at(p, rv, &[]).unwrap();
+        let r = Rotation3::from_scaled_axis(rv);
+        let point = r * Vector3::from(d.platform.point) + p;
+        let j = m.jacobians(&q, &[]);
+        assert_eq!((j.jd.nrows(), j.ji.ncols()), (6, 6));
+        assert_close(j.ji.as_slice(), DMatrix::<f64>::identity(6, 6).as_slice(), 1e-12, "J_I = I");
+        for i in 0..6 {
+            let (a, g) = attachment(&d, i, &p, &r);
+            let u = (g - a).normalize();
+            assert_close(&row(&j.jd, i), &paper_row(&u, &(point - g)), 1e-9, "eq. 11 row");
+        }
+    }
+}
+
+#[test]
+fn six_ups_input_rates_are_the_derivatives_of_the_leg_lengths() {
+    // Independent method: the inverse kinematics of the Gough–Stewart platform, leg lengths
+    // L_i = |R b_i + p − A_i|, differentiated by central differences along each unit platform
+    // twist (v_P; ω) (P translated by t v_P, the platform turned by exp(t ω) about P). Then
+    // ċ = J_I⁻¹ J_D (v_P; ω) (paper 000 eq. 11) column by column.
+    let d = description("6-ups");
+    let m = load("6-ups");
+    let mut rng = ChaCha8Rng::seed_from_u64(12);
+    let (p, rv) = random_pose(&d, &mut rng, 0.1, 0.15);
+    let q = m.assemble_at(p, rv, &[]).unwrap();
+    let r = Rotation3::from_scaled_axis(rv);
+    let point = r * Vector3::from(d.platform.point) + p;
+    let j = m.jacobians(&q, &[]);
+    let rates = j.ji.clone().lu().solve(&j.jd).unwrap(); // J_I⁻¹ J_D
+    let lengths = |t: f64, k: usize| -> Vec<f64> {
+        let mut e = [0.0; 6];
+        e[k] = t;
+        let (v, w) = (Vector3::new(e[0], e[1], e[2]), Vector3::new(e[3], e[4], e[5]));
+        let turn = Rotation3::from_scaled_axis(w);
+        (0..6)
+            .map(|i| {
+                let g = r * Vector3::from(d.legs[i].platform) + p;
+                let moved = point + v + turn * (g - point);
+                (moved - Vector3::from(d.legs[i].base)).norm()
+            })
+            .collect()
+    };
+    let h = 1e-6;
+    for k in 0..6 {
+        let (plus, minus) = (lengths(h, k), lengths(-h, k));
+        for i in 0..6 {
+            let fd = (plus[i] - minus[i]) / (2.0 * h);
+            assert!(
+                (rates[(i, k)] - fd).abs() < 1e-7,
+                "leg {i}, twist direction {k}: J_I⁻¹J_D {} vs finite difference {fd}",
+                rates[(i, k)]
+            );
+        }
+    }
+}
+
+/// The 3-UPS geometry at a pose: for leg i, (A_i, G_i, u_α, u_β, u_c, c). The U's first axis u_α
+/// is fixed to the base (the file's axis); u_β is perpendicular to u_α (a U) and to u_c (the
+/// generic chain keeps consecutive joints perpendicular, §3), so u_β = ±u_α × u_c / |·|.
+fn ups_leg(
+    d: &kinsyn::manipulator::file::Description,
+    i: usize,
+    p: &Vector3<f64>,
+    r: &Rotation3<f64>,
+) -> [Vector3<f64>; 5] {
+    let (a, g) = attachment(d, i, p, r);
+    let alpha = match &d.legs[i].axes.as_ref().unwrap()[0] {
+        kinsyn::manipulator::file::AxisSpec::Vector(v) => Vector3::from(*v).normalize(),
+        other => panic!("{other:?}"),
+    };
+    let uc = (g - a).normalize();
+    let beta = alpha.cross(&uc).normalize();
+    [g, alpha, beta, uc, Vector3::new((g - a).norm(), 0.0, 0.0)]
+}
+
+#[test]
+fn three_ups_jacobians_are_eqs_12_to_19() {
+    // Paper 000 eqs. 12 and 17–19: for each leg, the row of the prismatic input c is
+    // (u_c, u_c × GP) with J_I entry 1, and the row of the U's first revolute α is
+    // (u_β, u_β × GP) with J_I entry c (u_β × u_α)·u_c (up to a common sign: u_β's sense is
+    // arbitrary). Evaluated at random poses from the geometry alone.
+    let d = description("3-ups");
+    let m = load("3-ups");
+    let labels: Vec<String> = m.actuators().iter().map(|a| a.label()).collect();
+    assert_eq!(labels, ["R1.1", "P1.3", "R2.1", "P2.3", "R3.1", "P3.3"]);
+    let mut rng = ChaCha8Rng::seed_from_u64(13);
+    for _ in 0..5 {
+        let (p, rv) = random_pose(&d, &mut rng, 0.1, 0.2);
+        let q = m.assemble_at(p, rv, &[]).unwrap();
+        let r = Rotation3::from_scaled_axis(rv);
+        let point = r * Vector3::from(d.platform.point) + p;
+        let j = m.jacobians(&q, &[]);
+        assert_eq!((j.jd.nrows(), j.ji.ncols()), (6, 6));
+        for i in 0..3 {
+            let [g, ua, ub, uc, c] = ups_leg(&d, i, &p, &r);
+            let gp = point - g;
+            // Rows follow the inputs: leg i's α is row 2i, its c row 2i + 1.
+            let mut expected_c = paper_row(&uc, &gp);
+            expected_c.push(1.0);
+            let mut got_c = row(&j.jd, 2 * i + 1);
+            got_c.push(j.ji[(2 * i + 1, 2 * i + 1)]);
+            assert_close(&got_c, &expected_c, 1e-9, "eq. 12 row and J_I = 1");
+            let mut expected_a = paper_row(&ub, &gp);
+            expected_a.push(c.x * ub.cross(&ua).dot(&uc));
+            let mut got_a = row(&j.jd, 2 * i);
+            got_a.push(j.ji[(2 * i, 2 * i)]);
+            assert_close_up_to_sign(&got_a, &expected_a, 1e-9, "eq. 17 row and eq. 19 entry");
+            // The other entries of J_I in these rows vanish (eq. 19 is diagonal).
+            for col in 0..6 {
+                if col != 2 * i && col != 2 * i + 1 {
+                    assert!(j.ji[(2 * i, col)].abs() < 1e-12 && j.ji[(2 * i + 1, col)].abs() < 1e-12);
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn three_ups_has_six_dof_with_every_input_free() {
+    // Paper 000 §5.1: "The 3-UPS is a 6 dof parallel manipulator". Three UPS legs of six joints
+    // each: mobility 3·6 − 6·2 = 6 by loop closure, and no constraint wrench.
+    let m = load("3-ups");
+    let q = m.reference();
+    let a = m.analyse(&q, &[], &SampleSettings::default()).unwrap();
+    assert_eq!((a.mobility, a.platform_dof, a.wrench_dof), (6, 6, 6));
+    let mode = m.mode(&[], &SampleSettings::default());
+    assert_eq!(mode.pattern, "D");
+}
+
+#[test]
+fn locking_every_alpha_gives_three_dof_1t2r_and_the_constraints_of_eq_22() {
+    // Paper 000 §5.2: blocking α_i turns the 3-UPS into the 3-RPS, of three dof; its platform
+    // motion is the well-known 1T2R with parasitic motion, not a group (two rotations and one
+    // translation independent; the other three coupled). The locked rows of J_D are the
+    // constraint equations (eq. 22): u_βi·v_P + (u_βi × G_iP)·ω = 0, with zero rows in J_I
+    // (eq. 21). Checked at configurations reached by the finite motion.
+    let d = description("3-ups");
+    let m = load("3-ups");
+    let alphas = m.parse_locks("R1.1,R2.1,R3.1").unwrap();
+    let settings = SampleSettings::default();
+    let mode = m.mode(&alphas, &settings);
+    assert_eq!(mode.dof, 3);
+    assert_eq!(mode.pattern, "1T2R");
+    assert!(!mode.group);
+    let mask = m.lock_mask(&alphas);
+    let samples = m
+        .mechanism()
+        .sample_motion(m.platform(), &m.reference(), &mask, &settings)
+        .unwrap();
+    for s in &samples {
+        let j = m.jacobians(&s.q, &alphas);
+        let (r, p) = m.platform_frame(&s.q);
+        let point = m.point(&s.q);
+        assert_eq!(j.ji.ncols(), 3);
+        for i in 0..3 {
+            let [g, _, ub, _, _] = ups_leg(&d, i, &p, &r);
+            let k = j
+                .rows
+                .iter()
+                .position(|w| w.kind == RowKind::Locked { actuator: 2 * i })
+                .unwrap();
+            assert_close_up_to_sign(&row(&j.jd, k), &paper_row(&ub, &(point - g)), 1e-9, "eq. 22");
+            assert!(j.ji.row(k).amax() == 0.0, "eq. 21: the J_I row of a locked input is zero");
+        }
+    }
+}
+
+#[test]
+fn three_rps_built_directly_equals_three_ups_with_alpha_locked() {
+    // Paper 000 §5: "if the aim would be analysing only the low-mobility manipulator ... this
+    // can be perfectly done by directly particularizing the generic chain into the RPS chain".
+    // The 3-RPS file has the 3-UPS's geometry with the U's second axis as its R; at the same
+    // platform poses the Jacobians agree row by row (c rows, then constraints) — eq. 21.
+    let rps = load("3-rps");
+    let ups = load("3-ups");
+    let alphas = ups.parse_locks("R1.1,R2.1,R3.1").unwrap();
+    let samples = rps
+        .mechanism()
+        .sample_motion(rps.platform(), &rps.reference(), &[], &SampleSettings::default())
+        .unwrap();
+    for q_rps in std::iter::once(rps.reference()).chain(samples.into_iter().map(|s| s.q)) {
+        let (r, p) = rps.platform_frame(&q_rps);
+        let q_ups = ups.assemble_at(p, r.scaled_axis(), &alphas).unwrap();
+        let a = rps.jacobians(&q_rps, &[]);
+        let b = ups.jacobians(&q_ups, &alphas);
+        assert_eq!(a.jd.shape(), b.jd.shape());
+        for k in 0..6 {
+            let what = format!("row {k}");
+            if k < 3 {
+                assert_close(&row(&a.jd, k), &row(&b.jd, k), 1e-9, &what);
+            } else {
+                assert_close_up_to_sign(&row(&a.jd, k), &row(&b.jd, k), 1e-9, &what);
+            }
+        }
+        assert_close(a.ji.as_slice(), b.ji.as_slice(), 1e-9, "J_I");
+    }
+}
+
+#[test]
+fn jacobians_agree_with_the_loop_closure_of_every_mechanism() {
+    // Second algorithm: every joint-rate vector compatible with the loop closure (null space of
+    // the closure Jacobian) gives a platform twist t at P and input rates q̇_a; the reciprocal
+    // screws must satisfy J_D t = J_I q̇_a. And the platform dof from loop closure equals six
+    // minus the rank of the constraint wrenches.
+    for name in ["3-ups", "3-rps", "6-ups", "3-prrr", "3-rrr-spherical", "3-rrr-planar"] {
+        let m = load(name);
+        let settings = SampleSettings::default();
+        let samples = m
+            .mechanism()
+            .sample_motion(m.platform(), &m.reference(), &[], &settings)
+            .unwrap();
+        for s in &samples {
+            let j = m.jacobians(&s.q, &[]);
+            let mob = m.mechanism().mobility(&s.q, &[]);
+            let screws = m.mechanism().joint_screws(&s.q);
+            let body = m.mechanism().body_jacobian(m.platform(), &screws);
+            let point = m.point(&s.q);
+            for c in 0..mob.rates.ncols() {
+                let qdot = DVector::from_fn(m.mechanism().joints().len(), |k, _| mob.rates[(k, c)]);
+                let twist = &body * &qdot;
+                let w = Vector3::new(twist[0], twist[1], twist[2]);
+                let vp = Vector3::new(twist[3], twist[4], twist[5]) + w.cross(&point);
+                let t = DVector::from_vec(vec![vp.x, vp.y, vp.z, w.x, w.y, w.z]);
+                let inputs = DVector::from_fn(j.free.len(), |k, _| qdot[m.actuators()[j.free[k]].joint]);
+                let residual = (&j.jd * &t - &j.ji * &inputs).amax();
+                assert!(residual < 1e-9 * (1.0 + t.amax()), "{name}: J_D t − J_I q̇ = {residual:e}");
+            }
+            let a = m.analyse(&s.q, &[], &settings).unwrap();
+            assert_eq!(a.platform_dof, a.wrench_dof, "{name}");
+        }
+    }
+}
+
+fn group(name: &str, locked: &str) -> (Pattern, usize) {
+    let m = load(name);
+    let locks = m.parse_locks(locked).unwrap();
+    let mode = m.mode(&locks, &SampleSettings::default());
+    let c = mode.classification.expect("sampled");
+    (c.pattern, c.dof)
+}
+
+#[test]
+fn first_principles_patterns_are_recognised() {
+    // 3-PRRR with each leg's slider parallel to its three revolutes (Kong & Gosselin's
+    // translational 3-PRRR): each leg allows X(u_i), the intersection of three with independent
+    // u_i is T3. Locking leg 1's slider leaves translations perpendicular to u_1: T2.
+    let (t3, dof) = group("3-prrr", "-");
+    assert_eq!((t3.to_string().as_str(), dof), ("T3", 3));
+    let (t2, _) = group("3-prrr", "P1.1");
+    let Pattern::Group(g) = t2 else { panic!("{t2}") };
+    assert_eq!(g.kind, GroupKind::T2);
+    let d = description("3-prrr");
+    let kinsyn::manipulator::file::AxisSpec::Vector(u1) = &d.legs[0].axes.as_ref().unwrap()[1] else {
+        panic!()
+    };
+    let n = Vector3::from(g.direction.unwrap());
+    assert!(n.cross(&Vector3::from(*u1).normalize()).norm() < 1e-6, "T2 normal {n} along u_1");
+    // Spherical 3-RRR: every axis through N = (0, 0, 0.5) (the file's source): S(N), 3 dof.
+    let (s, dof) = group("3-rrr-spherical", "-");
+    let Pattern::Group(g) = s else { panic!("{s}") };
+    assert_eq!((g.kind, dof), (GroupKind::S, 3));
+    assert!((Vector3::from(g.point.unwrap()) - Vector3::new(0.0, 0.0, 0.5)).norm() < 1e-6);
+    // Planar 3-RRR: every axis along z: G(xy), 3 dof.
+    let (planar, dof) = group("3-rrr-planar", "-");
+    assert_eq!((planar.to_string().as_str(), dof), ("G(xy)", 3));
+    // Gough–Stewart: D with the inputs free, E (a structure) with all locked.
+    assert_eq!(group("6-ups", "-").0.to_string(), "D");
+    assert_eq!(group("6-ups", "P1.3,P2.3,P3.3,P4.3,P5.3,P6.3").0.to_string(), "E");
+    // 3-UPS with legs 2 and 3 fully locked and leg 1's α locked: the S centres G_2, G_3 can
+    // stay put, and G_1 (free along leg 1's vertical plane, which is perpendicular to G_2G_3)
+    // turns about the line G_2G_3, along y: R(y).
+    assert_eq!(group("3-ups", "R1.1,R2.1,P2.3,R3.1,P3.3").0.to_string(), "R(y)");
+}
+
+#[test]
+fn a_similar_hexagon_gough_stewart_platform_is_singular_everywhere() {
+    // Ma & Angeles (1991), architecture singularities: a Gough–Stewart platform whose base and
+    // platform points form similar regular hexagons (here radii 1 and 0.5, legs in radial
+    // planes) has J_D rank-deficient at every pose. kinsyn reports a direct singularity.
+    let d = kinsyn::manipulator::build::build(&kinsyn::manipulator::build::BuildSpec {
+        legs: 6,
+        chain: "UP!S".into(),
+        ..Default::default()
+    })
+    .unwrap();
+    let m = Manipulator::new(&d).unwrap();
+    let a = m.analyse(&m.reference(), &[], &SampleSettings::default()).unwrap();
+    assert!(a.generic.0 < 6, "generic rank {}", a.generic.0);
+    assert!(
+        a.singularities
+            .iter()
+            .any(|s| s.kind == kinsyn::manipulator::SingularityKind::Direct),
+        "{:?}",
+        a.singularities
+    );
+    // The paired layout of mechanisms/6-ups.json is not.
+    let good = load("6-ups");
+    let a = good.analyse(&good.reference(), &[], &SampleSettings::default()).unwrap();
+    assert!(a.singularities.is_empty() && a.jd_rank.rank == 6, "{:?}", a.singularities);
+}
+
+#[test]
+fn modes_of_the_three_ups_cover_all_64_lock_subsets() {
+    // Issue 4: `kinsyn modes` on the 3-UPS enumerates 2^6 lock subsets; the dof with k inputs
+    // locked is 6 − k near the reference (each locked input removes one, the legs being
+    // non-singular there), and 1T2R is reached exactly by locking the three α (§5.2).
+    let m = load("3-ups");
+    let modes = m.modes(&SampleSettings::default()).unwrap();
+    assert_eq!(modes.modes.len(), 64);
+    for mode in &modes.modes {
+        assert_eq!(mode.dof, 6 - mode.locked.len(), "{}", mode.lock_text);
+    }
+    let rps = modes.non_groups.iter().find(|p| p.pattern == "1T2R").unwrap();
+    assert_eq!(rps.lock_sets, ["R1.1 R2.1 R3.1"]);
+    assert!(modes.groups.iter().any(|g| g.pattern == "D"));
+    assert!(modes.groups.iter().any(|g| g.pattern == "E"));
+}
+
+#[test]
+fn the_committed_manipulator_files_are_what_kinsyn_build_writes() {
+    // mechanisms/*.json of the paper's manipulators are generated (their `source` names the
+    // command): rebuilding them gives the same bytes, so the files and the builder agree.
+    use kinsyn::manipulator::build::{BuildSpec, build};
+    let cases = [
+        ("3-ups", "U(!,-)P!S", None, 0.0, false),
+        ("3-rps", "RP!S", Some("yzxyz"), 0.0, false),
+        ("6-ups", "UP!S", None, 20.0, true),
+        ("3-prrr", "P!RaRaRa", Some("xxxx"), 0.0, false),
+    ];
+    for (file, chain, axes, twist, alternate) in cases {
+        let d = build(&BuildSpec {
+            legs: if file == "6-ups" { 6 } else { 3 },
+            chain: chain.into(),
+            axes: axes.map(Into::into),
+            twist,
+            alternate,
+            name: Some(file.to_uppercase()),
+            ..Default::default()
+        })
+        .unwrap();
+        let committed = std::fs::read_to_string(format!("mechanisms/{file}.json")).unwrap();
+        assert_eq!(d.to_json(), committed, "mechanisms/{file}.json");
+    }
+}
