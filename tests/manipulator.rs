@@ -69,8 +69,16 @@ fn assert_close(a: &[f64], b: &[f64], tol: f64, what: &str) {
 /// Equal up to a common sign (a row and its `J_I` entry can both be negated).
 fn assert_close_up_to_sign(a: &[f64], b: &[f64], tol: f64, what: &str) {
     let neg: Vec<f64> = b.iter().map(|x| -x).collect();
-    let plus = a.iter().zip(b).map(|(x, y)| (x - y).abs()).fold(0.0, f64::max);
-    let minus = a.iter().zip(&neg).map(|(x, y)| (x - y).abs()).fold(0.0, f64::max);
+    let plus = a
+        .iter()
+        .zip(b)
+        .map(|(x, y)| (x - y).abs())
+        .fold(0.0, f64::max);
+    let minus = a
+        .iter()
+        .zip(&neg)
+        .map(|(x, y)| (x - y).abs())
+        .fold(0.0, f64::max);
     assert!(
         plus.min(minus) < tol,
         "{what}: {a:?} vs ±{b:?} (error {:e})",
@@ -93,11 +101,21 @@ fn six_ups_direct_jacobian_is_eq_11_element_by_element_at_random_poses() {
         let point = r * Vector3::from(d.platform.point) + p;
         let j = m.jacobians(&q, &[]);
         assert_eq!((j.jd.nrows(), j.ji.ncols()), (6, 6));
-        assert_close(j.ji.as_slice(), DMatrix::<f64>::identity(6, 6).as_slice(), 1e-12, "J_I = I");
+        assert_close(
+            j.ji.as_slice(),
+            DMatrix::<f64>::identity(6, 6).as_slice(),
+            1e-12,
+            "J_I = I",
+        );
         for i in 0..6 {
             let (a, g) = attachment(&d, i, &p, &r);
             let u = (g - a).normalize();
-            assert_close(&row(&j.jd, i), &paper_row(&u, &(point - g)), 1e-9, "eq. 11 row");
+            assert_close(
+                &row(&j.jd, i),
+                &paper_row(&u, &(point - g)),
+                1e-9,
+                "eq. 11 row",
+            );
         }
     }
 }
@@ -120,7 +138,10 @@ fn six_ups_input_rates_are_the_derivatives_of_the_leg_lengths() {
     let lengths = |t: f64, k: usize| -> Vec<f64> {
         let mut e = [0.0; 6];
         e[k] = t;
-        let (v, w) = (Vector3::new(e[0], e[1], e[2]), Vector3::new(e[3], e[4], e[5]));
+        let (v, w) = (
+            Vector3::new(e[0], e[1], e[2]),
+            Vector3::new(e[3], e[4], e[5]),
+        );
         let turn = Rotation3::from_scaled_axis(w);
         (0..6)
             .map(|i| {
@@ -198,7 +219,9 @@ fn three_ups_jacobians_are_eqs_12_to_19() {
             // The other entries of J_I in these rows vanish (eq. 19 is diagonal).
             for col in 0..6 {
                 if col != 2 * i && col != 2 * i + 1 {
-                    assert!(j.ji[(2 * i, col)].abs() < 1e-12 && j.ji[(2 * i + 1, col)].abs() < 1e-12);
+                    assert!(
+                        j.ji[(2 * i, col)].abs() < 1e-12 && j.ji[(2 * i + 1, col)].abs() < 1e-12
+                    );
                 }
             }
         }
@@ -249,8 +272,16 @@ fn locking_every_alpha_gives_three_dof_1t2r_and_the_constraints_of_eq_22() {
                 .iter()
                 .position(|w| w.kind == RowKind::Locked { actuator: 2 * i })
                 .unwrap();
-            assert_close_up_to_sign(&row(&j.jd, k), &paper_row(&ub, &(point - g)), 1e-9, "eq. 22");
-            assert!(j.ji.row(k).amax() == 0.0, "eq. 21: the J_I row of a locked input is zero");
+            assert_close_up_to_sign(
+                &row(&j.jd, k),
+                &paper_row(&ub, &(point - g)),
+                1e-9,
+                "eq. 22",
+            );
+            assert!(
+                j.ji.row(k).amax() == 0.0,
+                "eq. 21: the J_I row of a locked input is zero"
+            );
         }
     }
 }
@@ -266,7 +297,12 @@ fn three_rps_built_directly_equals_three_ups_with_alpha_locked() {
     let alphas = ups.parse_locks("R1.1,R2.1,R3.1").unwrap();
     let samples = rps
         .mechanism()
-        .sample_motion(rps.platform(), &rps.reference(), &[], &SampleSettings::default())
+        .sample_motion(
+            rps.platform(),
+            &rps.reference(),
+            &[],
+            &SampleSettings::default(),
+        )
         .unwrap();
     for q_rps in std::iter::once(rps.reference()).chain(samples.into_iter().map(|s| s.q)) {
         let (r, p) = rps.platform_frame(&q_rps);
@@ -292,7 +328,14 @@ fn jacobians_agree_with_the_loop_closure_of_every_mechanism() {
     // the closure Jacobian) gives a platform twist t at P and input rates q̇_a; the reciprocal
     // screws must satisfy J_D t = J_I q̇_a. And the platform dof from loop closure equals six
     // minus the rank of the constraint wrenches.
-    for name in ["3-ups", "3-rps", "6-ups", "3-prrr", "3-rrr-spherical", "3-rrr-planar"] {
+    for name in [
+        "3-ups",
+        "3-rps",
+        "6-ups",
+        "3-prrr",
+        "3-rrr-spherical",
+        "3-rrr-planar",
+    ] {
         let m = load(name);
         let settings = SampleSettings::default();
         let samples = m
@@ -311,9 +354,13 @@ fn jacobians_agree_with_the_loop_closure_of_every_mechanism() {
                 let w = Vector3::new(twist[0], twist[1], twist[2]);
                 let vp = Vector3::new(twist[3], twist[4], twist[5]) + w.cross(&point);
                 let t = DVector::from_vec(vec![vp.x, vp.y, vp.z, w.x, w.y, w.z]);
-                let inputs = DVector::from_fn(j.free.len(), |k, _| qdot[m.actuators()[j.free[k]].joint]);
+                let inputs =
+                    DVector::from_fn(j.free.len(), |k, _| qdot[m.actuators()[j.free[k]].joint]);
                 let residual = (&j.jd * &t - &j.ji * &inputs).amax();
-                assert!(residual < 1e-9 * (1.0 + t.amax()), "{name}: J_D t − J_I q̇ = {residual:e}");
+                assert!(
+                    residual < 1e-9 * (1.0 + t.amax()),
+                    "{name}: J_D t − J_I q̇ = {residual:e}"
+                );
             }
             let a = m.analyse(&s.q, &[], &settings).unwrap();
             assert_eq!(a.platform_dof, a.wrench_dof, "{name}");
@@ -337,14 +384,20 @@ fn first_principles_patterns_are_recognised() {
     let (t3, dof) = group("3-prrr", "-");
     assert_eq!((t3.to_string().as_str(), dof), ("T3", 3));
     let (t2, _) = group("3-prrr", "P1.1");
-    let Pattern::Group(g) = t2 else { panic!("{t2}") };
+    let Pattern::Group(g) = t2 else {
+        panic!("{t2}")
+    };
     assert_eq!(g.kind, GroupKind::T2);
     let d = description("3-prrr");
-    let kinsyn::manipulator::file::AxisSpec::Vector(u1) = &d.legs[0].axes.as_ref().unwrap()[1] else {
+    let kinsyn::manipulator::file::AxisSpec::Vector(u1) = &d.legs[0].axes.as_ref().unwrap()[1]
+    else {
         panic!()
     };
     let n = Vector3::from(g.direction.unwrap());
-    assert!(n.cross(&Vector3::from(*u1).normalize()).norm() < 1e-6, "T2 normal {n} along u_1");
+    assert!(
+        n.cross(&Vector3::from(*u1).normalize()).norm() < 1e-6,
+        "T2 normal {n} along u_1"
+    );
     // Spherical 3-RRR: every axis through N = (0, 0, 0.5) (the file's source): S(N), 3 dof.
     let (s, dof) = group("3-rrr-spherical", "-");
     let Pattern::Group(g) = s else { panic!("{s}") };
@@ -355,11 +408,19 @@ fn first_principles_patterns_are_recognised() {
     assert_eq!((planar.to_string().as_str(), dof), ("G(xy)", 3));
     // Gough–Stewart: D with the inputs free, E (a structure) with all locked.
     assert_eq!(group("6-ups", "-").0.to_string(), "D");
-    assert_eq!(group("6-ups", "P1.3,P2.3,P3.3,P4.3,P5.3,P6.3").0.to_string(), "E");
+    assert_eq!(
+        group("6-ups", "P1.3,P2.3,P3.3,P4.3,P5.3,P6.3")
+            .0
+            .to_string(),
+        "E"
+    );
     // 3-UPS with legs 2 and 3 fully locked and leg 1's α locked: the S centres G_2, G_3 can
     // stay put, and G_1 (free along leg 1's vertical plane, which is perpendicular to G_2G_3)
     // turns about the line G_2G_3, along y: R(y).
-    assert_eq!(group("3-ups", "R1.1,R2.1,P2.3,R3.1,P3.3").0.to_string(), "R(y)");
+    assert_eq!(
+        group("3-ups", "R1.1,R2.1,P2.3,R3.1,P3.3").0.to_string(),
+        "R(y)"
+    );
 }
 
 #[test]
@@ -374,7 +435,9 @@ fn a_similar_hexagon_gough_stewart_platform_is_singular_everywhere() {
     })
     .unwrap();
     let m = Manipulator::new(&d).unwrap();
-    let a = m.analyse(&m.reference(), &[], &SampleSettings::default()).unwrap();
+    let a = m
+        .analyse(&m.reference(), &[], &SampleSettings::default())
+        .unwrap();
     assert!(a.generic.0 < 6, "generic rank {}", a.generic.0);
     assert!(
         a.singularities
@@ -385,8 +448,14 @@ fn a_similar_hexagon_gough_stewart_platform_is_singular_everywhere() {
     );
     // The paired layout of mechanisms/6-ups.json is not.
     let good = load("6-ups");
-    let a = good.analyse(&good.reference(), &[], &SampleSettings::default()).unwrap();
-    assert!(a.singularities.is_empty() && a.jd_rank.rank == 6, "{:?}", a.singularities);
+    let a = good
+        .analyse(&good.reference(), &[], &SampleSettings::default())
+        .unwrap();
+    assert!(
+        a.singularities.is_empty() && a.jd_rank.rank == 6,
+        "{:?}",
+        a.singularities
+    );
 }
 
 #[test]
@@ -400,7 +469,11 @@ fn modes_of_the_three_ups_cover_all_64_lock_subsets() {
     for mode in &modes.modes {
         assert_eq!(mode.dof, 6 - mode.locked.len(), "{}", mode.lock_text);
     }
-    let rps = modes.non_groups.iter().find(|p| p.pattern == "1T2R").unwrap();
+    let rps = modes
+        .non_groups
+        .iter()
+        .find(|p| p.pattern == "1T2R")
+        .unwrap();
     assert_eq!(rps.lock_sets, ["R1.1 R2.1 R3.1"]);
     assert!(modes.groups.iter().any(|g| g.pattern == "D"));
     assert!(modes.groups.iter().any(|g| g.pattern == "E"));
@@ -430,5 +503,70 @@ fn the_committed_manipulator_files_are_what_kinsyn_build_writes() {
         .unwrap();
         let committed = std::fs::read_to_string(format!("mechanisms/{file}.json")).unwrap();
         assert_eq!(d.to_json(), committed, "mechanisms/{file}.json");
+    }
+}
+
+#[test]
+fn a_three_rps_with_radial_revolutes_is_constraint_singular_at_the_horizontal_pose() {
+    // Hand derivation: with vertical legs (base and platform radii equal) the R axis may be
+    // radial and horizontal while staying perpendicular to the slider (paper 000 §3). A leg's
+    // constraint wrench is then the force through its S centre G_i parallel to its R axis
+    // (reciprocal to R, P and S). With the platform horizontal the three radial forces are
+    // coplanar and meet on the vertical axis, so they span only the two forces of that plane
+    // through that point: rank 2 instead of 3, and the platform gains a dof (4 instead of 3).
+    // Tilted nearby, the three lines are no longer coplanar and the rank is 3.
+    use kinsyn::manipulator::build::{BuildSpec, build};
+    let spec = |axes: &str| BuildSpec {
+        chain: "RP!S".into(),
+        axes: Some(axes.into()),
+        platform_radius: 1.0,
+        ..Default::default()
+    };
+    let m = Manipulator::new(&build(&spec("xzxyz")).unwrap()).unwrap();
+    let a = m
+        .analyse(&m.reference(), &[], &SampleSettings::default())
+        .unwrap();
+    assert_eq!((a.constraint_rank.rank, a.generic.1), (2, 3));
+    assert_eq!((a.platform_dof, a.wrench_dof), (4, 4));
+    let constraint = a
+        .singularities
+        .iter()
+        .find(|s| s.kind == kinsyn::manipulator::SingularityKind::Constraint)
+        .expect("a constraint singularity");
+    assert!(
+        constraint.detail.contains("rank 2 here, 3 nearby"),
+        "{}",
+        constraint.detail
+    );
+    // Tangential R axes give three lines that bound a triangle: independent, no singularity.
+    let m = Manipulator::new(&build(&spec("yzxyz")).unwrap()).unwrap();
+    let a = m
+        .analyse(&m.reference(), &[], &SampleSettings::default())
+        .unwrap();
+    assert_eq!((a.constraint_rank.rank, a.platform_dof), (3, 3));
+    assert!(a.singularities.is_empty(), "{:?}", a.singularities);
+}
+
+#[test]
+fn every_verified_catalogue_chain_builds_a_six_dof_manipulator() {
+    // Issue 4: `kinsyn build` must give a geometry in which any catalogue chain can be tried as a
+    // leg. A 3T3R leg (rank 6) allows every platform twist, so three of them leave the platform
+    // its six dof (the intersection of three full twist systems) — unless the built geometry is
+    // special. Checked for all 441 verified chains at the reference configuration.
+    use kinsyn::catalogue::Catalogue;
+    use kinsyn::manipulator::build::{BuildSpec, build};
+    let cat = Catalogue::generate(&kinsyn::synthesis::Options::default());
+
+    for e in cat.verified() {
+        let d = build(&BuildSpec {
+            chain: e.notation.clone(),
+            axes: Some(e.axes.clone()),
+            actuated: Some(vec![1]),
+            ..Default::default()
+        })
+        .unwrap();
+        let m = Manipulator::new(&d).unwrap();
+        let (_, dof) = m.mechanism().twist_space(m.platform(), &m.reference(), &[]);
+        assert_eq!(dof, 6, "{} {}: {:?}", e.id, e.notation, d.source);
     }
 }

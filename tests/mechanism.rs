@@ -42,9 +42,14 @@ fn a_planar_four_bar_has_one_loop_and_one_dof() {
     // Driving the crank by 0.3 rad and closing the loop keeps one dof and zero residual.
     let mut moved = q.clone();
     moved[0] = 0.3;
-    let closed = m.assemble(&moved, &[true, false, false, false], None).unwrap();
+    let closed = m
+        .assemble(&moved, &[true, false, false, false], None)
+        .unwrap();
     assert!(m.closure_residual(&closed).amax() < 1e-10);
-    assert!((closed[0] - 0.3).abs() < 1e-15, "a locked joint is not moved by assembly");
+    assert!(
+        (closed[0] - 0.3).abs() < 1e-15,
+        "a locked joint is not moved by assembly"
+    );
     assert_eq!(m.mobility(&closed, &[false; 4]).dof, 1);
 }
 
@@ -69,7 +74,11 @@ fn the_closure_jacobian_is_minus_the_derivative_of_the_loop_residual() {
     let m = man.mechanism();
     assert_eq!(m.loop_count(), 2);
     let q = man
-        .assemble_at(Vector3::new(0.03, -0.02, 1.05), Vector3::new(0.1, 0.05, -0.08), &[])
+        .assemble_at(
+            Vector3::new(0.03, -0.02, 1.05),
+            Vector3::new(0.1, 0.05, -0.08),
+            &[],
+        )
         .unwrap();
     let c = m.closure_jacobian(&m.joint_screws(&q));
     let h = 1e-6;
@@ -91,7 +100,9 @@ fn a_body_jacobian_matches_finite_differences_of_its_pose() {
     let man = Manipulator::from_json(&text).unwrap();
     let m = man.mechanism();
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(5);
-    let q: Vec<f64> = (0..m.joints().len()).map(|_| rng.random_range(-0.5..0.5)).collect();
+    let q: Vec<f64> = (0..m.joints().len())
+        .map(|_| rng.random_range(-0.5..0.5))
+        .collect();
     let j = m.body_jacobian(man.platform(), &m.joint_screws(&q));
     let h = 1e-6;
     for k in 0..q.len() {
@@ -119,7 +130,10 @@ fn assembly_at_a_pose_gives_the_gough_stewart_leg_lengths() {
     let text = std::fs::read_to_string("mechanisms/6-ups.json").unwrap();
     let d = kinsyn::manipulator::file::Description::from_json(&text).unwrap();
     let man = Manipulator::new(&d).unwrap();
-    let (p, rv) = (Vector3::new(0.05, -0.04, 1.08), Vector3::new(0.12, -0.07, 0.2));
+    let (p, rv) = (
+        Vector3::new(0.05, -0.04, 1.08),
+        Vector3::new(0.12, -0.07, 0.2),
+    );
     let q = man.assemble_at(p, rv, &[]).unwrap();
     let r = Rotation3::from_scaled_axis(rv);
     let p0 = Vector3::from(d.platform.position);
@@ -136,13 +150,20 @@ fn assembly_at_a_pose_gives_the_gough_stewart_leg_lengths() {
         );
     }
     // Sliders have no limits here, so a tall pose is still reachable (z = 25: every leg longer).
-    assert!(man.assemble_at(Vector3::new(0.0, 0.0, 25.0), Vector3::zeros(), &[]).is_ok());
+    assert!(
+        man.assemble_at(Vector3::new(0.0, 0.0, 25.0), Vector3::zeros(), &[])
+            .is_ok()
+    );
     // The 3-RPS has three dof: a general pose (a turn about the vertical with a sideways shift)
     // is out of reach, and assembly says so instead of returning the nearest configuration.
     let text = std::fs::read_to_string("mechanisms/3-rps.json").unwrap();
     let rps = Manipulator::from_json(&text).unwrap();
     let e = rps
-        .assemble_at(Vector3::new(0.2, 0.1, 1.0), Vector3::new(0.0, 0.0, 0.3), &[])
+        .assemble_at(
+            Vector3::new(0.2, 0.1, 1.0),
+            Vector3::new(0.0, 0.0, 0.3),
+            &[],
+        )
         .unwrap_err();
     assert!(e.to_string().contains("does not assemble"), "{e}");
 }

@@ -79,8 +79,10 @@ pub fn modes(path: &Path, settings: &SampleSettings, as_json: bool) -> Result<St
     }
     let _ = writeln!(
         s,
-        "\n{} displacement groups reached (multioperation capacity):",
-        modes.groups.len()
+        "\nmultioperation capacity: {} displacement subgroups reached, of {} of the 12 kinds ({}):",
+        modes.groups.len(),
+        modes.group_kinds.len(),
+        modes.group_kinds.join(" ")
     );
     for g in &modes.groups {
         let _ = writeln!(s, "  {:<8} lock {}", g.pattern, g.lock_sets.join(" | "));

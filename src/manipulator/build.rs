@@ -7,13 +7,23 @@
 //! perpendicular to it, `x = y × z`. The catalogue's axis letters x, y, z are read in that frame,
 //! so the UPS entry (`xyzxyz`) gets its slider along the leg, its U's second axis horizontal
 //! (the R of the 3-RPS when the first is locked) and its first in the leg's vertical plane.
-//! Joints between the first and the last are spaced along the leg and pushed off it by
-//! `±0.15` of its length, alternately, so that parallel revolutes are not coaxial.
+//! Joints between the first and the last are spaced evenly along the leg and pushed off it by
+//! 0.15 of its length, the m-th towards the angle m·ψ (ψ the golden angle) in the leg frame's
+//! xy plane, so that the joint points of a leg are not coplanar and parallel revolutes are not
+//! coaxial. When the catalogue's directions are a singular configuration of the chain (the rank
+//! of the leg's Jacobian there is below that of the same chain with random offsets, e.g. two
+//! guides parallel), the directions are those after every revolute has turned by a fixed angle,
+//! and the file's `source` says so.
 
 use super::file::{AngleUnit, AxisSpec, Description, FORMAT, LegSpec, PlatformSpec, Units};
-use crate::catalogue::Catalogue;
-use crate::notation::Chain;
+use crate::chain::SerialChain;
+use crate::notation::{Chain, Primitive};
+use crate::screw;
+use crate::verification::random_configuration;
+use nalgebra::DMatrix;
 use nalgebra::Vector3;
+use rand::SeedableRng;
+use rand_chacha::ChaCha8Rng;
 use serde::Serialize;
 
 /// The geometry and legs asked for.
@@ -78,6 +88,83 @@ pub fn leg_frame(base: &Vector3<f64>, end: &Vector3<f64>) -> [Vector3<f64>; 3] {
     [y.cross(&z), y, z]
 }
 
+/// The joint directions of the leg after every revolute turned by `0.6 + 0.25 k` radians (k its
+/// index), joint points kept: the same chain at a configuration where no two axes are aligned by
+/// accident.
+fn turned(chain: &Chain, axes: &[Vector3<f64>], points: &[Vector3<f64>]) -> Vec<Vector3<f64>> {
+    let Some(leg) = leg_chain(chain, axes, points) else {
+        return axes.to_vec();
+    };
+    let q: Vec<f64> = leg
+        .joints()
+        .iter()
+        .enumerate()
+        .map(|(k, j)| match j.kind {
+            Primitive::R => 0.6 + 0.25 * k as f64,
+            Primitive::P => 0.0,
+        })
+        .collect();
+    let j = leg.jacobian(&q);
+    leg.joints()
+        .iter()
+        .enumerate()
+        .map(|(k, joint)| {
+            let row = if joint.kind == Primitive::R { 0 } else { 3 };
+            Vector3::new(j[(row, k)], j[(row + 1, k)], j[(row + 2, k)]).normalize()
+        })
+        .collect()
+}
+
+/// The leg as a serial chain: each primitive with its axis and its letter's point.
+fn leg_chain(chain: &Chain, axes: &[Vector3<f64>], points: &[Vector3<f64>]) -> Option<SerialChain> {
+    let mut joints = Vec::with_capacity(axes.len());
+    let mut k = 0;
+    for (letter, joint) in chain.joints().iter().enumerate() {
+        for &kind in joint.kind.primitives() {
+            joints.push((kind, *axes.get(k)?, *points.get(letter)?));
+            k += 1;
+        }
+    }
+    SerialChain::new(joints).ok()
+}
+
+/// The golden angle, 2π(1 − 1/φ): successive multiples never line up.
+const GOLDEN_ANGLE: f64 = 2.399_963_229_728_653;
+
+/// Whether a leg with these axes and joint points (one per letter) is special at the reference
+/// configuration: the rank of its Jacobian there is below the chain's generic rank, that of the
+/// same joint directions with generic offsets between the letters
+/// ([`SerialChain::from_layout`], as in the catalogue's verification).
+fn special(chain: &Chain, axes: &str, vectors: &[Vector3<f64>], points: &[Vector3<f64>]) -> bool {
+    let word: Vec<Primitive> = chain.primitives().map(|(p, _)| p).collect();
+    let blocks: Vec<usize> = chain
+        .joints()
+        .iter()
+        .map(|j| j.kind.primitives().len())
+        .collect();
+    let rank = |leg: &SerialChain, q: &[f64]| {
+        let j = leg.jacobian(q);
+        screw::rank(
+            &DMatrix::from_column_slice(6, leg.len(), j.as_slice()),
+            screw::DEFAULT_RANK_TOLERANCE,
+        )
+        .rank
+    };
+    let letters: Vec<u8> = axes.bytes().map(|b| b - b'x').collect();
+    let mut rng = ChaCha8Rng::seed_from_u64(1);
+    let (Some(leg), Ok(generic)) = (
+        leg_chain(chain, vectors, points),
+        SerialChain::from_layout(&word, &letters, &blocks, &mut rng),
+    ) else {
+        return false;
+    };
+    let generic_rank = (0..4)
+        .map(|_| rank(&generic, &random_configuration(&generic, &mut rng)))
+        .max()
+        .unwrap_or(0);
+    rank(&leg, &vec![0.0; leg.len()]) < generic_rank
+}
+
 /// Rounds to 12 decimals so that written files do not carry round-off digits.
 fn tidy(v: Vector3<f64>) -> [f64; 3] {
     v.map(|x| (x * 1e12).round() / 1e12 + 0.0).into()
@@ -109,7 +196,7 @@ pub fn build(spec: &BuildSpec) -> Result<Description, String> {
         return Err(format!("--twist {}: not a number", spec.twist));
     }
     let mut catalogue = None;
-    let (chain, entry_axes) = super::leg_chain(&spec.chain, &mut catalogue)?;
+    let (chain, entry_axes) = super::leg_chain(&spec.chain, spec.axes.is_none(), &mut catalogue)?;
     let primitives = chain.primitives().count();
     let axes = match (&spec.axes, entry_axes) {
         (Some(word), _) => word.clone(),
@@ -144,6 +231,7 @@ pub fn build(spec: &BuildSpec) -> Result<Description, String> {
     let letters = plain.joints().len();
     let n = spec.legs;
     let mut legs = Vec::with_capacity(n);
+    let mut turned_axes = false;
     for k in 0..n {
         let theta = std::f64::consts::TAU * k as f64 / n as f64;
         let sense = if spec.alternate && k % 2 == 1 {
@@ -157,51 +245,80 @@ pub fn build(spec: &BuildSpec) -> Result<Description, String> {
         let end = attach + Vector3::new(0.0, 0.0, spec.height);
         let frame = leg_frame(&base, &end);
         let length = (end - base).norm();
-        let off = (frame[0] + frame[1]) / 2f64.sqrt() * (0.15 * length);
-        let points: Vec<[f64; 3]> = (1..letters.saturating_sub(1))
-            .map(|m| {
-                let sign = if m % 2 == 1 { 1.0 } else { -1.0 };
-                tidy(base + (end - base) * (m as f64 / (letters - 1) as f64) + off * sign)
+        // Letter m is pushed off the leg line by 0.15 of its length towards the angle m·ψ
+        // (ψ the golden angle) in the leg frame's xy plane: the points do not lie in one plane.
+        let off = |m: f64| {
+            let a = m * GOLDEN_ANGLE;
+            (frame[0] * a.cos() + frame[1] * a.sin()) * (0.15 * length)
+        };
+        let mut axis_vectors: Vec<Vector3<f64>> =
+            axes.bytes().map(|b| frame[(b - b'x') as usize]).collect();
+        let points: Vec<Vector3<f64>> = (0..letters)
+            .map(|m| match m {
+                0 => base,
+                _ if m + 1 == letters => end,
+                _ => base + (end - base) * (m as f64 / (letters - 1) as f64) + off(m as f64),
             })
+            .collect();
+        if special(&plain, &axes, &axis_vectors, &points) {
+            // The aligned directions are a singular configuration of this chain (e.g. two
+            // guides parallel there): take the directions the joints have after every revolute
+            // turned by a fixed angle; parallel groups stay parallel (paper 000 §2).
+            axis_vectors = turned(&plain, &axis_vectors, &points);
+            turned_axes = true;
+        }
+
+        let first = points[0];
+        let points: Vec<[f64; 3]> = points[1..letters.saturating_sub(1).max(1)]
+            .iter()
+            .map(|p| tidy(*p))
             .collect();
         legs.push(LegSpec {
             chain: plain.to_string(),
-            base: tidy(base),
+            base: tidy(first),
             platform: tidy(attach),
             points: (letters > 2).then_some(points),
             axes: Some(
-                axes.bytes()
-                    .map(|b| AxisSpec::Vector(tidy(frame[(b - b'x') as usize])))
+                axis_vectors
+                    .iter()
+                    .map(|a| AxisSpec::Vector(tidy(*a)))
                     .collect(),
             ),
             actuated: Some(actuated.clone()),
         });
     }
-    let source = if Catalogue::synthesise(&Default::default())
-        .find(&spec.chain)
-        .is_some_and(|e| e.id.eq_ignore_ascii_case(spec.chain.trim()))
-    {
-        format!(
-            "kinsyn build: legs of catalogue entry {}",
-            spec.chain.trim()
-        )
-    } else {
-        "kinsyn build".to_string()
-    };
+    let from_catalogue = catalogue
+        .as_ref()
+        .and_then(|c| c.find(&spec.chain))
+        .filter(|e| e.id.eq_ignore_ascii_case(spec.chain.trim()))
+        .map(|e| format!(" (legs: catalogue entry {} {})", e.id, e.notation));
+    let name = spec
+        .name
+        .clone()
+        .unwrap_or_else(|| format!("{n}-{}", plain.letters()));
+    let mut source = format!(
+        "kinsyn build --legs {n} --chain '{}' --axes {axes} --actuated {} --base-radius {} --platform-radius {} --height {} --twist {}{} --name '{name}'",
+        spec.chain.trim(),
+        actuated
+            .iter()
+            .map(ToString::to_string)
+            .collect::<Vec<_>>()
+            .join(","),
+        spec.base_radius,
+        spec.platform_radius,
+        spec.height,
+        spec.twist,
+        if spec.alternate { " --alternate" } else { "" }
+    );
+    source += &from_catalogue.unwrap_or_default();
+    if turned_axes {
+        source +=
+            "; axes turned from the catalogue's directions, a singular configuration of this chain";
+    }
     Ok(Description {
         format: FORMAT.into(),
-        name: spec
-            .name
-            .clone()
-            .unwrap_or_else(|| format!("{n}-{}", plain.letters())),
-        source: Some(format!(
-            "{source} --legs {n} --axes {axes} (base radius {}, platform radius {}, height {}, twist {}°{})",
-            spec.base_radius,
-            spec.platform_radius,
-            spec.height,
-            spec.twist,
-            if spec.alternate { ", alternate" } else { "" }
-        )),
+        name,
+        source: Some(source),
         units: Units {
             length: "m".into(),
             angle: AngleUnit::Deg,

@@ -140,7 +140,7 @@ impl Manipulator {
             let field = |f: &str| format!("legs[{i}].{f}");
             finite(&spec.base, &field("base"))?;
             finite(&spec.platform, &field("platform"))?;
-            let (chain, entry_axes) = leg_chain(&spec.chain, &mut catalogue)
+            let (chain, entry_axes) = leg_chain(&spec.chain, spec.axes.is_none(), &mut catalogue)
                 .map_err(|m| DescriptionError::new(field("chain"), m))?;
             let kinds: Vec<Primitive> = chain.primitives().map(|(p, _)| p).collect();
             let letters = chain.joints().len();
@@ -447,12 +447,18 @@ fn finite(p: &[f64; 3], field: &str) -> Result<(), DescriptionError> {
 /// is a catalogue chain.
 pub(crate) fn leg_chain(
     text: &str,
+    need_axes: bool,
     catalogue: &mut Option<Catalogue>,
 ) -> Result<(Chain, Option<String>), String> {
-    let looks_like_id = text.len() > 3
-        && text.as_bytes()[0].eq_ignore_ascii_case(&b'T')
-        && text[1..].contains('-')
-        && text[1..2].chars().all(|c| c.is_ascii_digit());
+    let bytes = text.trim().as_bytes();
+    let looks_like_id = bytes.len() > 3
+        && bytes[0].eq_ignore_ascii_case(&b'T')
+        && bytes[1].is_ascii_digit()
+        && bytes.contains(&b'-');
+    if !looks_like_id && !need_axes {
+        let chain: Chain = text.parse().map_err(|e| format!("'{text}': {e}"))?;
+        return Ok((chain, None));
+    }
     let cat = catalogue.get_or_insert_with(|| Catalogue::synthesise(&Options::default()));
     if looks_like_id {
         let entry = cat

@@ -55,8 +55,11 @@ pub struct Modes {
     pub settings: SampleSettings,
     /// One mode per subset of the inputs, by number of locks then lexicographically.
     pub modes: Vec<Mode>,
-    /// The distinct displacement groups reached, with their minimal lock sets.
+    /// The distinct displacement subgroups reached (a group with its direction or plane), with
+    /// their minimal lock sets.
     pub groups: Vec<PatternModes>,
+    /// The distinct kinds among them (of the 12: `R` once however many axes it turns about).
+    pub group_kinds: Vec<String>,
     /// The distinct non-group patterns reached, with their minimal lock sets.
     pub non_groups: Vec<PatternModes>,
 }
@@ -168,8 +171,23 @@ impl Manipulator {
                 groups.push(entry);
             }
         }
+        let mut group_kinds: Vec<String> = modes
+            .iter()
+            .filter_map(|m| match m.classification.as_ref().map(|c| c.pattern) {
+                Some(crate::motion::Pattern::Group(g)) => Some(g.kind.symbol().to_string()),
+                _ => None,
+            })
+            .collect();
+        group_kinds.sort_by_key(|k| {
+            crate::motion::GroupKind::ALL
+                .iter()
+                .position(|g| g.symbol() == k)
+                .unwrap_or(usize::MAX)
+        });
+        group_kinds.dedup();
         Ok(Modes {
             manipulator: self.name.clone(),
+            group_kinds,
             actuators: self.actuators.iter().map(super::Actuator::label).collect(),
             settings: *settings,
             modes,
