@@ -129,7 +129,9 @@ pub fn analyze(
 ) -> Result<String, CliError> {
     let m = load(path)?;
     let locked = match lock {
-        Some(text) => m.parse_locks(text).map_err(CliError::Input)?,
+        Some(text) => m
+            .parse_locks(text)
+            .map_err(|e| CliError::Input(format!("--lock '{text}': {e}")))?,
         None => Vec::new(),
     };
     let q = match pose {
@@ -159,6 +161,7 @@ fn row_label(m: &Manipulator, kind: RowKind) -> String {
 
 fn analysis_json(m: &Manipulator, a: &Analysis) -> serde_json::Value {
     let frame = m.platform_frame(&a.q);
+    let rv = kinsyn::mechanism::rotation_log(&frame.0);
     let rows: Vec<serde_json::Value> = a
         .jacobians
         .rows
@@ -171,7 +174,7 @@ fn analysis_json(m: &Manipulator, a: &Analysis) -> serde_json::Value {
         "locked": m.lock_text(&a.locked),
         "point": [a.jacobians.point.x, a.jacobians.point.y, a.jacobians.point.z],
         "platform_position": [frame.1.x, frame.1.y, frame.1.z],
-        "platform_rotation_vector_rad": [frame.0.scaled_axis().x, frame.0.scaled_axis().y, frame.0.scaled_axis().z],
+        "platform_rotation_vector_rad": [rv.x, rv.y, rv.z],
         "joint_values": a.q,
         "mobility": a.mobility,
         "platform_dof": a.platform_dof,
@@ -187,18 +190,19 @@ fn analysis_json(m: &Manipulator, a: &Analysis) -> serde_json::Value {
 fn analysis_text(m: &Manipulator, a: &Analysis) -> String {
     let mut s = String::new();
     let frame = m.platform_frame(&a.q);
+    let rv = kinsyn::mechanism::rotation_log(&frame.0);
     let p = a.jacobians.point;
     let _ = writeln!(
         s,
         "{}: P = [{:.6}, {:.6}, {:.6}] {}; platform rotation vector [{:.6}, {:.6}, {:.6}] rad; locked: {}",
         m.name(),
-        p.x,
-        p.y,
-        p.z,
+        clean(p.x),
+        clean(p.y),
+        clean(p.z),
         m.units().length,
-        frame.0.scaled_axis().x,
-        frame.0.scaled_axis().y,
-        frame.0.scaled_axis().z,
+        clean(rv.x),
+        clean(rv.y),
+        clean(rv.z),
         m.lock_text(&a.locked)
     );
     let _ = writeln!(
@@ -221,7 +225,7 @@ fn analysis_text(m: &Manipulator, a: &Analysis) -> String {
         let cells: Vec<String> = r
             .wrench
             .iter()
-            .map(|&x| format!("{:>10.6}", if x.abs() < 5e-7 { 0.0 } else { x }))
+            .map(|&x| format!("{:>10.6}", clean(x)))
             .collect();
         let _ = writeln!(
             s,
@@ -258,4 +262,9 @@ fn analysis_text(m: &Manipulator, a: &Analysis) -> String {
         let _ = writeln!(s, "singularity ({:?}): {}", sing.kind, sing.detail);
     }
     s
+}
+
+/// A value printed with six decimals, without a "-0.000000" for round-off.
+fn clean(x: f64) -> f64 {
+    if x.abs() < 5e-7 { 0.0 } else { x }
 }

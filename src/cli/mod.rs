@@ -132,13 +132,13 @@ enum Command {
         #[arg(long, value_delimiter = ',')]
         actuated: Option<Vec<usize>>,
         /// Radius of the base circle.
-        #[arg(long, default_value_t = 1.0)]
+        #[arg(long, default_value_t = 1.0, allow_hyphen_values = true)]
         base_radius: f64,
         /// Radius of the platform circle.
-        #[arg(long, default_value_t = 0.5)]
+        #[arg(long, default_value_t = 0.5, allow_hyphen_values = true)]
         platform_radius: f64,
         /// Height of the platform above the base.
-        #[arg(long, default_value_t = 1.0)]
+        #[arg(long, default_value_t = 1.0, allow_hyphen_values = true)]
         height: f64,
         /// Degrees each platform point is turned from its leg's base point about the vertical.
         #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
@@ -162,16 +162,17 @@ struct Sampling {
     /// Seed of the random walks.
     #[arg(long, default_value_t = 2026)]
     seed: u64,
-    /// Configurations sampled per motion.
-    #[arg(long, default_value_t = 3)]
-    samples: usize,
+    /// Configurations sampled per motion (at least 2: a group is recognised by its twist space
+    /// staying the same from one sample to another).
+    #[arg(long, default_value_t = 3, value_parser = clap::value_parser!(u16).range(2..))]
+    samples: u16,
 }
 
 impl Sampling {
     fn settings(&self) -> kinsyn::mechanism::SampleSettings {
         kinsyn::mechanism::SampleSettings {
             seed: self.seed,
-            samples: self.samples.max(2),
+            samples: usize::from(self.samples),
             ..Default::default()
         }
     }

@@ -218,8 +218,55 @@ pub fn build(spec: &BuildSpec) -> Result<Description, String> {
         .filter(|(_, (_, m))| m.actuated)
         .map(|(k, _)| k + 1)
         .collect();
+    // Each C, U and S must get directions that keep it that joint (paper 000 §2).
+    let mut at = 0;
+    for joint in chain.joints() {
+        let n = joint.kind.primitives().len();
+        let word = &axes[at..at + n];
+        let distinct = word
+            .bytes()
+            .collect::<std::collections::BTreeSet<u8>>()
+            .len();
+        let fits = match joint.kind {
+            crate::notation::JointKind::C => distinct == 1,
+            crate::notation::JointKind::U | crate::notation::JointKind::S => distinct == n,
+            _ => true,
+        };
+        if !fits {
+            return Err(format!(
+                "--axes '{axes}': the {} at joints {}–{} needs {}, not '{word}'",
+                joint.kind.letter(),
+                at + 1,
+                at + n,
+                if joint.kind == crate::notation::JointKind::C {
+                    "its slider and revolute along one direction"
+                } else {
+                    "a different direction for each of its revolutes"
+                }
+            ));
+        }
+        at += n;
+    }
     let actuated = match &spec.actuated {
-        Some(list) => list.clone(),
+        Some(list) => {
+            let mut sorted = list.clone();
+            sorted.sort_unstable();
+            sorted.dedup();
+            if sorted.len() != list.len() {
+                return Err(format!("--actuated {list:?}: a joint named twice"));
+            }
+            if let Some(bad) = sorted.iter().find(|&&p| p == 0 || p > primitives) {
+                return Err(format!(
+                    "--actuated: {bad} is not a joint of {chain} (joints 1 to {primitives})"
+                ));
+            }
+            if !marked.is_empty() && marked != sorted {
+                return Err(format!(
+                    "--actuated {sorted:?} disagrees with the '!' marks of {chain} (joints {marked:?}); give one or the other"
+                ));
+            }
+            sorted
+        }
         None => marked,
     };
     if actuated.is_empty() {

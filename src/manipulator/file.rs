@@ -104,7 +104,7 @@ pub struct LegSpec {
 
 /// An axis as written in a file.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(untagged)]
+#[serde(untagged, expecting = "an axis: a vector [x, y, z] or \"leg\"")]
 pub enum AxisSpec {
     /// A direction (normalised when read).
     Vector([f64; 3]),
@@ -142,12 +142,18 @@ impl Description {
     pub fn from_json(text: &str) -> Result<Self, DescriptionError> {
         let value: serde_json::Value = serde_json::from_str(text)
             .map_err(|e| DescriptionError::new("file", format!("not JSON ({e})")))?;
-        match value.get("format").and_then(|f| f.as_str()) {
-            Some(FORMAT) => {}
-            Some(other) => {
+        match value.get("format") {
+            Some(serde_json::Value::String(f)) if f == FORMAT => {}
+            Some(serde_json::Value::String(other)) => {
                 return Err(DescriptionError::new(
                     "format",
                     format!("'{other}' is not a manipulator file format; expected '{FORMAT}'"),
+                ));
+            }
+            Some(other) => {
+                return Err(DescriptionError::new(
+                    "format",
+                    format!("{other} is not a format name; expected \"{FORMAT}\""),
                 ));
             }
             None => {
@@ -159,7 +165,17 @@ impl Description {
                 ));
             }
         }
-        serde_json::from_str(text).map_err(|e| DescriptionError::new("file", e.to_string()))
+        // Deserialise with the path of the offending field (`legs[2].axes[0]`).
+        let mut de = serde_json::Deserializer::from_str(text);
+        serde_path_to_error::deserialize(&mut de).map_err(|e| {
+            let path = e.path().to_string();
+            let field = if path == "." {
+                "file".to_string()
+            } else {
+                path
+            };
+            DescriptionError::new(field, e.into_inner().to_string())
+        })
     }
 
     /// The description as pretty JSON with a final newline.

@@ -148,8 +148,16 @@ impl Manipulator {
             let end = to_ground(&spec.platform);
             // One point per joint letter.
             let points: Vec<Vector3<f64>> = match &spec.points {
+                Some(between) if letters == 1 && between.is_empty() => vec![base],
+                Some(_) if letters == 1 => {
+                    return Err(DescriptionError::new(
+                        field("points"),
+                        format!("{chain} has one joint, so no joint lies between the first and the last; leave points out"),
+                    )
+                    .into());
+                }
                 Some(between) => {
-                    if between.len() + 2 != letters.max(2) || letters < 2 {
+                    if between.len() + 2 != letters {
                         return Err(DescriptionError::new(
                             field("points"),
                             format!(

@@ -652,14 +652,26 @@ pub fn rotation_log(r: &Rotation3<f64>) -> Vector3<f64> {
     let sin = skew.norm();
     let cos = ((m.trace() - 1.0) / 2.0).clamp(-1.0, 1.0);
     let theta = sin.atan2(cos);
-    if sin > 1e-6 || cos > 0.0 && sin > 0.0 {
-        return skew * (theta / sin);
+    if cos > -0.5 {
+        // Away from a half turn the skew part carries the axis accurately.
+        return if sin > 0.0 {
+            skew * (theta / sin)
+        } else {
+            Vector3::zeros()
+        };
     }
-    if cos > 0.0 {
-        return Vector3::zeros();
+    // Near a half turn: (R + Rᵀ)/2 = cos θ I + (1 − cos θ) n nᵀ; read n from its largest
+    // diagonal entry's column, and its sense from the skew part (sin θ · n).
+    let sym = (m + m.transpose()) / 2.0 - Matrix3::identity() * cos;
+    let k = (0..3)
+        .max_by(|&a, &b| sym[(a, a)].total_cmp(&sym[(b, b)]))
+        .unwrap_or(0);
+    let mut n = Vector3::new(sym[(0, k)], sym[(1, k)], sym[(2, k)]);
+    n /= n.norm().max(f64::MIN_POSITIVE);
+    if n.dot(&skew) < 0.0 {
+        n = -n;
     }
-    // Near a half turn the skew part vanishes: nalgebra's axis-angle is accurate there.
-    r.scaled_axis()
+    n * theta
 }
 
 /// The rigid displacement `exp(ε)` of a twist held for unit time (the inverse of [`log`]).

@@ -1,0 +1,497 @@
+//! The manipulator commands of the `kinsyn` binary (`modes`, `analyze`, `build`): output on the
+//! committed files of mechanisms/, and one-line errors naming the field with exit code 2 for every
+//! kind of bad input (exit 1 for a missing file).
+
+use serde_json::Value;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn kinsyn(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_kinsyn"))
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .args(args)
+        .output()
+        .expect("run kinsyn")
+}
+
+fn stdout(o: &Output) -> String {
+    String::from_utf8(o.stdout.clone()).unwrap()
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8(o.stderr.clone()).unwrap()
+}
+
+/// The committed 3-UPS description as a JSON value, to be broken one field at a time.
+fn three_ups() -> Value {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("mechanisms/3-ups.json");
+    serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap()
+}
+
+/// Writes `text` as `name` in `dir` and returns the path.
+fn write(dir: &tempfile::TempDir, name: &str, text: &str) -> PathBuf {
+    let path = dir.path().join(name);
+    std::fs::write(&path, text).unwrap();
+    path
+}
+
+/// The 3-UPS with `edit` applied, written to a file in `dir`.
+fn broken(dir: &tempfile::TempDir, name: &str, edit: impl FnOnce(&mut Value)) -> PathBuf {
+    let mut v = three_ups();
+    edit(&mut v);
+    write(dir, name, &serde_json::to_string_pretty(&v).unwrap())
+}
+
+/// Asserts exit code 2, nothing on stdout, and exactly one stderr line that starts with
+/// `kinsyn: error:` and contains every one of `needles`.
+fn assert_input_error(o: &Output, what: &str, needles: &[&str]) {
+    let err = stderr(o);
+    assert_eq!(o.status.code(), Some(2), "{what}: {err}");
+    assert!(stdout(o).is_empty(), "{what}: {}", stdout(o));
+    assert_eq!(err.lines().count(), 1, "{what}: {err}");
+    assert!(err.starts_with("kinsyn: error: "), "{what}: {err}");
+    for needle in needles {
+        assert!(err.contains(needle), "{what}: '{needle}' not in {err}");
+    }
+}
+
+#[test]
+fn modes_of_the_three_ups_list_64_subsets_and_the_three_rps() {
+    let o = kinsyn(&["modes", "mechanisms/3-ups.json"]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let out = stdout(&o);
+    assert!(
+        out.starts_with("3-UPS: 6 inputs (R1.1 P1.3 R2.1 P2.3 R3.1 P3.3), 64 lock subsets;"),
+        "{out}"
+    );
+    // The table: a header, then one line per subset, ending at the first blank line.
+    let table: Vec<&str> = out
+        .lines()
+        .skip_while(|l| !l.starts_with("locked"))
+        .skip(1)
+        .take_while(|l| !l.is_empty())
+        .collect();
+    assert_eq!(table.len(), 64, "{out}");
+    // Paper 000 §5–5.2: holding α̇ = 0 in every leg (the U's first revolute, R_i.1) turns the
+    // 3-UPS into the 3-RPS, whose platform keeps three dof (§5, eqs. 20–22). Those three dof are
+    // the 3-RPS's known 1T2R motion (one translation, two rotations, with parasitic motion of the
+    // other three coordinates), not one of the 12 displacement groups.
+    let rps: Vec<Vec<&str>> = table
+        .iter()
+        .map(|l| l.split_whitespace().collect::<Vec<_>>())
+        .filter(|t| t.len() >= 5 && t[..3] == ["R1.1", "R2.1", "R3.1"] && t[3] == "3")
+        .collect();
+    assert_eq!(rps.len(), 1, "{out}");
+    assert_eq!(rps[0][3..], ["3", "1T2R"], "{out}");
+    // Nothing locked: the full 6 dof, the displacement group D; everything locked: E.
+    assert!(
+        table[0].split_whitespace().collect::<Vec<_>>() == ["-", "6", "D", "group"],
+        "{}",
+        table[0]
+    );
+    assert!(table[63].ends_with(" 0  E  group"), "{}", table[63]);
+    assert!(
+        out.lines()
+            .any(|l| l.trim() == "1T2R     lock R1.1 R2.1 R3.1"),
+        "{out}"
+    );
+}
+
+#[test]
+fn modes_json_has_64_modes() {
+    let o = kinsyn(&["modes", "mechanisms/3-ups.json", "--json"]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let v: Value = serde_json::from_str(&stdout(&o)).expect("modes --json is JSON");
+    assert_eq!(v["manipulator"], "3-UPS");
+    let modes = v["modes"].as_array().unwrap();
+    assert_eq!(modes.len(), 64);
+    assert_eq!(v["actuators"].as_array().unwrap().len(), 6);
+    let rps = modes
+        .iter()
+        .find(|m| m["lock_text"] == "R1.1 R2.1 R3.1")
+        .unwrap();
+    assert_eq!(rps["dof"], 3);
+    assert_eq!(rps["pattern"], "1T2R");
+    assert_eq!(rps["group"], false);
+    // Each locked input removes one dof near the reference configuration.
+    for m in modes {
+        let locked = m["locked"].as_array().unwrap().len() as u64;
+        assert_eq!(m["dof"].as_u64(), Some(6 - locked), "{m}");
+    }
+}
+
+#[test]
+fn analyze_the_three_rps_has_mobility_3() {
+    let o = kinsyn(&["analyze", "mechanisms/3-rps.json"]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let out = stdout(&o);
+    assert!(
+        out.starts_with("3-RPS: P = [0.000000, 0.000000, 1.000000] m;"),
+        "{out}"
+    );
+    assert!(
+        out.lines()
+            .any(|l| l.starts_with("mobility 3 (loop closure), platform dof 3")),
+        "{out}"
+    );
+    // Three actuation rows (the prismatic inputs, J_I entry 1 as in eq. 21) and three leg
+    // constraint rows (eq. 22).
+    assert_eq!(
+        out.lines()
+            .filter(|l| l.trim().starts_with("input P"))
+            .count(),
+        3
+    );
+    assert_eq!(
+        out.lines()
+            .filter(|l| l.trim().starts_with("constraint leg"))
+            .count(),
+        3
+    );
+    assert!(out.contains("no singularity"), "{out}");
+    let o = kinsyn(&["analyze", "mechanisms/3-rps.json", "--json"]);
+    let v: Value = serde_json::from_str(&stdout(&o)).unwrap();
+    assert_eq!(v["mobility"], 3);
+    assert_eq!(v["platform_dof"], 3);
+    assert_eq!(v["rows"].as_array().unwrap().len(), 6);
+}
+
+#[test]
+fn analyze_at_a_pose_and_with_locks() {
+    // Locking every α of the 3-UPS leaves three dof, as the 3-RPS (paper 000 §5.2).
+    let o = kinsyn(&[
+        "analyze",
+        "mechanisms/3-ups.json",
+        "--lock",
+        "R1.1,R2.1,R3.1",
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let out = stdout(&o);
+    assert!(out.contains("locked: R1.1 R2.1 R3.1"), "{out}");
+    assert!(out.contains("mobility 3 (loop closure)"), "{out}");
+    assert_eq!(
+        out.lines()
+            .filter(|l| l.trim().starts_with("locked R"))
+            .count(),
+        3
+    );
+    // A displaced pose of the 6-UPS: the platform frame (= P here) goes where asked.
+    let o = kinsyn(&[
+        "analyze",
+        "mechanisms/6-ups.json",
+        "--pose",
+        "0.1,0.05,1.1,5,-3,10",
+        "--json",
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let v: Value = serde_json::from_str(&stdout(&o)).unwrap();
+    let p: Vec<f64> = v["point"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|x| x.as_f64().unwrap())
+        .collect();
+    for (got, want) in p.iter().zip([0.1, 0.05, 1.1]) {
+        assert!((got - want).abs() < 1e-9, "{p:?}");
+    }
+    let r: Vec<f64> = v["platform_rotation_vector_rad"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|x| x.as_f64().unwrap())
+        .collect();
+    for (got, want) in r.iter().zip([5.0_f64, -3.0, 10.0]) {
+        assert!((got - want.to_radians()).abs() < 1e-9, "{r:?}");
+    }
+    assert_eq!(v["mobility"], 6);
+    // The 3-RPS's one translation is along z: raising the platform to z = 5 without tilt only
+    // lengthens the legs (the sliders have no stroke limit), so that pose does assemble.
+    let o = kinsyn(&["analyze", "mechanisms/3-rps.json", "--pose", "0,0,5,0,0,0"]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let out = stdout(&o);
+    assert!(out.contains(", 5.000000] m;"), "{out}");
+    assert!(out.contains("mobility 3 (loop closure)"), "{out}");
+}
+
+#[test]
+fn bad_description_files_are_one_line_naming_the_field_and_exit_2() {
+    let dir = tempfile::tempdir().unwrap();
+    let cases: Vec<(&str, PathBuf, Vec<&str>)> = vec![
+        (
+            "not JSON",
+            write(
+                &dir,
+                "notjson.json",
+                "{\"format\": \"kinsyn-manipulator/1\", ",
+            ),
+            vec!["file: not JSON"],
+        ),
+        (
+            "no format",
+            broken(&dir, "noformat.json", |v| {
+                v.as_object_mut().unwrap().remove("format");
+            }),
+            vec!["format: missing", "kinsyn-manipulator/1"],
+        ),
+        (
+            "wrong format",
+            broken(&dir, "wrongformat.json", |v| {
+                v["format"] = "kinsyn-manipulator/2".into();
+            }),
+            vec![
+                "format: 'kinsyn-manipulator/2'",
+                "expected 'kinsyn-manipulator/1'",
+            ],
+        ),
+        (
+            "unknown chain letter",
+            broken(&dir, "letter.json", |v| {
+                v["legs"][1]["chain"] = "UXS".into()
+            }),
+            vec!["legs[1].chain", "'X' is not a joint letter"],
+        ),
+        (
+            "wrong number of axes",
+            broken(&dir, "axes.json", |v| {
+                v["legs"][2]["axes"].as_array_mut().unwrap().pop();
+            }),
+            vec!["legs[2].axes:", "5 axes for the 6 primitive joints of UPS"],
+        ),
+        (
+            "zero axis",
+            broken(&dir, "zero.json", |v| {
+                v["legs"][0]["axes"][4] = serde_json::json!([0.0, 0.0, 0.0]);
+            }),
+            vec!["legs[0].axes[4]", "no length"],
+        ),
+        (
+            "U with parallel axes",
+            broken(&dir, "u.json", |v| {
+                // The U's second axis made parallel to its first, [-2, 0, -1]/√5.
+                v["legs"][0]["axes"][1] = serde_json::json!([2.0, 0.0, 1.0]);
+            }),
+            vec!["legs[0].axes[1]", "U joint", "parallel"],
+        ),
+        (
+            "actuated position out of range",
+            broken(&dir, "actuated.json", |v| {
+                v["legs"][0]["actuated"] = serde_json::json!([1, 7]);
+            }),
+            vec![
+                "legs[0].actuated",
+                "7 is not a joint of UPS (joints 1 to 6)",
+            ],
+        ),
+    ];
+    // The file name leads the message, so the user knows which file is at fault.
+    for (what, path, needles) in &cases {
+        let name = path.file_name().unwrap().to_str().unwrap();
+        for command in ["modes", "analyze"] {
+            let o = kinsyn(&[command, path.to_str().unwrap()]);
+            let mut all: Vec<&str> = needles.clone();
+            all.push(name);
+            assert_input_error(&o, &format!("{command} {what}"), &all);
+        }
+    }
+}
+
+#[test]
+fn the_committed_file_is_accepted_when_rewritten() {
+    // The breaking above starts from a file the binary accepts: the same JSON, re-serialised.
+    let dir = tempfile::tempdir().unwrap();
+    let path = broken(&dir, "same.json", |_| {});
+    let o = kinsyn(&["modes", path.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(stdout(&o).contains("64 lock subsets"));
+}
+
+#[test]
+fn bad_poses_locks_and_builds_are_one_line_and_exit_2() {
+    // The 3-RPS platform's x translation is parasitic (fixed by z and the two tilts): with no
+    // tilt it stays at 0, so a pose 0.3 off to the side cannot be reached.
+    let o = kinsyn(&[
+        "analyze",
+        "mechanisms/3-rps.json",
+        "--pose",
+        "0.3,0,1,0,0,0",
+    ]);
+    assert_input_error(
+        &o,
+        "unreachable pose",
+        &["--pose '0.3,0,1,0,0,0'", "the pose does not assemble"],
+    );
+    let o = kinsyn(&["analyze", "mechanisms/3-rps.json", "--pose", "0,0,1"]);
+    assert_input_error(&o, "short pose", &["--pose '0,0,1'", "six numbers"]);
+    // R1.1 is an input of the 3-UPS, not of the 3-RPS (whose inputs are the prismatic joints).
+    let o = kinsyn(&["analyze", "mechanisms/3-rps.json", "--lock", "R1.1"]);
+    assert_input_error(
+        &o,
+        "unknown lock label",
+        &["'R1.1' is not an actuator of 3-RPS", "P1.2 P2.2 P3.2"],
+    );
+    let o = kinsyn(&["build", "--legs", "2", "--chain", "U(!,-)P!S"]);
+    assert_input_error(&o, "build --legs 2", &["--legs 2", "three to six legs"]);
+    // RPS has five primitive joints: no 6-dof catalogue entry gives its axes.
+    let o = kinsyn(&["build", "--chain", "RP!S"]);
+    assert_input_error(
+        &o,
+        "build without catalogue axes",
+        &["RP!S is not a catalogue chain", "--axes"],
+    );
+}
+
+#[test]
+fn a_missing_file_is_exit_1() {
+    let dir = tempfile::tempdir().unwrap();
+    let missing = dir.path().join("missing.json");
+    for command in ["modes", "analyze"] {
+        let o = kinsyn(&[command, missing.to_str().unwrap()]);
+        assert_eq!(o.status.code(), Some(1), "{command}: {}", stderr(&o));
+        let err = stderr(&o);
+        assert_eq!(err.lines().count(), 1, "{err}");
+        assert!(err.starts_with("kinsyn: error: "), "{err}");
+        assert!(err.contains("missing.json"), "{err}");
+    }
+}
+
+#[test]
+fn build_writes_a_file_that_modes_and_analyze_read() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("3-ups.json");
+    let o = kinsyn(&[
+        "build",
+        "--legs",
+        "3",
+        "--chain",
+        "U(!,-)P!S",
+        "--name",
+        "My 3-UPS",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(
+        stdout(&o).contains("My 3-UPS: 3 legs, 6 inputs; mobility 6, platform dof 6"),
+        "{}",
+        stdout(&o)
+    );
+    let v: Value = serde_json::from_str(&std::fs::read_to_string(&out).unwrap()).unwrap();
+    assert_eq!(v["format"], "kinsyn-manipulator/1");
+    assert_eq!(v["name"], "My 3-UPS");
+    let legs = v["legs"].as_array().unwrap();
+    assert_eq!(legs.len(), 3);
+    for leg in legs {
+        // The '!' marks are written as 1-based positions: α (1) and c (3), paper 000 §5.1.
+        assert_eq!(leg["chain"], "UPS");
+        assert_eq!(leg["actuated"], serde_json::json!([1, 3]));
+        assert_eq!(leg["axes"].as_array().unwrap().len(), 6);
+    }
+    let o = kinsyn(&["modes", out.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(
+        stdout(&o)
+            .starts_with("My 3-UPS: 6 inputs (R1.1 P1.3 R2.1 P2.3 R3.1 P3.3), 64 lock subsets"),
+        "{}",
+        stdout(&o)
+    );
+    // Without -o the description goes to stdout.
+    let o = kinsyn(&["build", "--chain", "U(!,-)P!S"]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let v: Value = serde_json::from_str(&stdout(&o)).unwrap();
+    assert_eq!(v["name"], "3-UPS");
+}
+
+#[test]
+fn review_findings_stay_fixed() {
+    // Found in review: each of these once gave a misleading message or a wrong number.
+    let dir = tempfile::tempdir().unwrap();
+    // A format that is not a string is named as such, not as missing.
+    let p = broken(&dir, "format-number.json", |v| v["format"] = Value::from(1));
+    assert_input_error(
+        &kinsyn(&["analyze", p.to_str().unwrap()]),
+        "format 1",
+        &["format: 1 is not"],
+    );
+    // A missing nested field is named by its whole path.
+    let p = broken(&dir, "no-position.json", |v| {
+        v["platform"].as_object_mut().unwrap().remove("position");
+    });
+    assert_input_error(
+        &kinsyn(&["analyze", p.to_str().unwrap()]),
+        "position",
+        &["platform: missing field `position`"],
+    );
+    // An axis of the wrong type says what an axis is.
+    let p = broken(&dir, "bad-axis.json", |v| {
+        v["legs"][1]["axes"][0] = Value::from("up")
+    });
+    let o = kinsyn(&["analyze", p.to_str().unwrap()]);
+    assert_input_error(&o, "axis 'up'", &["legs[1].axes[0]"]);
+    // build names its own options, not fields of a file the user never wrote.
+    assert_input_error(
+        &kinsyn(&[
+            "build",
+            "--chain",
+            "UPS",
+            "--actuated",
+            "3",
+            "--axes",
+            "xxzxyz",
+        ]),
+        "U with parallel axes",
+        &["--axes 'xxzxyz'", "the U at joints 1–2"],
+    );
+    assert_input_error(
+        &kinsyn(&["build", "--chain", "UPS", "--actuated", "9"]),
+        "--actuated 9",
+        &["--actuated: 9"],
+    );
+    assert_input_error(
+        &kinsyn(&["build", "--chain", "U(!,-)P!S", "--actuated", "2"]),
+        "marks disagree",
+        &["disagrees with the '!' marks"],
+    );
+    assert_input_error(
+        &kinsyn(&[
+            "build",
+            "--chain",
+            "UPS",
+            "--actuated",
+            "3",
+            "--height",
+            "-1",
+        ]),
+        "height",
+        &["--height -1"],
+    );
+    // A platform turned by exactly half a turn about z prints that rotation, and a platform
+    // below the base (legs of negative length are still a pose of the sliders) prints no NaN.
+    let o = kinsyn(&[
+        "analyze",
+        "mechanisms/3-rps.json",
+        "--pose",
+        "0,0,1,0,0,180",
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(
+        stdout(&o).contains("rotation vector [0.000000, 0.000000, -3.141593]")
+            || stdout(&o).contains("rotation vector [0.000000, 0.000000, 3.141593]"),
+        "{}",
+        stdout(&o)
+    );
+    let o = kinsyn(&[
+        "analyze",
+        "mechanisms/3-rps.json",
+        "--pose",
+        "0,0,-1,0,0,0",
+        "--json",
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let v: Value = serde_json::from_str(&stdout(&o)).unwrap();
+    let rv = v["platform_rotation_vector_rad"].as_array().unwrap();
+    assert!(
+        rv.iter()
+            .all(|x| x.as_f64().is_some_and(|x| x.abs() < 1e-12)),
+        "{rv:?}"
+    );
+}
