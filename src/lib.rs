@@ -4,7 +4,11 @@
 //! in paper 000's letters with their parallel-axis marks; [`synthesis`] enumerates the 6-dof
 //! P/R chains of paper 000 §2 with their provenance; [`paper`] holds the printed Appendix and
 //! compares it row by row with the enumeration; [`catalogue`] deduplicates the candidates into
-//! catalogue entries and writes the `catalogue/` files.
+//! catalogue entries and writes the `catalogue/` files; [`screw`], [`chain`], [`motion`] and
+//! [`verification`] check each entry numerically. [`mechanism`] holds general body–joint graphs
+//! (loops, mobility, assembly, finite motion) and [`manipulator`] builds parallel manipulators on
+//! them from description files: Jacobians in the form of paper 000 §4–5, singularities, and the
+//! motion patterns reached by locking inputs.
 #![deny(missing_docs)]
 
 pub mod catalogue;

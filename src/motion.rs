@@ -1,4 +1,4 @@
-//! Motion patterns: the 12 displacement subgroups of Hervé (paper 000 §1, ref. [16]) and the
+//! Motion patterns: the 12 displacement subgroups of Hervé (paper 000 §1, ref. 16) and the
 //! non-group patterns `nTmR`, and the classification of a finite motion from its twist spaces.
 //!
 //! A motion is of group type when its spatial twist space (twists referred to the base origin)

@@ -144,6 +144,15 @@ fn dimensionless(t: &DMatrix<f64>, scale: f64) -> DMatrix<f64> {
     out
 }
 
+/// `Δ T`: the twists with their angular and linear halves swapped, so that a wrench `w` acts on
+/// them by the plain product `wᵀ (Δ T)`.
+fn swap_blocks(t: &DMatrix<f64>) -> DMatrix<f64> {
+    let mut out = t.clone();
+    out.rows_mut(0, 3).copy_from(&t.rows(3, 3));
+    out.rows_mut(3, 3).copy_from(&t.rows(0, 3));
+    out
+}
+
 /// The representative of the wrench system `b` (columns) modulo the system `s` (a subspace of
 /// it) with the force part orthogonal to the forces of `s` (or the whole wrench orthogonal when
 /// the forces of `s` are dependent); `None` when `b` adds nothing to `s`.
@@ -198,16 +207,35 @@ impl Manipulator {
             let joints: Vec<usize> = leg.joints.clone().collect();
             let t = DMatrix::from_fn(6, joints.len(), |r, c| screws[joints[c]].to_vector()[r]);
             let t = dimensionless(&t, s);
-            let structural = screw::reciprocal_complement(&t, DEFAULT_RANK_TOLERANCE);
+            // A leg of six independent joints: the wrenches of all its joints at once, the rows
+            // of (Δ T)⁻¹ (w_j · $_k = δ_jk). Otherwise reciprocal complements, joint by joint.
+            let dual = (t.ncols() == 6
+                && screw::rank6(
+                    &nalgebra::Matrix6xX::from_column_slice(t.as_slice()),
+                    DEFAULT_RANK_TOLERANCE,
+                ) == 6)
+                .then(|| swap_blocks(&t).try_inverse())
+                .flatten();
+            let structural = if dual.is_some() {
+                DMatrix::zeros(6, 0)
+            } else {
+                screw::reciprocal_complement(&t, DEFAULT_RANK_TOLERANCE)
+            };
             for (a, act) in self
                 .actuators
                 .iter()
                 .enumerate()
                 .filter(|(_, a)| a.leg == i)
             {
-                let others = t.clone().remove_column(act.position);
-                let b = screw::reciprocal_complement(&others, DEFAULT_RANK_TOLERANCE);
-                let Some(w) = modulo(&b, &structural) else {
+                let wrench = match &dual {
+                    Some(inverse) => Some(inverse.row(act.position).transpose()),
+                    None => {
+                        let others = t.clone().remove_column(act.position);
+                        let b = screw::reciprocal_complement(&others, DEFAULT_RANK_TOLERANCE);
+                        modulo(&b, &structural)
+                    }
+                };
+                let Some(w) = wrench else {
                     without_wrench.push(a);
                     continue;
                 };

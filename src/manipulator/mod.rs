@@ -20,7 +20,7 @@ mod jacobian;
 mod modes;
 
 pub use jacobian::{Analysis, Jacobians, RowKind, Singularity, SingularityKind, WrenchRow};
-pub use modes::{Mode, Modes, PatternModes};
+pub use modes::{MAX_INPUTS, Mode, Modes, PatternModes};
 
 use crate::catalogue::Catalogue;
 use crate::chain::Displacement;
