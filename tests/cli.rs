@@ -1,21 +1,8 @@
 //! The `kinsyn` command line: output, exit codes and one-line errors.
 
-use std::process::{Command, Output};
+mod common;
 
-fn kinsyn(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_kinsyn"))
-        .args(args)
-        .output()
-        .expect("run kinsyn")
-}
-
-fn stdout(o: &Output) -> String {
-    String::from_utf8(o.stdout.clone()).unwrap()
-}
-
-fn stderr(o: &Output) -> String {
-    String::from_utf8(o.stderr.clone()).unwrap()
-}
+use common::{kinsyn, stderr, stdout};
 
 #[test]
 fn summary_reports_table_1_at_63() {

@@ -4,22 +4,16 @@
 
 use serde_json::Value;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+mod common;
 
-fn kinsyn(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_kinsyn"))
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .args(args)
-        .output()
-        .expect("run kinsyn")
-}
+use common::{kinsyn, stderr, stdout};
+use std::process::Output;
 
-fn stdout(o: &Output) -> String {
-    String::from_utf8(o.stdout.clone()).unwrap()
-}
-
-fn stderr(o: &Output) -> String {
-    String::from_utf8(o.stderr.clone()).unwrap()
+/// Runs kinsyn, asserts success and returns its standard output.
+fn succeed(args: &[&str]) -> String {
+    let o = kinsyn(args);
+    assert_eq!(o.status.code(), Some(0), "kinsyn {args:?}: {}", stderr(&o));
+    stdout(&o)
 }
 
 /// The committed 3-UPS description as a JSON value, to be broken one field at a time.
@@ -57,9 +51,7 @@ fn assert_input_error(o: &Output, what: &str, needles: &[&str]) {
 
 #[test]
 fn modes_of_the_three_ups_list_64_subsets_and_the_three_rps() {
-    let o = kinsyn(&["modes", "mechanisms/3-ups.json"]);
-    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
-    let out = stdout(&o);
+    let out = succeed(&["modes", "mechanisms/3-ups.json"]);
     assert!(
         out.starts_with("3-UPS: 6 inputs (R1.1 P1.3 R2.1 P2.3 R3.1 P3.3), 64 lock subsets;"),
         "{out}"
@@ -122,9 +114,7 @@ fn modes_json_has_64_modes() {
 
 #[test]
 fn analyze_the_three_rps_has_mobility_3() {
-    let o = kinsyn(&["analyze", "mechanisms/3-rps.json"]);
-    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
-    let out = stdout(&o);
+    let out = succeed(&["analyze", "mechanisms/3-rps.json"]);
     assert!(
         out.starts_with("3-RPS: P = [0.000000, 0.000000, 1.000000] m;"),
         "{out}"
@@ -159,14 +149,12 @@ fn analyze_the_three_rps_has_mobility_3() {
 #[test]
 fn analyze_at_a_pose_and_with_locks() {
     // Locking every α of the 3-UPS leaves three dof, as the 3-RPS (paper 000 §5.2).
-    let o = kinsyn(&[
+    let out = succeed(&[
         "analyze",
         "mechanisms/3-ups.json",
         "--lock",
         "R1.1,R2.1,R3.1",
     ]);
-    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
-    let out = stdout(&o);
     assert!(out.contains("locked: R1.1 R2.1 R3.1"), "{out}");
     assert!(out.contains("mobility 3 (loop closure)"), "{out}");
     assert_eq!(
@@ -176,15 +164,14 @@ fn analyze_at_a_pose_and_with_locks() {
         3
     );
     // A displaced pose of the 6-UPS: the platform frame (= P here) goes where asked.
-    let o = kinsyn(&[
+    let v: Value = serde_json::from_str(&succeed(&[
         "analyze",
         "mechanisms/6-ups.json",
         "--pose",
         "0.1,0.05,1.1,5,-3,10",
         "--json",
-    ]);
-    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
-    let v: Value = serde_json::from_str(&stdout(&o)).unwrap();
+    ]))
+    .unwrap();
     let p: Vec<f64> = v["point"]
         .as_array()
         .unwrap()
@@ -206,9 +193,7 @@ fn analyze_at_a_pose_and_with_locks() {
     assert_eq!(v["mobility"], 6);
     // The 3-RPS's one translation is along z: raising the platform to z = 5 without tilt only
     // lengthens the legs (the sliders have no stroke limit), so that pose does assemble.
-    let o = kinsyn(&["analyze", "mechanisms/3-rps.json", "--pose", "0,0,5,0,0,0"]);
-    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
-    let out = stdout(&o);
+    let out = succeed(&["analyze", "mechanisms/3-rps.json", "--pose", "0,0,5,0,0,0"]);
     assert!(out.contains(", 5.000000] m;"), "{out}");
     assert!(out.contains("mobility 3 (loop closure)"), "{out}");
 }
@@ -395,9 +380,7 @@ fn build_writes_a_file_that_modes_and_analyze_read() {
         stdout(&o)
     );
     // Without -o the description goes to stdout.
-    let o = kinsyn(&["build", "--chain", "U(!,-)P!S"]);
-    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
-    let v: Value = serde_json::from_str(&stdout(&o)).unwrap();
+    let v: Value = serde_json::from_str(&succeed(&["build", "--chain", "U(!,-)P!S"])).unwrap();
     assert_eq!(v["name"], "3-UPS");
 }
 
@@ -479,15 +462,14 @@ fn review_findings_stay_fixed() {
         "{}",
         stdout(&o)
     );
-    let o = kinsyn(&[
+    let v: Value = serde_json::from_str(&succeed(&[
         "analyze",
         "mechanisms/3-rps.json",
         "--pose",
         "0,0,-1,0,0,0",
         "--json",
-    ]);
-    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
-    let v: Value = serde_json::from_str(&stdout(&o)).unwrap();
+    ]))
+    .unwrap();
     let rv = v["platform_rotation_vector_rad"].as_array().unwrap();
     assert!(
         rv.iter()

@@ -119,41 +119,65 @@ enum Command {
         after_help = "Examples:\n  kinsyn build --legs 3 --chain 'U(!,-)P!S' --name 3-UPS\n  kinsyn build --legs 3 --chain RP!S --axes yzxyz --name 3-RPS\n  kinsyn build --legs 6 --chain T4-034 --actuated 3 --twist 20 --alternate"
     )]
     Build {
-        /// Number of legs, 3 to 6.
-        #[arg(long, default_value_t = 3)]
-        legs: usize,
-        /// The leg: a catalogue id (T4-034) or a chain in notation, '!' marking inputs.
-        #[arg(long)]
-        chain: String,
-        /// Axis letters x, y, z per primitive joint in the leg frame (default: the catalogue's).
-        #[arg(long)]
-        axes: Option<String>,
-        /// Actuated primitive joints, 1-based, comma separated (instead of '!' marks).
-        #[arg(long, value_delimiter = ',')]
-        actuated: Option<Vec<usize>>,
-        /// Radius of the base circle.
-        #[arg(long, default_value_t = 1.0, allow_hyphen_values = true)]
-        base_radius: f64,
-        /// Radius of the platform circle.
-        #[arg(long, default_value_t = 0.5, allow_hyphen_values = true)]
-        platform_radius: f64,
-        /// Height of the platform above the base.
-        #[arg(long, default_value_t = 1.0, allow_hyphen_values = true)]
-        height: f64,
-        /// Degrees each platform point is turned from its leg's base point about the vertical.
-        #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
-        twist: f64,
-        /// Turn legs 2, 4, 6 the other way: pairs the platform points of a six-legged
-        /// Gough–Stewart platform (the regular-hexagon form is singular everywhere).
-        #[arg(long)]
-        alternate: bool,
-        /// The manipulator's name (default n-LETTERS).
-        #[arg(long)]
-        name: Option<String>,
+        #[command(flatten)]
+        spec: BuildArgs,
         /// Write to this file instead of standard output.
         #[arg(long, short)]
         output: Option<PathBuf>,
     },
+}
+
+/// The geometry and legs of `kinsyn build` (docs/mechanism-format.md).
+#[derive(Debug, Args)]
+struct BuildArgs {
+    /// Number of legs, 3 to 6.
+    #[arg(long, default_value_t = 3)]
+    legs: usize,
+    /// The leg: a catalogue id (T4-034) or a chain in notation, '!' marking inputs.
+    #[arg(long)]
+    chain: String,
+    /// Axis letters x, y, z per primitive joint in the leg frame (default: the catalogue's).
+    #[arg(long)]
+    axes: Option<String>,
+    /// Actuated primitive joints, 1-based, comma separated (instead of '!' marks).
+    #[arg(long, value_delimiter = ',')]
+    actuated: Option<Vec<usize>>,
+    /// Radius of the base circle.
+    #[arg(long, default_value_t = 1.0, allow_hyphen_values = true)]
+    base_radius: f64,
+    /// Radius of the platform circle.
+    #[arg(long, default_value_t = 0.5, allow_hyphen_values = true)]
+    platform_radius: f64,
+    /// Height of the platform above the base.
+    #[arg(long, default_value_t = 1.0, allow_hyphen_values = true)]
+    height: f64,
+    /// Degrees each platform point is turned from its leg's base point about the vertical.
+    #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
+    twist: f64,
+    /// Turn legs 2, 4, 6 the other way: pairs the platform points of a six-legged
+    /// Gough–Stewart platform (the regular-hexagon form is singular everywhere).
+    #[arg(long)]
+    alternate: bool,
+    /// The manipulator's name (default n-LETTERS).
+    #[arg(long)]
+    name: Option<String>,
+}
+
+impl From<BuildArgs> for kinsyn::manipulator::build::BuildSpec {
+    fn from(a: BuildArgs) -> Self {
+        kinsyn::manipulator::build::BuildSpec {
+            legs: a.legs,
+            chain: a.chain,
+            axes: a.axes,
+            actuated: a.actuated,
+            base_radius: a.base_radius,
+            platform_radius: a.platform_radius,
+            height: a.height,
+            twist: a.twist,
+            alternate: a.alternate,
+            name: a.name,
+        }
+    }
 }
 
 /// How finite motion is sampled (seeded, reproducible).
@@ -352,33 +376,9 @@ fn execute(command: Command) -> Result<String, CliError> {
             &sampling.settings(),
             as_json,
         ),
-        Command::Build {
-            legs,
-            chain,
-            axes,
-            actuated,
-            base_radius,
-            platform_radius,
-            height,
-            twist,
-            alternate,
-            name,
-            output,
-        } => manipulator::build_command(
-            &kinsyn::manipulator::build::BuildSpec {
-                legs,
-                chain,
-                axes,
-                actuated,
-                base_radius,
-                platform_radius,
-                height,
-                twist,
-                alternate,
-                name,
-            },
-            output.as_deref(),
-        ),
+        Command::Build { spec, output } => {
+            manipulator::build_command(&spec.into(), output.as_deref())
+        }
     }
 }
 

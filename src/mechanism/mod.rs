@@ -333,6 +333,17 @@ impl Mechanism {
         self.scale
     }
 
+    /// The size of one dimensionless unit of joint `j`'s value: the length scale for a
+    /// prismatic joint, one radian for a revolute.
+    #[must_use]
+    pub fn unit(&self, j: usize) -> f64 {
+        if self.joints[j].kind == Primitive::P {
+            self.scale
+        } else {
+            1.0
+        }
+    }
+
     /// The displacement of every body from its reference pose at joint values `q`.
     ///
     /// # Panics
@@ -428,10 +439,8 @@ impl Mechanism {
                 out.row_mut(r).scale_mut(1.0 / self.scale);
             }
         }
-        for (c, j) in self.joints.iter().enumerate() {
-            if j.kind == Primitive::P && c < out.ncols() {
-                out.column_mut(c).scale_mut(self.scale);
-            }
+        for c in 0..out.ncols().min(self.joints.len()) {
+            out.column_mut(c).scale_mut(self.unit(c));
         }
         out
     }
@@ -469,9 +478,7 @@ impl Mechanism {
         };
         // Back to physical rates: prismatic rates in length units.
         for (k, &j) in free.iter().enumerate() {
-            if self.joints[j].kind == Primitive::P {
-                basis.row_mut(k).scale_mut(self.scale);
-            }
+            basis.row_mut(k).scale_mut(self.unit(j));
         }
         Mobility {
             dof: basis.ncols(),
@@ -553,12 +560,7 @@ impl Mechanism {
             let largest = step.amax();
             let damping = if largest > 0.5 { 0.5 / largest } else { 1.0 };
             for (k, &j) in free.iter().enumerate() {
-                let unit = if self.joints[j].kind == Primitive::P {
-                    self.scale
-                } else {
-                    1.0
-                };
-                q[j] += damping * step[k] * unit;
+                q[j] += damping * step[k] * self.unit(j);
             }
             if !q.iter().all(|x| x.is_finite()) {
                 return Err(MechanismError::NotAssembled {

@@ -9,7 +9,6 @@
 
 use super::{Mechanism, MechanismError};
 use crate::motion::{self, Classification, Pattern};
-use crate::notation::Primitive;
 use nalgebra::DMatrix;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -81,9 +80,7 @@ impl Mechanism {
                 // The direction in dimensionless joint units, normalised.
                 let mut direction = &m.rates * coefficients;
                 for (k, &j) in free.iter().enumerate() {
-                    if self.joints[j].kind == Primitive::P {
-                        direction[k] /= self.scale;
-                    }
+                    direction[k] /= self.unit(j);
                 }
                 let norm = direction.norm();
                 if norm < 1e-15 {
@@ -95,12 +92,7 @@ impl Mechanism {
                 for _ in 0..5 {
                     let mut trial = q.clone();
                     for (k, &j) in free.iter().enumerate() {
-                        let unit = if self.joints[j].kind == Primitive::P {
-                            self.scale
-                        } else {
-                            1.0
-                        };
-                        trial[j] += h * direction[k] * unit;
+                        trial[j] += h * direction[k] * self.unit(j);
                     }
                     if let Ok(closed) = self.assemble(&trial, locked, None) {
                         moved = Some(closed);

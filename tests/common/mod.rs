@@ -1,4 +1,5 @@
-//! Helpers shared by the integration tests: an independent Jacobian by finite differences.
+//! Helpers shared by the integration tests: an independent Jacobian by finite differences, and
+//! running the `kinsyn` binary.
 
 use kinsyn::chain::SerialChain;
 use kinsyn::screw::Twist;
@@ -35,4 +36,28 @@ pub fn finite_difference_jacobian(c: &SerialChain, q: &[f64], h: f64) -> DMatrix
             .copy_from_slice(finite_difference_column(c, q, i, h).to_vector().as_slice());
     }
     j
+}
+
+/// Runs the `kinsyn` binary from the package root.
+#[allow(dead_code)]
+pub fn kinsyn(args: &[&str]) -> std::process::Output {
+    std::process::Command::new(env!("CARGO_BIN_EXE_kinsyn"))
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .args(args)
+        .output()
+        .expect("run kinsyn")
+}
+
+/// The standard output of a run, as text.
+#[allow(dead_code)]
+#[must_use]
+pub fn stdout(o: &std::process::Output) -> String {
+    String::from_utf8(o.stdout.clone()).unwrap()
+}
+
+/// The standard error of a run, as text.
+#[allow(dead_code)]
+#[must_use]
+pub fn stderr(o: &std::process::Output) -> String {
+    String::from_utf8(o.stderr.clone()).unwrap()
 }
