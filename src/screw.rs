@@ -293,7 +293,8 @@ pub struct Svd {
 /// reconstruct the matrix (seen on chain Jacobians with two equal columns, error 2e-2). The
 /// result is accepted only when `‖U Σ Vᵀ − m‖ ≤ 1e-12 ‖m‖` and the singular vectors are
 /// orthonormal to 1e-12; otherwise the SVD of the matrix with
-/// its columns reversed is tried, and last a one-sided Jacobi SVD.
+/// its columns reversed is tried, and last a one-sided Jacobi SVD. A matrix with a non-finite
+/// entry goes straight to the Jacobi SVD (nalgebra's does not terminate on it).
 #[must_use]
 pub fn svd(m: &DMatrix<f64>) -> Svd {
     let (rows, cols) = m.shape();
@@ -308,6 +309,10 @@ pub fn svd(m: &DMatrix<f64>) -> Svd {
     let mut a = DMatrix::zeros(rows.max(cols), cols);
     a.view_mut((0, 0), (rows, cols)).copy_from(m);
     let scale = a.norm();
+    if !scale.is_finite() {
+        // nalgebra's SVD does not return on non-finite input; the Jacobi sweeps are bounded.
+        return jacobi_svd(&a);
+    }
     let reconstructs = |d: &Svd| {
         let mut sigma_vt = d.v.transpose();
         for (k, s) in d.singular_values.iter().enumerate() {

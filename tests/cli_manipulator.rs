@@ -410,6 +410,15 @@ fn review_findings_stay_fixed() {
     });
     let o = kinsyn(&["analyze", p.to_str().unwrap()]);
     assert_input_error(&o, "axis 'up'", &["legs[1].axes[0]"]);
+    // Coordinates so large that products of lengths overflow are refused, not computed with.
+    let p = broken(&dir, "huge.json", |v| {
+        v["legs"][0]["base"] = serde_json::json!([1e300, 0.0, 0.0])
+    });
+    assert_input_error(
+        &kinsyn(&["modes", p.to_str().unwrap()]),
+        "1e300",
+        &["legs[0].base", "beyond"],
+    );
     // build names its own options, not fields of a file the user never wrote.
     assert_input_error(
         &kinsyn(&[

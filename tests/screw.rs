@@ -169,3 +169,15 @@ mod checked_svd {
         }
     }
 }
+
+#[test]
+fn an_svd_of_a_non_finite_matrix_returns() {
+    // Found by probing: nalgebra's SVD does not terminate on a matrix with an infinite entry
+    // (a description with coordinates near 1e300 overflowed to one). The checked SVD must
+    // return, with non-finite values that no rank decision will trust.
+    let mut m = nalgebra::DMatrix::<f64>::identity(6, 6);
+    m[(2, 3)] = f64::INFINITY;
+    m[(4, 1)] = f64::NAN;
+    let d = kinsyn::screw::svd(&m);
+    assert_eq!(d.singular_values.len(), 6);
+}

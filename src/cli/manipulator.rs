@@ -82,7 +82,11 @@ pub fn modes(path: &Path, settings: &SampleSettings, as_json: bool) -> Result<St
         "\nmultioperation capacity: {} displacement subgroups reached, of {} of the 12 kinds ({}):",
         modes.groups.len(),
         modes.group_kinds.len(),
-        modes.group_kinds.join(" ")
+        if modes.group_kinds.is_empty() {
+            "none".to_string()
+        } else {
+            modes.group_kinds.join(" ")
+        }
     );
     for g in &modes.groups {
         let _ = writeln!(s, "  {:<8} lock {}", g.pattern, g.lock_sets.join(" | "));

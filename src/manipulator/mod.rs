@@ -443,11 +443,19 @@ impl Manipulator {
     }
 }
 
+/// The largest coordinate magnitude accepted: products of lengths must stay far from overflow.
+const LARGEST_COORDINATE: f64 = 1e15;
+
 fn finite(p: &[f64; 3], field: &str) -> Result<(), DescriptionError> {
-    if p.iter().all(|x| x.is_finite()) {
-        Ok(())
-    } else {
+    if !p.iter().all(|x| x.is_finite()) {
         Err(DescriptionError::new(field, "not a finite point"))
+    } else if p.iter().any(|x| x.abs() > LARGEST_COORDINATE) {
+        Err(DescriptionError::new(
+            field,
+            format!("a coordinate beyond ±{LARGEST_COORDINATE:e}: choose a larger length unit"),
+        ))
+    } else {
+        Ok(())
     }
 }
 
