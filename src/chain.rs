@@ -91,7 +91,9 @@ pub struct SerialChain {
 /// A rigid displacement `(R, p)`: rotation, then translation.
 pub type Displacement = (Rotation3<f64>, Vector3<f64>);
 
-fn compose(a: &Displacement, b: &Displacement) -> Displacement {
+/// `a` then `b`: the displacement `a · b`.
+#[must_use]
+pub fn compose(a: &Displacement, b: &Displacement) -> Displacement {
     (a.0 * b.0, a.0 * b.1 + a.1)
 }
 

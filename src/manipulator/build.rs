@@ -212,63 +212,27 @@ pub fn build(spec: &BuildSpec) -> Result<Description, String> {
             "--axes '{axes}': one letter x, y or z per primitive joint of {chain} ({primitives})"
         ));
     }
-    let marked: Vec<usize> = chain
-        .primitives()
-        .enumerate()
-        .filter(|(_, (_, m))| m.actuated)
-        .map(|(k, _)| k + 1)
+    // Each C, U and S must get directions that keep it that joint (paper 000 §2); the letters
+    // are checked as the unit vectors they stand for.
+    let letter_vectors: Vec<Vector3<f64>> = axes
+        .bytes()
+        .map(|b| Vector3::ith(usize::from(b - b'x'), 1.0))
         .collect();
-    // Each C, U and S must get directions that keep it that joint (paper 000 §2).
-    let mut at = 0;
-    for joint in chain.joints() {
-        let n = joint.kind.primitives().len();
-        let word = &axes[at..at + n];
-        let distinct = word
-            .bytes()
-            .collect::<std::collections::BTreeSet<u8>>()
-            .len();
-        let fits = match joint.kind {
-            crate::notation::JointKind::C => distinct == 1,
-            crate::notation::JointKind::U | crate::notation::JointKind::S => distinct == n,
-            _ => true,
-        };
-        if !fits {
-            return Err(format!(
-                "--axes '{axes}': the {} at joints {}–{} needs {}, not '{word}'",
-                joint.kind.letter(),
-                at + 1,
-                at + n,
-                if joint.kind == crate::notation::JointKind::C {
-                    "its slider and revolute along one direction"
-                } else {
-                    "a different direction for each of its revolutes"
-                }
-            ));
-        }
-        at += n;
-    }
-    let actuated = match &spec.actuated {
-        Some(list) => {
-            let mut sorted = list.clone();
-            sorted.sort_unstable();
-            sorted.dedup();
-            if sorted.len() != list.len() {
-                return Err(format!("--actuated {list:?}: a joint named twice"));
-            }
-            if let Some(bad) = sorted.iter().find(|&&p| p == 0 || p > primitives) {
-                return Err(format!(
-                    "--actuated: {bad} is not a joint of {chain} (joints 1 to {primitives})"
-                ));
-            }
-            if !marked.is_empty() && marked != sorted {
-                return Err(format!(
-                    "--actuated {sorted:?} disagrees with the '!' marks of {chain} (joints {marked:?}); give one or the other"
-                ));
-            }
-            sorted
-        }
-        None => marked,
-    };
+    super::check_joint_axes(&chain, &letter_vectors).map_err(|f| {
+        format!(
+            "--axes '{axes}': the {} at joints {}–{} ('{}'): {}",
+            f.letter,
+            f.primitives.start + 1,
+            f.primitives.end,
+            &axes[f.primitives.clone()],
+            f.why
+        )
+    })?;
+    let actuated: Vec<usize> = super::actuated_positions(&chain, spec.actuated.as_deref())
+        .map_err(|m| format!("--actuated: {m}"))?
+        .into_iter()
+        .map(|p| p + 1)
+        .collect();
     if actuated.is_empty() {
         return Err(format!(
             "no actuated joint: mark them with '!' in the chain or give --actuated (1 to {primitives})"

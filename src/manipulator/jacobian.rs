@@ -22,7 +22,7 @@
 
 use super::Manipulator;
 use crate::mechanism::SampleSettings;
-use crate::screw::{self, DEFAULT_RANK_TOLERANCE, Twist};
+use crate::screw::{self, DEFAULT_RANK_TOLERANCE, Wrench};
 use nalgebra::{DMatrix, Vector3};
 use serde::Serialize;
 
@@ -240,8 +240,7 @@ impl Manipulator {
                     continue;
                 };
                 let (mut row, f, mo) = physical(&w);
-                let joint: &Twist = &screws[act.joint];
-                let mut input = f.dot(&joint.v) + mo.dot(&joint.w);
+                let mut input = screw::reciprocal_product(&Wrench { f, m: mo }, &screws[act.joint]);
                 if input < 0.0 {
                     row = row.map(|x| -x);
                     input = -input;

@@ -95,9 +95,10 @@ pub struct Manipulator {
     frame: Displacement,
 }
 
-/// Angle between two unit vectors below which they count as parallel, and above which as
-/// crossing, in the geometric checks of a description.
-const PARALLEL: f64 = 1e-9;
+/// The tolerance of the joint-axis checks on unit axes: a C's axes are parallel when
+/// `|a₁ × a₂|` is below it, a U's are not when above, an S's are independent when
+/// `|(a₁ × a₂)·a₃|` is above it.
+const AXIS_TOLERANCE: f64 = 1e-6;
 
 impl Manipulator {
     /// Reads and builds a manipulator from the JSON text of a description file.
@@ -225,51 +226,9 @@ impl Manipulator {
                 }
             };
             check_joint_axes(&chain, &axes)
-                .map_err(|(k, m)| DescriptionError::new(field(&format!("axes[{k}]")), m))?;
-            // Actuation: '!' marks or the `actuated` list.
-            let marked: Vec<usize> = chain
-                .primitives()
-                .enumerate()
-                .filter(|(_, (_, m))| m.actuated)
-                .map(|(k, _)| k)
-                .collect();
-            let actuated: Vec<usize> = match &spec.actuated {
-                None => marked,
-                Some(list) => {
-                    let mut positions = Vec::new();
-                    for &p in list {
-                        if p == 0 || p > kinds.len() {
-                            return Err(DescriptionError::new(
-                                field("actuated"),
-                                format!(
-                                    "{p} is not a joint of {chain} (joints 1 to {})",
-                                    kinds.len()
-                                ),
-                            )
-                            .into());
-                        }
-                        if positions.contains(&(p - 1)) {
-                            return Err(DescriptionError::new(
-                                field("actuated"),
-                                format!("joint {p} named twice"),
-                            )
-                            .into());
-                        }
-                        positions.push(p - 1);
-                    }
-                    positions.sort_unstable();
-                    if !marked.is_empty() && marked != positions {
-                        return Err(DescriptionError::new(
-                            field("actuated"),
-                            format!(
-                                "disagrees with the '!' marks of {chain}; give one or the other"
-                            ),
-                        )
-                        .into());
-                    }
-                    positions
-                }
-            };
+                .map_err(|f| DescriptionError::new(field(&format!("axes[{}]", f.at)), f.why))?;
+            let actuated = actuated_positions(&chain, spec.actuated.as_deref())
+                .map_err(|m| DescriptionError::new(field("actuated"), m))?;
             // Joints: ground → link 1 → ... → platform.
             let first = joints.len();
             let mut previous = 0;
@@ -513,28 +472,84 @@ fn axis_vector(a: &AxisSpec, along: &Vector3<f64>) -> Result<Vector3<f64>, Strin
     Ok(v / n)
 }
 
+/// The actuated primitive joints of a leg (0-based, sorted): the `list` of 1-based positions
+/// when given, else the chain's `!` marks. A list and marks must agree.
+///
+/// # Errors
+/// A position outside the chain, a position named twice, or a list that contradicts the marks.
+pub(crate) fn actuated_positions(
+    chain: &Chain,
+    list: Option<&[usize]>,
+) -> Result<Vec<usize>, String> {
+    let marked: Vec<usize> = chain
+        .primitives()
+        .enumerate()
+        .filter(|(_, (_, m))| m.actuated)
+        .map(|(k, _)| k)
+        .collect();
+    let Some(list) = list else {
+        return Ok(marked);
+    };
+    let primitives = chain.primitives().count();
+    let mut positions = Vec::with_capacity(list.len());
+    for &p in list {
+        if p == 0 || p > primitives {
+            return Err(format!(
+                "{p} is not a joint of {chain} (joints 1 to {primitives})"
+            ));
+        }
+        if positions.contains(&(p - 1)) {
+            return Err(format!("joint {p} named twice"));
+        }
+        positions.push(p - 1);
+    }
+    positions.sort_unstable();
+    if !marked.is_empty() && marked != positions {
+        return Err(format!(
+            "disagrees with the '!' marks of {chain}; give one or the other"
+        ));
+    }
+    Ok(positions)
+}
+
+/// A joint letter whose axes break its definition.
+pub(crate) struct AxisFault {
+    /// C, U or S.
+    pub letter: char,
+    /// The letter's primitive joints (0-based positions in the leg).
+    pub primitives: Range<usize>,
+    /// The primitive at fault.
+    pub at: usize,
+    /// What the joint needs.
+    pub why: &'static str,
+}
+
 /// Checks that the axes of each C, U and S are what the joint means (paper 000 §2: a C's revolute
 /// is parallel to its slider; a U's two axes cross; an S's three axes are independent).
-/// Returns the index of the offending primitive and the reason.
-fn check_joint_axes(chain: &Chain, axes: &[Vector3<f64>]) -> Result<(), (usize, String)> {
+pub(crate) fn check_joint_axes(chain: &Chain, axes: &[Vector3<f64>]) -> Result<(), AxisFault> {
     let mut k = 0;
     for joint in chain.joints() {
         let n = joint.kind.primitives().len();
         let a = &axes[k..k + n];
-        match joint.kind {
-            JointKind::C if a[0].cross(&a[1]).norm() > PARALLEL.sqrt() => {
-                return Err((
-                    k + 1,
-                    "a C joint's revolute must be parallel to its slider".into(),
-                ));
+        let fault = match joint.kind {
+            JointKind::C if a[0].cross(&a[1]).norm() > AXIS_TOLERANCE => {
+                Some((k + 1, "a C joint's revolute must be parallel to its slider"))
             }
-            JointKind::U if a[0].cross(&a[1]).norm() < 1e-6 => {
-                return Err((k + 1, "a U joint's two axes must not be parallel".into()));
+            JointKind::U if a[0].cross(&a[1]).norm() < AXIS_TOLERANCE => {
+                Some((k + 1, "a U joint's two axes must not be parallel"))
             }
-            JointKind::S if a[0].cross(&a[1]).dot(&a[2]).abs() < 1e-6 => {
-                return Err((k + 2, "an S joint's three axes must be independent".into()));
+            JointKind::S if a[0].cross(&a[1]).dot(&a[2]).abs() < AXIS_TOLERANCE => {
+                Some((k + 2, "an S joint's three axes must be independent"))
             }
-            _ => {}
+            _ => None,
+        };
+        if let Some((at, why)) = fault {
+            return Err(AxisFault {
+                letter: joint.kind.letter(),
+                primitives: k..k + n,
+                at,
+                why,
+            });
         }
         k += n;
     }

@@ -49,10 +49,11 @@ mod motion;
 
 pub use motion::{MotionSample, SampleSettings};
 
-use crate::chain::Displacement;
+pub use crate::chain::compose;
+use crate::chain::{Displacement, JointAxis};
 use crate::notation::Primitive;
 use crate::screw::{self, Twist, transform_twist};
-use nalgebra::{DMatrix, DVector, Matrix3, Rotation3, Unit, Vector3};
+use nalgebra::{DMatrix, DVector, Matrix3, Rotation3, Vector3};
 use petgraph::graph::{NodeIndex, UnGraph};
 use petgraph::visit::{Bfs, EdgeRef};
 
@@ -94,23 +95,24 @@ impl JointSpec {
         }
     }
 
-    /// The unit screw at the reference configuration.
+    /// The joint's axis as a serial-chain joint, whose screw and displacement are the joint's.
     #[must_use]
-    pub fn screw(&self) -> Twist {
-        match self.kind {
-            Primitive::R => Twist::revolute(self.axis, self.point),
-            Primitive::P => Twist::prismatic(self.axis),
+    pub fn primitive(&self) -> JointAxis {
+        JointAxis {
+            kind: self.kind,
+            axis: self.axis,
+            point: self.point,
         }
     }
 
+    /// The unit screw at the reference configuration.
+    #[must_use]
+    pub fn screw(&self) -> Twist {
+        self.primitive().screw()
+    }
+
     fn displacement(&self, q: f64) -> Displacement {
-        match self.kind {
-            Primitive::P => (Rotation3::identity(), self.axis * q),
-            Primitive::R => {
-                let r = Rotation3::from_axis_angle(&Unit::new_unchecked(self.axis), q);
-                (r, self.point - r * self.point)
-            }
-        }
+        self.primitive().displacement(q)
     }
 }
 
@@ -366,7 +368,11 @@ impl Mechanism {
     /// carried by the displacement of the body it is fixed to.
     #[must_use]
     pub fn joint_screws(&self, q: &[f64]) -> Vec<Twist> {
-        let poses = self.poses(q);
+        self.screws_at(&self.poses(q))
+    }
+
+    /// The current joint screws from the bodies' displacements.
+    fn screws_at(&self, poses: &[Displacement]) -> Vec<Twist> {
         self.joints
             .iter()
             .map(|j| {
@@ -417,7 +423,11 @@ impl Mechanism {
     /// of `D = g_a exp(ξ q) g_b⁻¹` (6 entries per loop). Zero when assembled.
     #[must_use]
     pub fn closure_residual(&self, q: &[f64]) -> DVector<f64> {
-        let poses = self.poses(q);
+        self.residual_at(q, &self.poses(q))
+    }
+
+    /// [`Mechanism::closure_residual`] with the bodies' displacements at `q` given.
+    fn residual_at(&self, q: &[f64], poses: &[Displacement]) -> DVector<f64> {
         let mut r = DVector::zeros(6 * self.chords.len());
         for (l, &chord) in self.chords.iter().enumerate() {
             let j = &self.joints[chord];
@@ -528,12 +538,13 @@ impl Mechanism {
         let tolerance = 1e-10;
         let mut residual = f64::INFINITY;
         for iteration in 0..60 {
-            let screws = self.joint_screws(&q);
+            let poses = self.poses(&q);
+            let screws = self.screws_at(&poses);
             // Equations: C Δ = ε (loops) and J_body Δ = −log(g g_target⁻¹) (target).
             let mut rows = self.closure_jacobian(&screws);
-            let mut rhs = self.closure_residual(&q);
+            let mut rhs = self.residual_at(&q, &poses);
             if let Some((body, goal)) = target {
-                let g = self.poses(&q)[body];
+                let g = poses[body];
                 let e = log(&compose(&g, &inverse(goal))).to_vector();
                 let jb = self.body_jacobian(body, &screws);
                 let n = rows.nrows();
@@ -611,12 +622,6 @@ fn length_scale(joints: &[JointSpec]) -> f64 {
     if r > 1e-12 { r } else { 1.0 }
 }
 
-/// `a` then `b`: the displacement `a · b`.
-#[must_use]
-pub fn compose(a: &Displacement, b: &Displacement) -> Displacement {
-    (a.0 * b.0, a.0 * b.1 + a.1)
-}
-
 /// The inverse displacement.
 #[must_use]
 pub fn inverse(g: &Displacement) -> Displacement {
@@ -632,13 +637,20 @@ pub fn log(g: &Displacement) -> Twist {
     if theta < 1e-12 {
         return Twist { w, v: g.1 };
     }
-    // p = V v with V = I + (1 − cos θ)/θ² [w] + (θ − sin θ)/θ³ [w]².
-    let k = screw::skew(&w);
-    let v_matrix = Matrix3::identity()
-        + k * ((1.0 - theta.cos()) / (theta * theta))
-        + k * k * ((theta - theta.sin()) / (theta * theta * theta));
-    let v = v_matrix.try_inverse().map_or(g.1, |inverse| inverse * g.1);
+    let v = translation_map(&w)
+        .try_inverse()
+        .map_or(g.1, |inverse| inverse * g.1);
     Twist { w, v }
+}
+
+/// The map `V` that gives the translation `p = V v` of `exp((ω; v))` for a rotation `ω` of
+/// angle θ > 0: `V = I + (1 − cos θ)/θ² [ω] + (θ − sin θ)/θ³ [ω]²`.
+fn translation_map(w: &Vector3<f64>) -> Matrix3<f64> {
+    let theta = w.norm();
+    let k = screw::skew(w);
+    Matrix3::identity()
+        + k * ((1.0 - theta.cos()) / (theta * theta))
+        + k * k * ((theta - theta.sin()) / (theta * theta * theta))
 }
 
 /// The rotation vector (axis × angle, angle in [0, π]) of a rotation, accurate for small angles:
@@ -684,9 +696,5 @@ pub fn exp(t: &Twist) -> Displacement {
     if theta < 1e-12 {
         return (r, t.v);
     }
-    let k = screw::skew(&t.w);
-    let v_matrix = Matrix3::identity()
-        + k * ((1.0 - theta.cos()) / (theta * theta))
-        + k * k * ((theta - theta.sin()) / (theta * theta * theta));
-    (r, v_matrix * t.v)
+    (r, translation_map(&t.w) * t.v)
 }

@@ -87,30 +87,24 @@ impl Mechanism {
                     break;
                 }
                 direction /= norm;
+                // The step, halved until the loops close again (five tries).
                 let mut h = settings.step;
-                let mut moved = None;
+                let mut attempt = Err(MechanismError::NotAssembled {
+                    residual: f64::NAN,
+                    iterations: 0,
+                });
                 for _ in 0..5 {
                     let mut trial = q.clone();
                     for (k, &j) in free.iter().enumerate() {
                         trial[j] += h * direction[k] * self.unit(j);
                     }
-                    if let Ok(closed) = self.assemble(&trial, locked, None) {
-                        moved = Some(closed);
+                    attempt = self.assemble(&trial, locked, None);
+                    if attempt.is_ok() {
                         break;
                     }
                     h /= 2.0;
                 }
-                q = match moved {
-                    Some(closed) => closed,
-                    None => {
-                        return Err(self.assemble(&q, locked, None).err().unwrap_or(
-                            MechanismError::NotAssembled {
-                                residual: f64::NAN,
-                                iterations: 0,
-                            },
-                        ));
-                    }
-                };
+                q = attempt?;
             }
             let (twists, _) = self.twist_space(body, &q, locked);
             samples.push(MotionSample {
