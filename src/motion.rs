@@ -390,6 +390,13 @@ impl PatternQuery {
 /// or that a pitch is zero.
 pub const SUBSPACE_TOLERANCE: f64 = 1e-7;
 
+/// The smallest distance between two sampled configurations (dimensionless: radians, lengths
+/// over the characteristic length) for their twist spaces to count as evidence: the twist
+/// spaces of a non-group motion at configurations this far apart differ by about this much,
+/// four orders of magnitude above [`SUBSPACE_TOLERANCE`]. A group is claimed only from at least
+/// two samples this far apart (`docs/verification.md`).
+pub const MIN_SEPARATION: f64 = 1e-3;
+
 /// The residual of `x` after projection onto the span of the orthonormal columns of `basis`.
 fn residual(basis: &DMatrix<f64>, x: &nalgebra::DVector<f64>) -> f64 {
     if basis.ncols() == 0 {
@@ -541,14 +548,19 @@ pub struct Classification {
     pub dof: usize,
     /// Whether the twist spaces agreed at every sample.
     pub same_span: bool,
+    /// The smallest distance between two samples (dimensionless), `None` with fewer than two.
+    pub min_separation: Option<f64>,
 }
 
 /// Classifies a motion from its twist spaces at several sampled configurations (the columns of
-/// each matrix span the spatial twists there). The motion is the group whose Lie algebra is the
-/// common span when all spans agree and the span is closed under the bracket; otherwise
-/// `nTmR` from the generic dimension and rotational rank.
+/// each matrix span the spatial twists there; any common reference point and length unit), at
+/// least `min_separation` apart (dimensionless). The motion is the group whose Lie algebra is the
+/// common span when all spans agree, the span is closed under the bracket, and the samples could
+/// have shown otherwise: a motion with degrees of freedom needs two samples at least
+/// [`MIN_SEPARATION`] apart. Otherwise it is `nTmR` from the generic dimension and rotational
+/// rank.
 #[must_use]
-pub fn classify(samples: &[DMatrix<f64>], tolerance: f64) -> Classification {
+pub fn classify(samples: &[DMatrix<f64>], min_separation: f64, tolerance: f64) -> Classification {
     let spans: Vec<(DMatrix<f64>, screw::Rank)> = samples
         .iter()
         .map(|m| screw::span_basis(m, screw::DEFAULT_RANK_TOLERANCE))
@@ -561,8 +573,11 @@ pub fn classify(samples: &[DMatrix<f64>], tolerance: f64) -> Classification {
         .collect();
     let same = spans.iter().all(|(_, r)| r.rank == dof)
         && generic.windows(2).all(|w| same_span(w[0], w[1], tolerance));
+    let min_separation = (samples.len() >= 2).then_some(min_separation);
+    let evidence = dof == 0 || min_separation.is_some_and(|d| d >= MIN_SEPARATION);
     if let Some(first) = generic.first()
         && same
+        && evidence
         && is_subalgebra(first, tolerance)
         && let Some(g) = classify_subalgebra(first, tolerance)
     {
@@ -570,6 +585,7 @@ pub fn classify(samples: &[DMatrix<f64>], tolerance: f64) -> Classification {
             pattern: Pattern::Group(g),
             dof,
             same_span: true,
+            min_separation,
         };
     }
     let rotations = generic
@@ -588,5 +604,6 @@ pub fn classify(samples: &[DMatrix<f64>], tolerance: f64) -> Classification {
         },
         dof,
         same_span: same,
+        min_separation,
     }
 }

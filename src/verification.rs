@@ -140,16 +140,53 @@ pub fn locked_motion(
             DMatrix::from_fn(6, free.len(), |r, c| j[(r, free[c])])
         })
         .collect();
-    motion::classify(&samples, settings.subspace_tolerance)
+    // The evidence is the smallest distance between two samples over the free joints (radians;
+    // the offsets are of unit size).
+    let mut separation = f64::INFINITY;
+    for (a, qa) in configurations.iter().enumerate() {
+        for qb in &configurations[a + 1..] {
+            let d = free
+                .iter()
+                .map(|&i| joint_distance(chain, i, qa[i], qb[i]).powi(2))
+                .sum::<f64>()
+                .sqrt();
+            separation = separation.min(d);
+        }
+    }
+    motion::classify(&samples, separation, settings.subspace_tolerance)
 }
 
-/// The sampled configurations [`verify`] uses for `seed`.
+/// How far apart two values of joint `i` are: radians for a revolute (the shorter way round),
+/// guide units for a prismatic joint.
+fn joint_distance(chain: &SerialChain, i: usize, a: f64, b: f64) -> f64 {
+    let d = (a - b).abs();
+    match chain.joints()[i].kind {
+        Primitive::R => d.min(std::f64::consts::TAU - d),
+        Primitive::P => d,
+    }
+}
+
+/// The smallest difference, joint by joint, between two sampled configurations: every joint of
+/// every pair differs by at least this much, so that whatever joints a lock set leaves free,
+/// the samples are distinct ([`crate::motion::MIN_SEPARATION`]).
+const SAMPLE_APART: f64 = 1e-2;
+
+/// The sampled configurations [`verify`] uses for `seed`: independent uniform draws, a draw
+/// taken again while one of its joint values is within `SAMPLE_APART` of an earlier sample's.
 #[must_use]
 pub fn configurations(chain: &SerialChain, settings: &Settings, seed: u64) -> Vec<Vec<f64>> {
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
-    (0..settings.samples.max(1))
-        .map(|_| random_configuration(chain, &mut rng))
-        .collect()
+    let mut out: Vec<Vec<f64>> = Vec::with_capacity(settings.samples.max(1));
+    while out.len() < settings.samples.max(1) {
+        let q = random_configuration(chain, &mut rng);
+        let apart = out.iter().all(|p| {
+            (0..chain.len()).all(|i| joint_distance(chain, i, p[i], q[i]) >= SAMPLE_APART)
+        });
+        if apart {
+            out.push(q);
+        }
+    }
+    out
 }
 
 /// Parses a lock set written as joint positions (`"45"`, `"1,4,5"`, `"-"` for none) for a chain

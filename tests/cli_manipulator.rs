@@ -121,7 +121,7 @@ fn analyze_the_three_rps_has_mobility_3() {
     );
     assert!(
         out.lines()
-            .any(|l| l.starts_with("mobility 3 (loop closure), platform dof 3")),
+            .any(|l| l.starts_with("mobility 3 (joint rates closing the loops), platform dof 3")),
         "{out}"
     );
     // Three actuation rows (the prismatic inputs, J_I entry 1 as in eq. 21) and three leg
@@ -156,7 +156,10 @@ fn analyze_at_a_pose_and_with_locks() {
         "R1.1,R2.1,R3.1",
     ]);
     assert!(out.contains("locked: R1.1 R2.1 R3.1"), "{out}");
-    assert!(out.contains("mobility 3 (loop closure)"), "{out}");
+    assert!(
+        out.contains("mobility 3 (joint rates closing the loops)"),
+        "{out}"
+    );
     assert_eq!(
         out.lines()
             .filter(|l| l.trim().starts_with("locked R"))
@@ -195,7 +198,10 @@ fn analyze_at_a_pose_and_with_locks() {
     // lengthens the legs (the sliders have no stroke limit), so that pose does assemble.
     let out = succeed(&["analyze", "mechanisms/3-rps.json", "--pose", "0,0,5,0,0,0"]);
     assert!(out.contains(", 5.000000] m;"), "{out}");
-    assert!(out.contains("mobility 3 (loop closure)"), "{out}");
+    assert!(
+        out.contains("mobility 3 (joint rates closing the loops)"),
+        "{out}"
+    );
 }
 
 #[test]

@@ -235,7 +235,9 @@ fn three_ups_has_six_dof_with_every_input_free() {
     let m = load("3-ups");
     let q = m.reference();
     let a = m.analyse(&q, &[], &SampleSettings::default()).unwrap();
-    assert_eq!((a.mobility, a.platform_dof, a.wrench_dof), (6, 6, 6));
+    assert_eq!((a.mobility, a.platform_dof), (6, 6));
+    // Second method: the twist space of the platform by loop closure.
+    assert_eq!(m.mechanism().twist_space(m.platform(), &q, &[]).1, 6);
     let mode = m.mode(&[], &SampleSettings::default());
     assert_eq!(mode.pattern, "D");
 }
@@ -259,7 +261,8 @@ fn locking_every_alpha_gives_three_dof_1t2r_and_the_constraints_of_eq_22() {
     let samples = m
         .mechanism()
         .sample_motion(m.platform(), &m.reference(), &mask, &settings)
-        .unwrap();
+        .unwrap()
+        .samples;
     for s in &samples {
         let j = m.jacobians(&s.q, &alphas);
         let (r, p) = m.platform_frame(&s.q);
@@ -303,7 +306,8 @@ fn three_rps_built_directly_equals_three_ups_with_alpha_locked() {
             &[],
             &SampleSettings::default(),
         )
-        .unwrap();
+        .unwrap()
+        .samples;
     for q_rps in std::iter::once(rps.reference()).chain(samples.into_iter().map(|s| s.q)) {
         let (r, p) = rps.platform_frame(&q_rps);
         let q_ups = ups.assemble_at(p, r.scaled_axis(), &alphas).unwrap();
@@ -341,7 +345,8 @@ fn jacobians_agree_with_the_loop_closure_of_every_mechanism() {
         let samples = m
             .mechanism()
             .sample_motion(m.platform(), &m.reference(), &[], &settings)
-            .unwrap();
+            .unwrap()
+            .samples;
         for s in &samples {
             let j = m.jacobians(&s.q, &[]);
             let mob = m.mechanism().mobility(&s.q, &[]);
@@ -363,7 +368,9 @@ fn jacobians_agree_with_the_loop_closure_of_every_mechanism() {
                 );
             }
             let a = m.analyse(&s.q, &[], &settings).unwrap();
-            assert_eq!(a.platform_dof, a.wrench_dof, "{name}");
+            // The dof from the wrenches equals the twist space by loop closure (second method).
+            let (_, by_closure) = m.mechanism().twist_space(m.platform(), &s.q, &[]);
+            assert_eq!(a.platform_dof, by_closure, "{name}");
         }
     }
 }
@@ -438,7 +445,7 @@ fn a_similar_hexagon_gough_stewart_platform_is_singular_everywhere() {
     let a = m
         .analyse(&m.reference(), &[], &SampleSettings::default())
         .unwrap();
-    assert!(a.generic.0 < 6, "generic rank {}", a.generic.0);
+    assert!(a.generic.jd < 6, "generic rank {}", a.generic.jd);
     assert!(
         a.singularities
             .iter()
@@ -526,15 +533,23 @@ fn a_three_rps_with_radial_revolutes_is_constraint_singular_at_the_horizontal_po
     let a = m
         .analyse(&m.reference(), &[], &SampleSettings::default())
         .unwrap();
-    assert_eq!((a.constraint_rank.rank, a.generic.1), (2, 3));
-    assert_eq!((a.platform_dof, a.wrench_dof), (4, 4));
+    assert_eq!((a.constraint_rank.rank, a.generic.constraint), (2, 3));
+    assert_eq!(a.platform_dof, 4);
+    assert_eq!(
+        m.mechanism()
+            .twist_space(m.platform(), &m.reference(), &[])
+            .1,
+        4
+    );
     let constraint = a
         .singularities
         .iter()
         .find(|s| s.kind == kinsyn::manipulator::SingularityKind::Constraint)
         .expect("a constraint singularity");
     assert!(
-        constraint.detail.contains("rank 2 here, 3 nearby"),
+        constraint
+            .detail
+            .contains("rank 2 here, 3 at generic configurations"),
         "{}",
         constraint.detail
     );

@@ -2,7 +2,7 @@
 
 use super::{CliError, json};
 use kinsyn::manipulator::build::{BuildSpec, build};
-use kinsyn::manipulator::{Analysis, Manipulator, RowKind};
+use kinsyn::manipulator::{Analysis, Manipulator, RowKind, rank_text};
 use kinsyn::mechanism::SampleSettings;
 use nalgebra::Vector3;
 use std::fmt::Write as _;
@@ -26,7 +26,8 @@ pub fn build_command(spec: &BuildSpec, output: Option<&Path>) -> Result<String, 
             std::fs::write(path, &text)
                 .map_err(|e| std::io::Error::new(e.kind(), format!("{}: {e}", path.display())))?;
             let mobility = m.mechanism().mobility(&m.reference(), &[]).dof;
-            let (_, dof) = m.mechanism().twist_space(m.platform(), &m.reference(), &[]);
+            let (twists, _) = m.platform_twists(&m.reference(), &[]);
+            let dof = twists.ncols();
             Ok(format!(
                 "wrote {} ({}: {} legs, {} inputs; mobility {mobility}, platform dof {dof} at the reference pose)\n",
                 path.display(),
@@ -182,12 +183,25 @@ fn analysis_json(m: &Manipulator, a: &Analysis) -> serde_json::Value {
         "joint_values": a.q,
         "mobility": a.mobility,
         "platform_dof": a.platform_dof,
-        "wrench_dof": a.wrench_dof,
         "inputs": a.jacobians.free.iter().map(|&i| m.actuators()[i].label()).collect::<Vec<_>>(),
         "rows": rows,
-        "jd_rank": {"rank": a.jd_rank.rank, "generic": a.generic.0, "singular_values": a.jd_rank.singular_values},
-        "constraint_rank": {"rank": a.constraint_rank.rank, "generic": a.generic.1, "singular_values": a.constraint_rank.singular_values},
+        "jd_rank": rank_json(&a.jd_rank, a.generic.jd),
+        "constraint_rank": rank_json(&a.constraint_rank, a.generic.constraint),
+        "leg_ranks": a.jacobians.leg_ranks.iter().zip(&a.generic.legs).map(|(r, &g)| rank_json(r, g)).collect::<Vec<_>>(),
+        "generic_assemblies": a.generic.assemblies,
         "singularities": a.singularities,
+    })
+}
+
+/// A rank decision with its gap and the generic rank it is compared with.
+fn rank_json(r: &kinsyn::screw::Rank, generic: usize) -> serde_json::Value {
+    let (kept, dropped) = r.gap();
+    serde_json::json!({
+        "rank": r.rank,
+        "generic": generic,
+        "tolerance": r.tolerance,
+        "gap": {"smallest_kept": kept, "largest_dropped": dropped},
+        "singular_values": r.singular_values,
     })
 }
 
@@ -211,8 +225,10 @@ fn analysis_text(m: &Manipulator, a: &Analysis) -> String {
     );
     let _ = writeln!(
         s,
-        "mobility {} (loop closure), platform dof {} (twist space) = {} (6 − rank of the constraint wrenches)",
-        a.mobility, a.platform_dof, a.wrench_dof
+        "mobility {} (joint rates closing the loops), platform dof {} (6 − rank of the constraint wrenches; {} internal)",
+        a.mobility,
+        a.platform_dof,
+        a.mobility.saturating_sub(a.platform_dof)
     );
     let inputs: Vec<String> = a
         .jacobians
@@ -239,26 +255,32 @@ fn analysis_text(m: &Manipulator, a: &Analysis) -> String {
             r.input
         );
     }
-    let sv = |v: &[f64]| {
-        v.iter()
-            .map(|x| format!("{x:.4e}"))
-            .collect::<Vec<_>>()
-            .join(" ")
-    };
     let _ = writeln!(
         s,
-        "rank J_D {} (nearby {}), singular values {}",
-        a.jd_rank.rank,
-        a.generic.0,
-        sv(&a.jd_rank.singular_values)
+        "J_D: {} (generic {})",
+        rank_text(&a.jd_rank),
+        a.generic.jd
     );
     let _ = writeln!(
         s,
-        "rank of the constraint rows {} (nearby {}), singular values {}",
-        a.constraint_rank.rank,
-        a.generic.1,
-        sv(&a.constraint_rank.singular_values)
+        "constraint rows: {} (generic {})",
+        rank_text(&a.constraint_rank),
+        a.generic.constraint
     );
+    for (i, (r, g)) in a
+        .jacobians
+        .leg_ranks
+        .iter()
+        .zip(&a.generic.legs)
+        .enumerate()
+    {
+        let _ = writeln!(
+            s,
+            "leg {} joint twists: {} (generic {g})",
+            i + 1,
+            rank_text(r)
+        );
+    }
     if a.singularities.is_empty() {
         let _ = writeln!(s, "no singularity");
     }

@@ -14,16 +14,27 @@
 //! - a leg with fewer than six independent joints adds its **structural constraint wrenches**
 //!   (the wrench system reciprocal to its twist system) as further zero-input rows.
 //!
+//! **Which wrench.** When a leg has structural constraints, a joint's wrench is defined only
+//! modulo them: any wrench reciprocal to the other joints and *not* in the constraint span will
+//! do, and the choice changes no rank (the constraint rows are in `J_D` too) and no `J_I` entry
+//! (a constraint does no work on any joint of the leg). kinsyn first takes the direction of
+//! that wrench system orthogonal to the constraint span in the dimensionless metric (forces, and
+//! moments about the mechanism's centre over its characteristic length), so the wrench taken can
+//! never be a constraint, whether the constraints are forces, couples or both. Within the coset
+//! it then takes the representative with the **smallest force** and, among those, the
+//! **smallest moment about P**: force orthogonal to the constraint forces, moment orthogonal to
+//! the constraint couples. For the RPS leg this is the force along the leg through the S centre,
+//! `(u_c; u_c × GP)`, eqs. 20–22; it does not depend on the length unit.
+//!
 //! Normalisation: a row has a unit force (a unit moment when it is a couple); an actuation row's
 //! sign makes its `J_I` entry positive, a constraint row's sign makes its first non-zero entry
-//! positive. When a leg has structural constraints, a joint's wrench is only defined modulo them;
-//! the representative taken has its force orthogonal to theirs (Euclidean in the six components
-//! at P when their forces are dependent), which gives the paper's rows for the RPS leg.
+//! (dimensionless) positive.
 
 use super::Manipulator;
 use crate::mechanism::SampleSettings;
-use crate::screw::{self, DEFAULT_RANK_TOLERANCE, Wrench};
-use nalgebra::{DMatrix, Vector3};
+use crate::notation::Primitive;
+use crate::screw::{self, DEFAULT_RANK_TOLERANCE, Rank, Wrench};
+use nalgebra::{DMatrix, DVector, Vector3};
 use serde::Serialize;
 
 /// What a row of `J_D` stands for.
@@ -57,6 +68,11 @@ pub struct WrenchRow {
     pub wrench: [f64; 6],
     /// Its `J_I` entry (`W·$_a` for an actuation row, 0 otherwise).
     pub input: f64,
+    /// The same entry made dimensionless: the product of the row's wrench and the input's joint
+    /// screw, each of unit size in the dimensionless metric (1 for a leg of six independent
+    /// joints at a generic configuration; it tends to 0 at an inverse singularity).
+    #[serde(skip)]
+    pub unitless_input: f64,
 }
 
 /// The Jacobians at one configuration with some inputs locked.
@@ -69,8 +85,10 @@ pub struct Jacobians {
     /// The free inputs (indices into the actuators), the columns of `J_I`.
     pub free: Vec<usize>,
     /// Inputs that have no wrench at this configuration (their joint is dependent on the others
-    /// of its leg: a leg singularity).
+    /// of its leg: an inverse singularity).
     pub without_wrench: Vec<usize>,
+    /// The rank of each leg's joint twists (dimensionless, all joints of the leg).
+    pub leg_ranks: Vec<Rank>,
     /// `J_D`: one row per wrench, columns `(v_P; ω)`.
     pub jd: DMatrix<f64>,
     /// `J_I`: one row per wrench, one column per free input.
@@ -88,12 +106,19 @@ impl Jacobians {
     }
 }
 
+/// The force below which (relative to the dimensionless size of a unit wrench) a wrench counts
+/// as a couple.
+const COUPLE_TOLERANCE: f64 = 1e-8;
+
 /// Which kind of singularity (Gosselin–Angeles, and Zlatanov's constraint singularity).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum SingularityKind {
     /// Inverse (serial): an input's rate has no effect on the platform (`J_I` loses rank).
     Inverse,
+    /// Leg: a leg's joint twists lose rank; the platform loses a freedom it has at generic
+    /// configurations.
+    Leg,
     /// Direct (parallel): the platform moves with all inputs held (`J_D` loses rank).
     Direct,
     /// Constraint: the legs' constraint wrenches become dependent; the platform gains a motion
@@ -110,6 +135,20 @@ pub struct Singularity {
     pub detail: String,
 }
 
+/// The ranks of a manipulator at generic configurations: at random assemblies of the same
+/// mechanism around the configuration analysed ([`crate::mechanism::Mechanism::random_assemblies`]).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct GenericRanks {
+    /// Random assemblies that closed (the ranks below are over them).
+    pub assemblies: usize,
+    /// The largest rank of `J_D`.
+    pub jd: usize,
+    /// The rank of the constraint rows found most often (the smaller on a tie).
+    pub constraint: usize,
+    /// The largest rank of each leg's joint twists.
+    pub legs: Vec<usize>,
+}
+
 /// Jacobians, mobility and singularities of a manipulator at one configuration.
 #[derive(Debug, Clone)]
 pub struct Analysis {
@@ -119,30 +158,26 @@ pub struct Analysis {
     pub q: Vec<f64>,
     /// The Jacobians.
     pub jacobians: Jacobians,
-    /// Dimension of the joint-rate null space of the loop closure (all free joints).
+    /// Dimension of the joint-rate null space of the loop closure (all free joints): the
+    /// platform's degrees of freedom plus the legs' internal motions.
     pub mobility: usize,
-    /// The platform's local degrees of freedom (dimension of its twist space).
+    /// The platform's local degrees of freedom: six minus the rank of the constraint rows
+    /// (the dimension of the twists reciprocal to them, [`Manipulator::platform_twists`]).
     pub platform_dof: usize,
-    /// The same from the wrenches: six minus the rank of the constraint rows.
-    pub wrench_dof: usize,
-    /// Rank of `J_D` (dimensionless: moments over the length scale).
-    pub jd_rank: screw::Rank,
-    /// Rank of the constraint rows.
-    pub constraint_rank: screw::Rank,
-    /// The ranks at nearby generic configurations (sampled), `(J_D, constraint rows)`.
-    pub generic: (usize, usize),
+    /// Rank of `J_D` (dimensionless), with its singular values and gap.
+    pub jd_rank: Rank,
+    /// Rank of the constraint rows (dimensionless), with its singular values and gap.
+    pub constraint_rank: Rank,
+    /// The ranks at generic configurations.
+    pub generic: GenericRanks,
     /// Singularities found.
     pub singularities: Vec<Singularity>,
 }
 
-/// A dimensionless copy of twists (translational rows over `scale`).
-fn dimensionless(t: &DMatrix<f64>, scale: f64) -> DMatrix<f64> {
-    let mut out = t.clone();
-    for r in 3..6 {
-        out.row_mut(r).scale_mut(1.0 / scale);
-    }
-    out
-}
+/// The number of random assemblies that decide the generic ranks, and their spread (radians;
+/// prismatic values over the length scale).
+const GENERIC_ASSEMBLIES: usize = 4;
+const GENERIC_SPREAD: f64 = 0.3;
 
 /// `Δ T`: the twists with their angular and linear halves swapped, so that a wrench `w` acts on
 /// them by the plain product `wᵀ (Δ T)`.
@@ -153,27 +188,68 @@ fn swap_blocks(t: &DMatrix<f64>) -> DMatrix<f64> {
     out
 }
 
-/// The representative of the wrench system `b` (columns) modulo the system `s` (a subspace of
-/// it) with the force part orthogonal to the forces of `s` (or the whole wrench orthogonal when
-/// the forces of `s` are dependent); `None` when `b` adds nothing to `s`.
-fn modulo(b: &DMatrix<f64>, s: &DMatrix<f64>) -> Option<nalgebra::DVector<f64>> {
-    if b.ncols() <= s.ncols() {
+/// A dimensionless wrench (moment about the centre) with its moment moved to the point whose
+/// offset from the centre, over the length scale, is `offset`.
+fn moment_at(w: &DVector<f64>, offset: &Vector3<f64>) -> DVector<f64> {
+    let f = Vector3::new(w[0], w[1], w[2]);
+    let m = Vector3::new(w[3], w[4], w[5]) - offset.cross(&f);
+    DVector::from_column_slice(&[f.x, f.y, f.z, m.x, m.y, m.z])
+}
+
+/// The wrench of a joint in its leg, in the dimensionless form: `b` (columns) spans the
+/// wrenches reciprocal to the leg's other joints, `s` (orthonormal columns) the leg's
+/// constraints, a subspace of it. `None` when `b` adds nothing to `s` (the joint depends on the
+/// others: an inverse singularity).
+///
+/// The direction of `b` orthogonal to `s` is never a constraint; of its coset modulo `s`, the
+/// representative taken has the smallest force and then the smallest moment about P (`offset`:
+/// P's offset from the centre over the length scale), see the module documentation.
+fn joint_wrench(b: &DMatrix<f64>, s: &DMatrix<f64>, offset: &Vector3<f64>) -> Option<DVector<f64>> {
+    // The part of b orthogonal to the constraints: its largest direction has unit size when the
+    // joint is independent of the others, round-off when it is not.
+    let projected = b - s * (s.transpose() * b);
+    let d = screw::svd(&projected);
+    if d.singular_values.first().copied().unwrap_or(0.0) < 0.5 {
         return None;
     }
+    let w0 = d.u.column(0).into_owned();
     if s.ncols() == 0 {
-        return Some(b.column(0).into_owned());
+        return Some(w0);
     }
-    let fs = s.rows(0, 3).into_owned();
-    let fb = b.rows(0, 3).into_owned();
-    let force_rank = screw::rank(&fs, DEFAULT_RANK_TOLERANCE).rank;
-    let m = if force_rank == s.ncols() {
-        fs.transpose() * fb
-    } else {
-        s.transpose() * b
-    };
-    let (null, _) = screw::nullspace(&m, 1e-8);
-    let c = null.column(0).into_owned();
-    Some(b * c)
+    // Smallest force: remove the constraint forces' share of the force.
+    let forces = s.rows(0, 3).into_owned();
+    let f0 = w0.rows(0, 3).into_owned();
+    let fd = screw::svd(&forces);
+    let mut c = DVector::zeros(s.ncols());
+    let mut couples = Vec::new();
+    for (k, &sigma) in fd.singular_values.iter().enumerate() {
+        // The basis is orthonormal, so a constraint direction with a force below the tolerance
+        // (relative to 1, not to the other forces) is a couple.
+        if sigma > COUPLE_TOLERANCE && k < fd.u.ncols() {
+            c += fd.v.column(k) * (fd.u.column(k).dot(&f0) / sigma);
+        } else {
+            couples.push(fd.v.column(k).into_owned());
+        }
+    }
+    let w1 = &w0 - s * &c;
+    if couples.is_empty() {
+        return Some(w1);
+    }
+    // Then the smallest moment about P: remove the constraint couples' share of it.
+    let n = DMatrix::from_columns(&couples);
+    let sn = s * &n;
+    let moments = DMatrix::from_fn(3, sn.ncols(), |r, k| {
+        moment_at(&sn.column(k).into_owned(), offset)[r + 3]
+    });
+    let m1 = moment_at(&w1, offset).rows(3, 3).into_owned();
+    let md = screw::svd(&moments);
+    let mut z = DVector::zeros(sn.ncols());
+    for (k, &sigma) in md.singular_values.iter().enumerate() {
+        if sigma > COUPLE_TOLERANCE && k < md.u.ncols() {
+            z += md.v.column(k) * (md.u.column(k).dot(&m1) / sigma);
+        }
+    }
+    Some(w1 - sn * z)
 }
 
 impl Manipulator {
@@ -182,38 +258,43 @@ impl Manipulator {
     #[must_use]
     pub fn jacobians(&self, q: &[f64], locked: &[usize]) -> Jacobians {
         let m = &self.mechanism;
-        let s = m.scale();
+        let scale = m.scale();
         let screws = m.joint_screws(q);
         let p = self.point(q);
+        // P's offset from the centre, in length-scale units.
+        let offset = (p - m.centre()) / scale;
         let mut actuation = Vec::new();
         let mut locked_rows = Vec::new();
         let mut constraints = Vec::new();
         let mut without_wrench = Vec::new();
-        // A wrench from its dimensionless form (f'; m') at the origin: physical (f'; s m'),
-        // normalised, with its moment about P.
-        let physical = |w: &nalgebra::DVector<f64>| -> ([f64; 6], Vector3<f64>, Vector3<f64>) {
-            let f = Vector3::new(w[0], w[1], w[2]);
-            let mo = Vector3::new(w[3], w[4], w[5]) * s;
-            let mp = mo - p.cross(&f);
-            let norm = if f.norm() > 1e-9 * mp.norm() / s {
+        let mut leg_ranks = Vec::with_capacity(self.legs.len());
+        // A row from a dimensionless wrench: physical (f; m_P), unit force (unit moment for a
+        // couple), with its sign chosen by `positive` applied to the physical row.
+        let physical = |w: &DVector<f64>| -> (Wrench, [f64; 6]) {
+            let at_p = moment_at(w, &offset);
+            let size = at_p.norm();
+            let f = Vector3::new(at_p[0], at_p[1], at_p[2]);
+            let mp = Vector3::new(at_p[3], at_p[4], at_p[5]) * scale;
+            let norm = if f.norm() > COUPLE_TOLERANCE * size {
                 f.norm()
             } else {
                 mp.norm()
             };
-            let (f, mo, mp) = (f / norm, mo / norm, mp / norm);
-            ([f.x, f.y, f.z, mp.x, mp.y, mp.z], f, mo)
+            let wrench = m.physical_wrench(w.as_slice());
+            let wrench = Wrench {
+                f: wrench.f / norm,
+                m: wrench.m / norm,
+            };
+            let (f, mp) = (f / norm, mp / norm);
+            (wrench, [f.x, f.y, f.z, mp.x, mp.y, mp.z])
         };
         for (i, leg) in self.legs.iter().enumerate() {
             let joints: Vec<usize> = leg.joints.clone().collect();
-            let t = DMatrix::from_fn(6, joints.len(), |r, c| screws[joints[c]].to_vector()[r]);
-            let t = dimensionless(&t, s);
+            let t = self.unitless_leg_twists(&screws, &joints);
+            let rank = screw::rank(&t, DEFAULT_RANK_TOLERANCE);
             // A leg of six independent joints: the wrenches of all its joints at once, the rows
             // of (Δ T)⁻¹ (w_j · $_k = δ_jk). Otherwise reciprocal complements, joint by joint.
-            let dual = (t.ncols() == 6
-                && screw::rank6(
-                    &nalgebra::Matrix6xX::from_column_slice(t.as_slice()),
-                    DEFAULT_RANK_TOLERANCE,
-                ) == 6)
+            let dual = (t.ncols() == 6 && rank.rank == 6)
                 .then(|| swap_blocks(&t).try_inverse())
                 .flatten();
             let structural = if dual.is_some() {
@@ -221,6 +302,7 @@ impl Manipulator {
             } else {
                 screw::reciprocal_complement(&t, DEFAULT_RANK_TOLERANCE)
             };
+            leg_ranks.push(rank);
             for (a, act) in self
                 .actuators
                 .iter()
@@ -232,46 +314,56 @@ impl Manipulator {
                     None => {
                         let others = t.clone().remove_column(act.position);
                         let b = screw::reciprocal_complement(&others, DEFAULT_RANK_TOLERANCE);
-                        modulo(&b, &structural)
+                        joint_wrench(&b, &structural, &offset)
                     }
                 };
                 let Some(w) = wrench else {
                     without_wrench.push(a);
                     continue;
                 };
-                let (mut row, f, mo) = physical(&w);
-                let mut input = screw::reciprocal_product(&Wrench { f, m: mo }, &screws[act.joint]);
+                let (physical_wrench, mut row) = physical(&w);
+                let mut input = screw::reciprocal_product(&physical_wrench, &screws[act.joint]);
+                let screw_a = t.column(act.position);
+                let mut unitless_input = (w.rows(0, 3).dot(&screw_a.rows(3, 3))
+                    + w.rows(3, 3).dot(&screw_a.rows(0, 3)))
+                    / (w.norm() * screw_a.norm());
                 if input < 0.0 {
                     row = row.map(|x| -x);
                     input = -input;
+                    unitless_input = -unitless_input;
                 }
                 if locked.contains(&a) {
                     locked_rows.push(WrenchRow {
                         kind: RowKind::Locked { actuator: a },
                         wrench: row,
                         input: 0.0,
+                        unitless_input: 0.0,
                     });
                 } else {
                     actuation.push(WrenchRow {
                         kind: RowKind::Actuation { actuator: a },
                         wrench: row,
                         input,
+                        unitless_input,
                     });
                 }
             }
             for c in 0..structural.ncols() {
-                let (mut row, _, _) = physical(&structural.column(c).into_owned());
-                if row
+                let w = structural.column(c).into_owned();
+                let (_, mut row) = physical(&w);
+                let unitless = moment_at(&w, &offset);
+                let first = unitless
                     .iter()
-                    .find(|x| x.abs() > 1e-9)
-                    .is_some_and(|&x| x < 0.0)
-                {
+                    .copied()
+                    .find(|x| x.abs() > 1e-9 * unitless.norm());
+                if first.is_some_and(|x| x < 0.0) {
                     row = row.map(|x| -x);
                 }
                 constraints.push(WrenchRow {
                     kind: RowKind::Constraint { leg: i },
                     wrench: row,
                     input: 0.0,
+                    unitless_input: 0.0,
                 });
             }
         }
@@ -297,27 +389,95 @@ impl Manipulator {
             rows,
             free,
             without_wrench,
+            leg_ranks,
             jd,
             ji,
         }
     }
 
-    /// The rank of rows `(f; m_P)` made dimensionless (moments over the length scale).
-    fn wrench_rank(&self, rows: &DMatrix<f64>) -> screw::Rank {
-        let mut d = rows.transpose();
-        for r in 3..6 {
-            d.row_mut(r).scale_mut(1.0 / self.mechanism.scale());
+    /// The current screws of a leg's joints in the dimensionless form (columns of unit size:
+    /// at the centre, translations over the length scale, prismatic rates in length-scale units).
+    fn unitless_leg_twists(&self, screws: &[screw::Twist], joints: &[usize]) -> DMatrix<f64> {
+        let m = &self.mechanism;
+        let t = DMatrix::from_fn(6, joints.len(), |r, c| screws[joints[c]].to_vector()[r]);
+        let mut t = m.unitless_twists(&t);
+        for (c, &j) in joints.iter().enumerate() {
+            if m.joints()[j].kind == Primitive::P {
+                t.column_mut(c).scale_mut(m.scale());
+            }
         }
-        screw::rank(&d, DEFAULT_RANK_TOLERANCE)
+        t
+    }
+
+    /// Rows `(f; m_P)` of wrenches at P (at `point`) in the dimensionless form, as columns:
+    /// moments about the mechanism's centre over its length scale, each of unit size.
+    fn unitless_rows(&self, rows: &DMatrix<f64>, point: &Vector3<f64>) -> DMatrix<f64> {
+        let m = &self.mechanism;
+        let mut out = DMatrix::zeros(6, rows.nrows());
+        for r in 0..rows.nrows() {
+            let f = Vector3::new(rows[(r, 0)], rows[(r, 1)], rows[(r, 2)]);
+            let mp = Vector3::new(rows[(r, 3)], rows[(r, 4)], rows[(r, 5)]);
+            // The moment about the origin, then the dimensionless form at the centre.
+            let w = m.unitless_wrench(&Wrench {
+                f,
+                m: mp + point.cross(&f),
+            });
+            out.column_mut(r)
+                .copy_from(&(w / w.norm().max(f64::MIN_POSITIVE)));
+        }
+        out
+    }
+
+    /// The rank of rows `(f; m_P)` in the dimensionless form, with its singular values.
+    fn wrench_rank(&self, rows: &DMatrix<f64>, point: &Vector3<f64>) -> Rank {
+        screw::rank(&self.unitless_rows(rows, point), DEFAULT_RANK_TOLERANCE)
+    }
+
+    /// The twists `(v_P; ω)` the platform can have at `q` with the `locked` inputs held: the
+    /// twists reciprocal to the constraint rows of `J_D` (a basis, columns; physical units), and
+    /// the rank decision of those rows. Their number is the platform's local degrees of freedom,
+    /// six minus the rank: one computation gives both.
+    #[must_use]
+    pub fn platform_twists(&self, q: &[f64], locked: &[usize]) -> (DMatrix<f64>, Rank) {
+        let j = self.jacobians(q, locked);
+        self.twists_of(&j)
+    }
+
+    fn twists_of(&self, j: &Jacobians) -> (DMatrix<f64>, Rank) {
+        let m = &self.mechanism;
+        let rows = self.unitless_rows(&j.constraint_rows(), &j.point);
+        let rank = screw::rank(&rows, DEFAULT_RANK_TOLERANCE);
+        // Twists reciprocal to every constraint wrench: the reciprocal complement with the roles
+        // of the halves exchanged (a wrench acts on a twist as a twist acts on a wrench).
+        let twists = if rows.ncols() == 0 || rank.rank == 0 {
+            DMatrix::identity(6, 6)
+        } else {
+            let d = screw::svd(&rows.transpose());
+            let basis = d.v.columns(rank.rank, 6 - rank.rank).into_owned();
+            // basis holds (f-slot; m-slot) coefficients of twists t with w·t = f·v̂ + m̂·ω = 0,
+            // i.e. (v̂; ω): back to (ω; v̂).
+            swap_blocks(&basis)
+        };
+        // Dimensionless (ω; v_c/L) to physical (v_P; ω).
+        let physical = m.physical_twists(&twists);
+        let out = DMatrix::from_fn(6, physical.ncols(), |r, c| {
+            let w = Vector3::new(physical[(0, c)], physical[(1, c)], physical[(2, c)]);
+            let v = Vector3::new(physical[(3, c)], physical[(4, c)], physical[(5, c)]);
+            let vp = v + w.cross(&j.point);
+            [vp.x, vp.y, vp.z, w.x, w.y, w.z][r]
+        });
+        (out, rank)
     }
 
     /// Jacobians, mobility and singularities at the assembled configuration `q` with the
-    /// `locked` inputs held. Singularities are rank drops against the ranks at nearby
-    /// configurations reached by finite motion (`settings`), and inputs whose `J_I` entry
-    /// vanishes.
+    /// `locked` inputs held. Singularities are rank drops against the ranks at generic
+    /// configurations: random assemblies of the same mechanism around `q`
+    /// ([`crate::mechanism::Mechanism::random_assemblies`], seeded by `settings.seed`). A configuration that is
+    /// singular along a whole neighbourhood of its own motion is still found, as long as the
+    /// mechanism is generic elsewhere.
     ///
     /// # Errors
-    /// When the nearby configurations cannot be reached (the configuration is not assembled).
+    /// When `q` is not assembled, or no random assembly around it closes.
     pub fn analyse(
         &self,
         q: &[f64],
@@ -326,75 +486,17 @@ impl Manipulator {
     ) -> Result<Analysis, super::ManipulatorError> {
         let mask = self.lock_mask(locked);
         let m = &self.mechanism;
-        let jacobians = self.jacobians(q, locked);
-        let mobility = m.mobility(q, &mask).dof;
-        let (_, platform_dof) = m.twist_space(self.platform, q, &mask);
-        let jd_rank = self.wrench_rank(&jacobians.jd);
-        let constraint_rank = self.wrench_rank(&jacobians.constraint_rows());
-        // Generic ranks: at configurations reached by the platform's finite motion with every
-        // input free (so that the walk can leave the pose).
-        let samples = m.sample_motion(self.platform, q, &vec![false; mask.len()], settings)?;
-        let mut generic = (jd_rank.rank, constraint_rank.rank);
-        for sample in &samples {
-            let j = self.jacobians(&sample.q, locked);
-            generic.0 = generic.0.max(self.wrench_rank(&j.jd).rank);
-            generic.1 = generic.1.max(self.wrench_rank(&j.constraint_rows()).rank);
-        }
-        let mut singularities = Vec::new();
-        let s = m.scale();
-        for (col, &a) in jacobians.free.iter().enumerate() {
-            let entry = jacobians.ji.column(col).amax();
-            let act = &self.actuators[a];
-            let dimensionless = if act.kind == crate::notation::Primitive::R {
-                entry / s
-            } else {
-                entry
-            };
-            if jacobians.without_wrench.contains(&a) || dimensionless < 1e-9 {
-                singularities.push(Singularity {
-                    kind: SingularityKind::Inverse,
-                    detail: format!(
-                        "input {} has no effect on the platform (J_I entry {entry:.3e})",
-                        act.label()
-                    ),
-                });
-            }
-        }
-        if constraint_rank.rank < generic.1 {
-            singularities.push(Singularity {
-                kind: SingularityKind::Constraint,
-                detail: format!(
-                    "constraint wrenches of rank {} here, {} nearby (singular values {})",
-                    constraint_rank.rank,
-                    generic.1,
-                    values(&constraint_rank.singular_values)
-                ),
-            });
-        }
-        if generic.0 < 6 {
-            singularities.push(Singularity {
-                kind: SingularityKind::Direct,
-                detail: format!(
-                    "the held inputs and constraints never fix the platform here or nearby: J_D of rank {} at every sampled configuration (too few inputs, or an architecture singularity)",
-                    generic.0
-                ),
-            });
-        }
-        if jd_rank.rank < generic.0 {
-            singularities.push(Singularity {
-                kind: SingularityKind::Direct,
-                detail: format!(
-                    "J_D of rank {} here, {} nearby (singular values {})",
-                    jd_rank.rank,
-                    generic.0,
-                    values(&jd_rank.singular_values)
-                ),
-            });
-        }
+        let q = m.assemble(q, &mask, None)?;
+        let jacobians = self.jacobians(&q, locked);
+        let mobility = m.mobility(&q, &mask).dof;
+        let jd_rank = self.wrench_rank(&jacobians.jd, &jacobians.point);
+        let (_, constraint_rank) = self.twists_of(&jacobians);
+        let platform_dof = 6 - constraint_rank.rank;
+        let generic = self.generic_ranks(&q, locked, settings)?;
+        let singularities = self.singularities(&jacobians, &jd_rank, &constraint_rank, &generic);
         Ok(Analysis {
             locked: locked.to_vec(),
-            q: q.to_vec(),
-            wrench_dof: 6 - constraint_rank.rank,
+            q,
             jacobians,
             mobility,
             platform_dof,
@@ -404,11 +506,139 @@ impl Manipulator {
             singularities,
         })
     }
+
+    /// The ranks at random assemblies around `q` (every joint free, so that they can leave a
+    /// singular set), with the `locked` inputs' rows as constraints.
+    fn generic_ranks(
+        &self,
+        q: &[f64],
+        locked: &[usize],
+        settings: &SampleSettings,
+    ) -> Result<GenericRanks, super::ManipulatorError> {
+        let m = &self.mechanism;
+        let assemblies = m.random_assemblies(
+            q,
+            &vec![false; m.joints().len()],
+            GENERIC_ASSEMBLIES,
+            GENERIC_SPREAD,
+            settings.seed,
+        );
+        if assemblies.is_empty() {
+            return Err(super::ManipulatorError::Pose(
+                "no random assembly around this configuration closes, so its generic ranks are unknown".into(),
+            ));
+        }
+        let mut jd = 0;
+        let mut legs = vec![0; self.legs.len()];
+        let mut constraint_counts = [0usize; 7];
+        for sample in &assemblies {
+            let j = self.jacobians(sample, locked);
+            jd = jd.max(self.wrench_rank(&j.jd, &j.point).rank);
+            let (_, c) = self.twists_of(&j);
+            constraint_counts[c.rank] += 1;
+            for (g, r) in legs.iter_mut().zip(&j.leg_ranks) {
+                *g = (*g).max(r.rank);
+            }
+        }
+        let most = constraint_counts.iter().copied().max().unwrap_or(0);
+        let constraint = constraint_counts
+            .iter()
+            .position(|&c| c == most)
+            .unwrap_or(0);
+        Ok(GenericRanks {
+            assemblies: assemblies.len(),
+            jd,
+            constraint,
+            legs,
+        })
+    }
+
+    /// The singularities at a configuration, from its ranks against the generic ones.
+    fn singularities(
+        &self,
+        j: &Jacobians,
+        jd_rank: &Rank,
+        constraint_rank: &Rank,
+        generic: &GenericRanks,
+    ) -> Vec<Singularity> {
+        let mut out = Vec::new();
+        for &a in &j.free {
+            let act = &self.actuators[a];
+            if j.without_wrench.contains(&a) {
+                out.push(Singularity {
+                    kind: SingularityKind::Inverse,
+                    detail: format!(
+                        "input {} has no effect on the platform: its joint depends on the other joints of leg {} ({})",
+                        act.label(),
+                        act.leg + 1,
+                        rank_text(&j.leg_ranks[act.leg])
+                    ),
+                });
+            }
+        }
+        for (i, (here, &elsewhere)) in j.leg_ranks.iter().zip(&generic.legs).enumerate() {
+            if here.rank < elsewhere {
+                out.push(Singularity {
+                    kind: SingularityKind::Leg,
+                    detail: format!(
+                        "leg {} ({}) has joint twists of rank {} here, {} at generic configurations ({})",
+                        i + 1,
+                        self.legs[i].chain,
+                        here.rank,
+                        elsewhere,
+                        rank_text(here)
+                    ),
+                });
+            }
+        }
+        if constraint_rank.rank < generic.constraint {
+            out.push(Singularity {
+                kind: SingularityKind::Constraint,
+                detail: format!(
+                    "constraint wrenches of rank {} here, {} at generic configurations: the platform gains {} dof ({})",
+                    constraint_rank.rank,
+                    generic.constraint,
+                    generic.constraint - constraint_rank.rank,
+                    rank_text(constraint_rank)
+                ),
+            });
+        }
+        if generic.jd < 6 {
+            out.push(Singularity {
+                kind: SingularityKind::Direct,
+                detail: format!(
+                    "the held inputs and constraints never fix the platform: J_D of rank {} at every generic configuration (too few inputs, or an architecture singularity)",
+                    generic.jd
+                ),
+            });
+        }
+        if jd_rank.rank < generic.jd {
+            out.push(Singularity {
+                kind: SingularityKind::Direct,
+                detail: format!(
+                    "J_D of rank {} here, {} at generic configurations ({})",
+                    jd_rank.rank,
+                    generic.jd,
+                    rank_text(jd_rank)
+                ),
+            });
+        }
+        out
+    }
 }
 
-fn values(v: &[f64]) -> String {
-    v.iter()
-        .map(|x| format!("{x:.3e}"))
-        .collect::<Vec<_>>()
-        .join(" ")
+/// A rank decision in words: the rank, the gap (smallest kept and largest dropped singular
+/// values over the largest) and the singular values.
+#[must_use]
+pub fn rank_text(r: &Rank) -> String {
+    let (kept, dropped) = r.gap();
+    format!(
+        "rank {}, gap {kept:.3e} kept / {dropped:.3e} dropped, singular values {}",
+        r.rank,
+        r.singular_values
+            .iter()
+            .map(|x| format!("{x:.3e}"))
+            .collect::<Vec<_>>()
+            .join(" ")
+    )
 }

@@ -19,7 +19,9 @@ pub mod file;
 mod jacobian;
 mod modes;
 
-pub use jacobian::{Analysis, Jacobians, RowKind, Singularity, SingularityKind, WrenchRow};
+pub use jacobian::{
+    Analysis, GenericRanks, Jacobians, RowKind, Singularity, SingularityKind, WrenchRow, rank_text,
+};
 pub use modes::{MAX_INPUTS, Mode, Modes, PatternModes};
 
 use crate::catalogue::Catalogue;

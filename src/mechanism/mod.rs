@@ -19,8 +19,13 @@
 //! - the mobility is the dimension of the null space of `C` (joint rates compatible with every
 //!   loop), and a body's local degrees of freedom are the dimension of its twists over it.
 //!
-//! Rank decisions use a dimensionless copy of each matrix: lengths are divided by the
-//! mechanism's length [`Mechanism::scale`], so millimetres and metres give the same ranks.
+//! Rank decisions use a dimensionless copy of each matrix: twists and wrenches are referred to the
+//! mechanism's characteristic point [`Mechanism::centre`] and lengths are divided by its
+//! characteristic length [`Mechanism::scale`] (the RMS distance of the revolute axis points from
+//! their centroid), so millimetres and metres, or a mechanism far from the origin, give the same
+//! ranks. Tolerances are relative to quantities that cannot be round-off (the norm of a Jacobian
+//! whose columns are unit screws, or 1 for an orthonormal basis), never to a product's own
+//! largest singular value.
 //!
 //! ```
 //! use kinsyn::mechanism::{Mechanism, JointSpec};
@@ -176,6 +181,7 @@ pub struct Mechanism {
     order: Vec<(usize, Option<PathStep>)>,
     /// The joints off the spanning tree: one independent loop each.
     chords: Vec<usize>,
+    centre: Vector3<f64>,
     scale: f64,
 }
 
@@ -280,7 +286,7 @@ impl Mechanism {
             .map(|(b, p)| p.ok_or_else(|| MechanismError::Disconnected(bodies[b].to_string())))
             .collect::<Result<Vec<_>, _>>()?;
         let chords = (0..normalised.len()).filter(|&j| !tree[j]).collect();
-        let scale = length_scale(&normalised);
+        let (centre, scale) = characteristic(&normalised);
         Ok(Mechanism {
             graph,
             joints: normalised,
@@ -288,6 +294,7 @@ impl Mechanism {
             paths,
             order,
             chords,
+            centre,
             scale,
         })
     }
@@ -328,11 +335,93 @@ impl Mechanism {
         &self.chords
     }
 
-    /// The characteristic length: the largest distance of a revolute axis point from their
-    /// centroid (1 when there is none). Rank decisions and tolerances are taken relative to it.
+    /// The characteristic length: the root-mean-square distance of the revolute axis points from
+    /// their centroid (of every joint point when there is no revolute; 1 when all the points
+    /// coincide, where no length enters the kinematics). Rank decisions and tolerances are taken
+    /// relative to it, so they do not depend on the length unit.
     #[must_use]
     pub fn scale(&self) -> f64 {
         self.scale
+    }
+
+    /// The characteristic point: the centroid of the points that define [`Mechanism::scale`].
+    /// Dimensionless twists and wrenches are referred to it, so that a mechanism far from the
+    /// ground origin is not ill-conditioned.
+    #[must_use]
+    pub fn centre(&self) -> Vector3<f64> {
+        self.centre
+    }
+
+    /// Spatial twists `(ω; v)` (6-row blocks of `m`, `v` the velocity of the point at the ground
+    /// origin) in the dimensionless form: `(ω; (v + ω × c) / L)`, the velocity of the point at
+    /// the centre `c` over the characteristic length `L`.
+    #[must_use]
+    pub fn unitless_twists(&self, m: &DMatrix<f64>) -> DMatrix<f64> {
+        let mut out = m.clone();
+        for block in 0..m.nrows() / 6 {
+            for col in 0..m.ncols() {
+                let w = Vector3::new(
+                    m[(6 * block, col)],
+                    m[(6 * block + 1, col)],
+                    m[(6 * block + 2, col)],
+                );
+                let v = Vector3::new(
+                    m[(6 * block + 3, col)],
+                    m[(6 * block + 4, col)],
+                    m[(6 * block + 5, col)],
+                );
+                let vc = (v + w.cross(&self.centre)) / self.scale;
+                for k in 0..3 {
+                    out[(6 * block + 3 + k, col)] = vc[k];
+                }
+            }
+        }
+        out
+    }
+
+    /// The inverse of [`Mechanism::unitless_twists`]: physical twists at the ground origin.
+    #[must_use]
+    pub fn physical_twists(&self, m: &DMatrix<f64>) -> DMatrix<f64> {
+        let mut out = m.clone();
+        for block in 0..m.nrows() / 6 {
+            for col in 0..m.ncols() {
+                let w = Vector3::new(
+                    m[(6 * block, col)],
+                    m[(6 * block + 1, col)],
+                    m[(6 * block + 2, col)],
+                );
+                let vc = Vector3::new(
+                    m[(6 * block + 3, col)],
+                    m[(6 * block + 4, col)],
+                    m[(6 * block + 5, col)],
+                );
+                let v = vc * self.scale - w.cross(&self.centre);
+                for k in 0..3 {
+                    out[(6 * block + 3 + k, col)] = v[k];
+                }
+            }
+        }
+        out
+    }
+
+    /// A wrench `(f; m_O)` (moment about the ground origin) in the dimensionless form
+    /// `(f; m_c / L)`, its moment about the centre over the characteristic length. The
+    /// reciprocal product of a dimensionless wrench and twist is the physical one over `L`.
+    #[must_use]
+    pub fn unitless_wrench(&self, w: &screw::Wrench) -> nalgebra::Vector6<f64> {
+        let mc = (w.m - self.centre.cross(&w.f)) / self.scale;
+        nalgebra::Vector6::new(w.f.x, w.f.y, w.f.z, mc.x, mc.y, mc.z)
+    }
+
+    /// The inverse of [`Mechanism::unitless_wrench`].
+    #[must_use]
+    pub fn physical_wrench(&self, x: &[f64]) -> screw::Wrench {
+        let f = Vector3::new(x[0], x[1], x[2]);
+        let mc = Vector3::new(x[3], x[4], x[5]) * self.scale;
+        screw::Wrench {
+            f,
+            m: mc + self.centre.cross(&f),
+        }
     }
 
     /// The size of one dimensionless unit of joint `j`'s value: the length scale for a
@@ -440,15 +529,11 @@ impl Mechanism {
         r
     }
 
-    /// The dimensionless copy of a matrix of twists over joint rates: translational rows over
-    /// the length scale, prismatic columns times it.
+    /// The dimensionless copy of a matrix of twists over joint rates (see
+    /// [`Mechanism::unitless_twists`]), prismatic columns times the length scale so that every
+    /// column is a unit screw.
     fn dimensionless(&self, m: &DMatrix<f64>) -> DMatrix<f64> {
-        let mut out = m.clone();
-        for r in 0..out.nrows() {
-            if r % 6 >= 3 {
-                out.row_mut(r).scale_mut(1.0 / self.scale);
-            }
-        }
+        let mut out = self.unitless_twists(m);
         for c in 0..out.ncols().min(self.joints.len()) {
             out.column_mut(c).scale_mut(self.unit(c));
         }
@@ -472,20 +557,7 @@ impl Mechanism {
 
     fn mobility_with(&self, screws: &[Twist], locked: &[bool]) -> Mobility {
         let free = self.free(locked);
-        let c = self.dimensionless(&self.closure_jacobian(screws));
-        let cf = DMatrix::from_fn(c.nrows(), free.len(), |r, k| c[(r, free[k])]);
-        let (mut basis, rank) = if cf.nrows() == 0 {
-            (
-                DMatrix::identity(free.len(), free.len()),
-                screw::Rank {
-                    rank: 0,
-                    singular_values: Vec::new(),
-                    tolerance: MOBILITY_TOLERANCE,
-                },
-            )
-        } else {
-            screw::nullspace(&cf, MOBILITY_TOLERANCE)
-        };
+        let (mut basis, rank) = self.unitless_rates(screws, &free);
         // Back to physical rates: prismatic rates in length units.
         for (k, &j) in free.iter().enumerate() {
             basis.row_mut(k).scale_mut(self.unit(j));
@@ -497,27 +569,52 @@ impl Mechanism {
         }
     }
 
+    /// An orthonormal basis of the dimensionless rates of the `free` joints (prismatic rates
+    /// over the length scale) that keep every loop closed, with the rank decision of the
+    /// dimensionless loop-closure Jacobian (unit-screw columns, so its largest singular value
+    /// is not round-off).
+    fn unitless_rates(&self, screws: &[Twist], free: &[usize]) -> (DMatrix<f64>, screw::Rank) {
+        let c = self.dimensionless(&self.closure_jacobian(screws));
+        let cf = DMatrix::from_fn(c.nrows(), free.len(), |r, k| c[(r, free[k])]);
+        if cf.nrows() == 0 {
+            return (
+                DMatrix::identity(free.len(), free.len()),
+                screw::Rank {
+                    rank: 0,
+                    singular_values: Vec::new(),
+                    tolerance: MOBILITY_TOLERANCE,
+                },
+            );
+        }
+        screw::nullspace(&cf, MOBILITY_TOLERANCE)
+    }
+
     /// The twist space of `body` at `q` with the `locked` joints held: a basis (columns) of the
     /// spatial twists `(ω; v)` it can have, and the local degrees of freedom (its dimension).
     #[must_use]
     pub fn twist_space(&self, body: usize, q: &[f64], locked: &[bool]) -> (DMatrix<f64>, usize) {
         let screws = self.joint_screws(q);
-        let twists = self.body_twists(body, &screws, locked);
-        let (basis, rank) = screw::span_basis(&self.dimensionless(&twists), MOBILITY_TOLERANCE);
-        let mut basis = basis;
-        for r in 3..6 {
-            basis.row_mut(r).scale_mut(self.scale);
-        }
-        (basis, rank.rank)
+        let (basis, rank) = self.unitless_twist_space(body, &screws, locked);
+        (self.physical_twists(&basis), rank.rank)
     }
 
-    /// The body's twists over the compatible rates (columns, physical units).
-    fn body_twists(&self, body: usize, screws: &[Twist], locked: &[bool]) -> DMatrix<f64> {
+    /// The twist space of `body` in the dimensionless form ([`Mechanism::unitless_twists`]): an
+    /// orthonormal basis and the rank decision. The body's twists are its dimensionless Jacobian
+    /// over an orthonormal basis of the compatible (dimensionless) joint rates, so their size is
+    /// judged against the norm of that Jacobian (unit screws), not against their own largest
+    /// value, which is round-off when the body cannot move.
+    pub(crate) fn unitless_twist_space(
+        &self,
+        body: usize,
+        screws: &[Twist],
+        locked: &[bool],
+    ) -> (DMatrix<f64>, screw::Rank) {
         let free = self.free(locked);
-        let m = self.mobility_with(screws, locked);
-        let j = self.body_jacobian(body, screws);
+        let (rates, _) = self.unitless_rates(screws, &free);
+        let j = self.dimensionless(&self.body_jacobian(body, screws));
         let jf = DMatrix::from_fn(6, free.len(), |r, k| j[(r, free[k])]);
-        jf * m.rates
+        let norm = jf.norm();
+        screw::span_basis_scaled(&(jf * rates), MOBILITY_TOLERANCE, Some(norm.max(1.0)))
     }
 
     /// Closes the loops by Newton's method from `q` with the `locked` joints held, and when
@@ -553,13 +650,10 @@ impl Mechanism {
                 rhs = rhs.insert_rows(n, 6, 0.0);
                 rhs.rows_mut(n, 6).copy_from(&(-e));
             }
-            let scaled_rhs = DVector::from_fn(rhs.len(), |r, _| {
-                if r % 6 >= 3 {
-                    rhs[r] / self.scale
-                } else {
-                    rhs[r]
-                }
-            });
+            let scaled_rhs = self
+                .unitless_twists(&DMatrix::from_column_slice(rhs.len(), 1, rhs.as_slice()))
+                .column(0)
+                .into_owned();
             residual = scaled_rhs.amax();
             if residual < tolerance {
                 return Ok(q);
@@ -604,22 +698,38 @@ fn solve_least_squares(a: &DMatrix<f64>, b: &DVector<f64>) -> DVector<f64> {
     x
 }
 
-/// The characteristic length of a set of joints (see [`Mechanism::scale`]).
-fn length_scale(joints: &[JointSpec]) -> f64 {
-    let points: Vec<&Vector3<f64>> = joints
+/// The characteristic point and length of a set of joints (see [`Mechanism::scale`] and
+/// [`Mechanism::centre`]): the centroid of the revolute axis points (of every joint point when
+/// there is no revolute) and their RMS distance from it.
+fn characteristic(joints: &[JointSpec]) -> (Vector3<f64>, f64) {
+    let revolutes: Vec<Vector3<f64>> = joints
         .iter()
         .filter(|j| j.kind == Primitive::R)
-        .map(|j| &j.point)
+        .map(|j| j.point)
         .collect();
+    let points = if revolutes.is_empty() {
+        joints.iter().map(|j| j.point).collect()
+    } else {
+        revolutes
+    };
     if points.is_empty() {
-        return 1.0;
+        return (Vector3::zeros(), 1.0);
     }
-    let centroid = points.iter().fold(Vector3::zeros(), |s, p| s + *p) / points.len() as f64;
-    let r = points
+    let n = points.len() as f64;
+    let centroid = points.iter().fold(Vector3::zeros(), |s, p| s + p) / n;
+    let rms = (points
         .iter()
-        .map(|p| (*p - centroid).norm())
-        .fold(0.0, f64::max);
-    if r > 1e-12 { r } else { 1.0 }
+        .map(|p| (p - centroid).norm_squared())
+        .sum::<f64>()
+        / n)
+        .sqrt();
+    // All points coincide (e.g. a spherical mechanism): no length enters the kinematics, so any
+    // unit works.
+    if rms > 1e-9 * centroid.norm() && rms > 1e-150 {
+        (centroid, rms)
+    } else {
+        (centroid, 1.0)
+    }
 }
 
 /// The inverse displacement.

@@ -1,17 +1,30 @@
 //! Finite motion of a body, sampled by position-level loop closure and classified among the 12
-//! displacement groups or as `nTmR`.
+//! displacement groups or as `nTmR`; random assemblies of a mechanism.
 //!
 //! From an assembled configuration the mechanism is walked along random directions of its
 //! compatible joint rates; after every step Newton's method closes the loops again, so the
 //! samples are true (finite) configurations, not points of the tangent space. The twist spaces of
 //! the body at the samples decide the pattern ([`crate::motion::classify`]): a group when they are
 //! one Lie subalgebra at every sample.
+//!
+//! **Why a group claim can be trusted.** Each step has a continuous random length (uniform in
+//! `[0.5, 1.5] × step`) and an isotropic random direction in the space of compatible rates, so a
+//! walk's end has a continuous distribution over the configurations near the start. A motion
+//! that is not a group has a twist space that varies analytically along the motion; the pairs of
+//! configurations at which two such spaces coincide form a set of measure zero, which continuous
+//! samples miss with probability one. Samples that (nearly) coincide would prove nothing, so a
+//! walk whose body pose ends closer than [`MIN_SEPARATION`] to an earlier sample is walked again,
+//! and the smallest pose distance between samples is reported: a group is claimed only when at
+//! least two samples are that far apart, so that the samples could have shown otherwise
+//! (`docs/verification.md`).
 
-use super::{Mechanism, MechanismError};
-use crate::motion::{self, Classification, Pattern};
-use nalgebra::DMatrix;
+use super::{Mechanism, MechanismError, compose, inverse, log};
+use crate::chain::Displacement;
+use crate::motion::{self, Classification, MIN_SEPARATION, Pattern};
+use nalgebra::{DMatrix, DVector, Vector3};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
+use rand_distr::StandardNormal;
 use serde::Serialize;
 
 /// How a finite motion is sampled.
@@ -21,9 +34,10 @@ pub struct SampleSettings {
     pub samples: usize,
     /// Newton-corrected steps per walk.
     pub steps: usize,
-    /// Length of a step in joint space (radians; prismatic values over the length scale).
+    /// Mean length of a step in joint space (radians; prismatic values over the length scale);
+    /// each step's length is uniform in `[0.5, 1.5] × step`.
     pub step: f64,
-    /// Seed of the walk directions.
+    /// Seed of the walk directions and lengths.
     pub seed: u64,
 }
 
@@ -38,19 +52,94 @@ impl Default for SampleSettings {
     }
 }
 
+/// Walks tried per sample before a sample too close to the others is accepted (and the group
+/// claim refused).
+const WALK_ATTEMPTS: usize = 16;
+
 /// One sampled configuration and the body's twist space there.
 #[derive(Debug, Clone)]
 pub struct MotionSample {
     /// Joint values (assembled).
     pub q: Vec<f64>,
-    /// Orthonormal basis of the body's spatial twists, in the dimensionless form (translational
-    /// rows over the length scale).
+    /// The body's displacement from its reference pose.
+    pub pose: Displacement,
+    /// Orthonormal basis of the body's spatial twists in the dimensionless form
+    /// ([`Mechanism::unitless_twists`]: at the centre, translations over the length scale).
     pub twists: DMatrix<f64>,
 }
 
+/// The sampled finite motion of a body.
+#[derive(Debug, Clone)]
+pub struct SampledMotion {
+    /// The samples.
+    pub samples: Vec<MotionSample>,
+    /// The smallest distance between the body poses of two samples (dimensionless, see
+    /// [`MIN_SEPARATION`]); infinite with fewer than two samples.
+    pub min_separation: f64,
+}
+
 impl Mechanism {
+    /// The distance between two displacements of a body: the size of the screw that carries
+    /// one to the other, in the dimensionless form (radians; translation of the centre over the
+    /// length scale).
+    #[must_use]
+    pub fn pose_distance(&self, a: &Displacement, b: &Displacement) -> f64 {
+        let e = log(&compose(b, &inverse(a))).to_vector();
+        let d = self.unitless_twists(&DMatrix::from_column_slice(6, 1, e.as_slice()));
+        d.norm()
+    }
+
+    /// One random walk of `settings.steps` Newton-corrected steps from the assembled `start`.
+    fn walk(
+        &self,
+        start: &[f64],
+        locked: &[bool],
+        free: &[usize],
+        settings: &SampleSettings,
+        rng: &mut ChaCha8Rng,
+    ) -> Result<Vec<f64>, MechanismError> {
+        let mut q = start.to_vec();
+        for _ in 0..settings.steps {
+            let m = self.mobility(&q, locked);
+            if m.dof == 0 {
+                break;
+            }
+            // An isotropic direction in the dimensionless compatible rates.
+            let coefficients = DVector::from_fn(m.dof, |_, _| rng.sample::<f64, _>(StandardNormal));
+            let mut direction = &m.rates * coefficients;
+            for (k, &j) in free.iter().enumerate() {
+                direction[k] /= self.unit(j);
+            }
+            let norm = direction.norm();
+            if norm < 1e-15 {
+                break;
+            }
+            direction /= norm;
+            let mut h = settings.step * rng.random_range(0.5..1.5);
+            // The step, halved until the loops close again (five tries).
+            let mut attempt = Err(MechanismError::NotAssembled {
+                residual: f64::NAN,
+                iterations: 0,
+            });
+            for _ in 0..5 {
+                let mut trial = q.clone();
+                for (k, &j) in free.iter().enumerate() {
+                    trial[j] += h * direction[k] * self.unit(j);
+                }
+                attempt = self.assemble(&trial, locked, None);
+                if attempt.is_ok() {
+                    break;
+                }
+                h /= 2.0;
+            }
+            q = attempt?;
+        }
+        Ok(q)
+    }
+
     /// Samples the finite motion of `body` from the assembled configuration `start` with the
-    /// `locked` joints held.
+    /// `locked` joints held: `settings.samples` random walks, each walked again (up to 16 times)
+    /// while its body pose ends closer than [`MIN_SEPARATION`] to an earlier sample's.
     ///
     /// # Errors
     /// When Newton's method cannot close the loops even after halving a step four times (the
@@ -61,72 +150,72 @@ impl Mechanism {
         start: &[f64],
         locked: &[bool],
         settings: &SampleSettings,
-    ) -> Result<Vec<MotionSample>, MechanismError> {
+    ) -> Result<SampledMotion, MechanismError> {
         let start = self.assemble(start, locked, None)?;
         let mut rng = ChaCha8Rng::seed_from_u64(settings.seed);
-        let mut samples = Vec::with_capacity(settings.samples);
+        let free = self.free(locked);
+        let mut samples: Vec<MotionSample> = Vec::with_capacity(settings.samples);
+        let mut min_separation = f64::INFINITY;
         for _ in 0..settings.samples.max(1) {
-            let mut q = start.clone();
-            for _ in 0..settings.steps {
-                let m = self.mobility(&q, locked);
-                if m.dof == 0 {
+            let mut best: Option<(f64, Vec<f64>, Displacement)> = None;
+            for _ in 0..WALK_ATTEMPTS {
+                let q = self.walk(&start, locked, &free, settings, &mut rng)?;
+                let pose = self.poses(&q)[body];
+                let nearest = samples
+                    .iter()
+                    .map(|s| self.pose_distance(&s.pose, &pose))
+                    .fold(f64::INFINITY, f64::min);
+                if best.as_ref().is_none_or(|(d, _, _)| nearest > *d) {
+                    best = Some((nearest, q, pose));
+                }
+                if nearest >= MIN_SEPARATION {
                     break;
                 }
-                let coefficients =
-                    nalgebra::DVector::from_fn(m.dof, |_, _| rng.random_range(-1.0..1.0));
-                let free: Vec<usize> = (0..self.joints.len())
-                    .filter(|&j| !locked.get(j).copied().unwrap_or(false))
-                    .collect();
-                // The direction in dimensionless joint units, normalised.
-                let mut direction = &m.rates * coefficients;
-                for (k, &j) in free.iter().enumerate() {
-                    direction[k] /= self.unit(j);
-                }
-                let norm = direction.norm();
-                if norm < 1e-15 {
-                    break;
-                }
-                direction /= norm;
-                // The step, halved until the loops close again (five tries).
-                let mut h = settings.step;
-                let mut attempt = Err(MechanismError::NotAssembled {
-                    residual: f64::NAN,
-                    iterations: 0,
-                });
-                for _ in 0..5 {
-                    let mut trial = q.clone();
-                    for (k, &j) in free.iter().enumerate() {
-                        trial[j] += h * direction[k] * self.unit(j);
-                    }
-                    attempt = self.assemble(&trial, locked, None);
-                    if attempt.is_ok() {
-                        break;
-                    }
-                    h /= 2.0;
-                }
-                q = attempt?;
             }
-            let (twists, _) = self.twist_space(body, &q, locked);
-            samples.push(MotionSample {
-                twists: self.dimensionless_twists(&twists),
-                q,
-            });
+            let Some((nearest, q, pose)) = best else {
+                break;
+            };
+            min_separation = min_separation.min(nearest);
+            let screws = self.joint_screws(&q);
+            let (twists, _) = self.unitless_twist_space(body, &screws, locked);
+            samples.push(MotionSample { q, pose, twists });
         }
-        Ok(samples)
+        Ok(SampledMotion {
+            samples,
+            min_separation,
+        })
     }
 
-    /// Twists with their translational rows over the length scale.
-    fn dimensionless_twists(&self, twists: &DMatrix<f64>) -> DMatrix<f64> {
-        let mut out = twists.clone();
-        for r in 3..6 {
-            out.row_mut(r).scale_mut(1.0 / self.scale);
-        }
-        out
+    /// Assemblies of the mechanism scattered around `start`: the free joints moved by
+    /// independent normal amounts of standard deviation `spread` (radians; prismatic values over
+    /// the length scale), then closed by Newton's method. Those that do not close are dropped.
+    /// These are the generic configurations against which a configuration's ranks are judged: a
+    /// singular set has measure zero, so random assemblies miss it.
+    #[must_use]
+    pub fn random_assemblies(
+        &self,
+        start: &[f64],
+        locked: &[bool],
+        count: usize,
+        spread: f64,
+        seed: u64,
+    ) -> Vec<Vec<f64>> {
+        let mut rng = ChaCha8Rng::seed_from_u64(seed);
+        let free = self.free(locked);
+        (0..count)
+            .filter_map(|_| {
+                let mut q = start.to_vec();
+                for &j in &free {
+                    q[j] += spread * rng.sample::<f64, _>(StandardNormal) * self.unit(j);
+                }
+                self.assemble(&q, locked, None).ok()
+            })
+            .collect()
     }
 
     /// The motion pattern of `body` with the `locked` joints held, from finite motion sampled
     /// from `start` ([`Mechanism::sample_motion`]). Points and pitches of the group are in the
-    /// mechanism's length unit.
+    /// mechanism's length unit; the point of an axis is the one nearest the ground origin.
     ///
     /// # Errors
     /// As [`Mechanism::sample_motion`].
@@ -137,11 +226,20 @@ impl Mechanism {
         locked: &[bool],
         settings: &SampleSettings,
     ) -> Result<Classification, MechanismError> {
-        let samples = self.sample_motion(body, start, locked, settings)?;
-        let spans: Vec<DMatrix<f64>> = samples.into_iter().map(|s| s.twists).collect();
-        let mut c = motion::classify(&spans, motion::SUBSPACE_TOLERANCE);
+        let motion = self.sample_motion(body, start, locked, settings)?;
+        let spans: Vec<DMatrix<f64>> = motion.samples.into_iter().map(|s| s.twists).collect();
+        let mut c = motion::classify(&spans, motion.min_separation, motion::SUBSPACE_TOLERANCE);
         if let Pattern::Group(g) = &mut c.pattern {
-            g.point = g.point.map(|p| p.map(|x| x * self.scale));
+            // From the dimensionless form (about the centre, over the length scale) to the
+            // mechanism's units, the axis point taken nearest the ground origin.
+            g.point = g.point.map(|p| {
+                let mut x = self.centre + Vector3::from(p) * self.scale;
+                if let Some(d) = g.direction {
+                    let d = Vector3::from(d);
+                    x -= d * d.dot(&x);
+                }
+                x.into()
+            });
             g.pitch = g.pitch.map(|p| p * self.scale);
         }
         Ok(c)
