@@ -459,6 +459,20 @@ library!(
     }
 );
 
+// First principles (the file's source), after Kong & Gosselin: X(u_1) ∩ X(u_2) ∩ G(n) = the
+// translations normal to n, T2(n), 2 dof; the slider rates are u_i·v. Legs 1 and 2 have couple
+// constraints, leg 3 a force along n and two couples.
+library!(
+    translational_2_crr_rrr,
+    "2t-crr-rrr",
+    2,
+    Motion::Group {
+        kind: GroupKind::T2,
+        direction: Some(Vector3::new(0.1, 0.2, 1.0)),
+        point: None,
+    }
+);
+
 #[test]
 fn the_library_has_at_least_twelve_hand_written_files_with_a_source() {
     // Issue 8: at least 12 manipulators written by hand, each citing its source; none is the
@@ -479,4 +493,74 @@ fn the_library_has_at_least_twelve_hand_written_files_with_a_source() {
         }
     }
     assert!(count >= 12, "{count} files");
+}
+
+#[test]
+fn finite_differences_of_the_couple_constrained_legs_match_hand_derived_rates() {
+    // The finite-difference method itself, checked where kinsyn's J_I is in doubt (issue 8 bug
+    // 1): at the reference, along the platform motions the literature allows (translations;
+    // for the 4-RUU also the rotation about z through P), each input's rate from assemble_at
+    // equals a rate derived by hand from the leg's geometry, with v_C = v_P + ω × (C − P) the
+    // velocity of the leg's platform point C:
+    // - 3-UPU: the slider is the distance |C − A| of the U centres, so ḋ = f·v_C, f = (C − A)/|C − A|;
+    // - 3-CRR and the CRR legs of the 2-dof translational one: revolutes about axes parallel to u move no point along u, so u·(C − A) changes by
+    //   the slider alone: ḋ = u·v_C;
+    // - 3-RUU, 4-RUU: the middle link keeps its length |C − B| and B turns about the base R
+    //   (v_B = θ̇ u × (B − A)), so f·(v_C − v_B) = 0 with f = (C − B)/|C − B|:
+    //   θ̇ = f·v_C / (((B − A) × f)·u).
+    use kinsyn::manipulator::file::{AxisSpec, Description};
+    for name in ["3-upu", "3-crr", "3-ruu", "4-ruu", "2t-crr-rrr"] {
+        let text = std::fs::read_to_string(format!("tests/library/{name}.json")).unwrap();
+        let d = Description::from_json(&text).unwrap();
+        let m = load(name);
+        let q = m.reference();
+        let frame = m.platform_frame(&q);
+        let p = m.point(&q);
+        let mut twists = vec![
+            (Vector3::zeros(), Vector3::x()),
+            (Vector3::zeros(), Vector3::y()),
+            (Vector3::zeros(), Vector3::z()),
+        ];
+        if name == "4-ruu" {
+            twists.push((Vector3::z(), Vector3::zeros()));
+        }
+        if name == "2t-crr-rrr" {
+            // Only the translations normal to n.
+            let n = Vector3::new(0.1, 0.2, 1.0).normalize();
+            let e1 = n.cross(&Vector3::x()).normalize();
+            twists = vec![(Vector3::zeros(), e1), (Vector3::zeros(), n.cross(&e1))];
+        }
+        for (w, vp) in twists {
+            let v = vp - w.cross(&p); // the velocity of the point at the origin
+            let plus = solve(&m, &frame, &w, &v, H).unwrap();
+            let minus = solve(&m, &frame, &w, &v, -H).unwrap();
+            for (i, leg) in d.legs.iter().enumerate() {
+                let Some(act) = m.actuators().iter().find(|a| a.leg == i) else {
+                    continue; // the passive RRR leg of the 2-dof translational manipulator
+                };
+                let fd = (plus[act.joint] - minus[act.joint]) / (2.0 * H);
+                let a = Vector3::from(leg.base);
+                let c = frame.0 * Vector3::from(leg.platform) + frame.1;
+                let vc = vp + w.cross(&(c - p));
+                let AxisSpec::Vector(u) = leg.axes.as_ref().unwrap()[0] else {
+                    panic!("{name}: the first axis is a vector")
+                };
+                let u = Vector3::from(u).normalize();
+                let expected = match name {
+                    "3-upu" => (c - a).normalize().dot(&vc),
+                    "3-crr" | "2t-crr-rrr" => u.dot(&vc),
+                    _ => {
+                        let b = Vector3::from(leg.points.as_ref().unwrap()[0]);
+                        let f = (c - b).normalize();
+                        f.dot(&vc) / (b - a).cross(&f).dot(&u)
+                    }
+                };
+                assert!(
+                    (fd - expected).abs() < 1e-6 * (1.0 + expected.abs()),
+                    "{name}, leg {}, twist ω {w:?} v_P {vp:?}: finite difference {fd} vs {expected}",
+                    i + 1
+                );
+            }
+        }
+    }
 }
