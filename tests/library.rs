@@ -374,9 +374,9 @@ library!(prs_3, "3-prs", 3, Motion::NonGroup("1T2R"));
 // Hunt 1983; Lee & Shah 1988: the 3-RPS has 3 dof, 1T2R with parasitic motion (paper 000 §5.2).
 library!(rps_3, "3-rps", 3, Motion::NonGroup("1T2R"));
 
-// Tsai & Joshi 2002: the RUU leg with the base R and the outer U axes parallel and the inner U
-// axes parallel has one constraint couple (perpendicular to both directions); three independent
-// couples leave T3, 3 dof. The actuation wrench of the base R is the force along the middle link.
+// Kong & Gosselin 2004 (type synthesis of TPMs): the RUU leg with the base R and the outer U
+// axes parallel and the inner U axes parallel has one constraint couple (perpendicular to both
+// directions); three independent couples leave T3, 3 dof. The actuation wrench of the base R is the force along the middle link.
 library!(ruu_3_translational, "3-ruu", 3, group(GroupKind::T3));
 
 // Gosselin & Angeles 1989: all axes through N = (0.1, −0.2, 0.6): S(N), 3 dof. The actuation
