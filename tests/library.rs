@@ -289,7 +289,7 @@ fn poses(m: &Manipulator) -> Vec<(String, Vec<f64>)> {
         .sample_motion(m.platform(), &m.reference(), &[], &settings)
         .expect("the platform moves");
     let mut out = vec![("reference".to_string(), m.reference())];
-    for walk in walks {
+    for walk in walks.samples {
         let (r, o) = m.platform_frame(&walk.q);
         let q = m
             .assemble_at(o, rotation_vector(&r), &[])

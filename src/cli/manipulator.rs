@@ -67,10 +67,11 @@ pub fn modes(path: &Path, settings: &SampleSettings, as_json: bool) -> Result<St
         .max(6);
     let _ = writeln!(s, "{:<width$}  dof  pattern", "locked");
     for mode in &modes.modes {
-        let note = match (&mode.error, mode.group) {
-            (Some(e), _) => format!("  ({e})"),
-            (None, true) => "  group".into(),
-            (None, false) => String::new(),
+        let note = match (&mode.error, mode.group, &mode.parameters) {
+            (Some(e), _, _) => format!("  ({e})"),
+            (None, true, Some(p)) => format!("  group, {p}"),
+            (None, true, None) => "  group".into(),
+            (None, false, _) => String::new(),
         };
         let _ = writeln!(
             s,
@@ -90,7 +91,17 @@ pub fn modes(path: &Path, settings: &SampleSettings, as_json: bool) -> Result<St
         }
     );
     for g in &modes.groups {
-        let _ = writeln!(s, "  {:<8} lock {}", g.pattern, g.lock_sets.join(" | "));
+        let parameters = g
+            .parameters
+            .as_ref()
+            .map(|p| format!(" ({p})"))
+            .unwrap_or_default();
+        let _ = writeln!(
+            s,
+            "  {:<8} lock {}{parameters}",
+            g.pattern,
+            g.lock_sets.join(" | ")
+        );
     }
     if !modes.non_groups.is_empty() {
         let _ = writeln!(s, "non-group patterns:");

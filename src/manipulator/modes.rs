@@ -8,7 +8,8 @@
 
 use super::Manipulator;
 use crate::mechanism::SampleSettings;
-use crate::motion::Classification;
+use crate::motion::{Classification, Group, GroupKind, Pattern};
+use nalgebra::Vector3;
 use rayon::prelude::*;
 use serde::Serialize;
 use std::collections::BTreeMap;
@@ -27,6 +28,11 @@ pub struct Mode {
     pub pattern: String,
     /// Whether the pattern is one of the 12 displacement groups.
     pub group: bool,
+    /// The group's parameters in words, in the file's length unit: the axis point of R, H and
+    /// C (the point of the axis nearest the ground origin), the centre of S, the pitch of H and
+    /// Y; `None` for groups without them and for non-group patterns.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub parameters: Option<String>,
     /// The classification (with the group's point and pitch), when sampled.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub classification: Option<Classification>,
@@ -40,6 +46,9 @@ pub struct Mode {
 pub struct PatternModes {
     /// The pattern's text form.
     pub pattern: String,
+    /// The group's parameters in words (see [`Mode::parameters`]).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub parameters: Option<String>,
     /// The minimal lock sets (no proper subset gives the same pattern), as label lists.
     pub lock_sets: Vec<String>,
 }
@@ -84,6 +93,10 @@ impl Manipulator {
                 dof: c.dof,
                 pattern: c.pattern.to_string(),
                 group: c.pattern.is_group(),
+                parameters: match &c.pattern {
+                    Pattern::Group(g) => self.parameters(g),
+                    Pattern::NonGroup { .. } => None,
+                },
                 classification: Some(c),
                 error: None,
             },
@@ -93,10 +106,66 @@ impl Manipulator {
                 dof: 0,
                 pattern: "?".into(),
                 group: false,
+                parameters: None,
                 classification: None,
                 error: Some(e.to_string()),
             },
         }
+    }
+
+    /// A group's parameters in words, in the file's length unit (see [`Mode::parameters`]).
+    fn parameters(&self, g: &Group) -> Option<String> {
+        let unit = &self.units.length;
+        let point = |p: &[f64; 3]| {
+            format!(
+                "[{}, {}, {}] {unit}",
+                number(p[0], self.mechanism.scale()),
+                number(p[1], self.mechanism.scale()),
+                number(p[2], self.mechanism.scale())
+            )
+        };
+        let pitch = |h: f64| format!("pitch {} {unit}/rad", number(h, self.mechanism.scale()));
+        let parts: Vec<String> = match g.kind {
+            GroupKind::R | GroupKind::C => g.point.iter().map(|p| format!("axis through {}", point(p))).collect(),
+            GroupKind::H => g
+                .point
+                .iter()
+                .map(|p| format!("axis through {}", point(p)))
+                .chain(g.pitch.map(pitch))
+                .collect(),
+            GroupKind::S => g.point.iter().map(|p| format!("centre {}", point(p))).collect(),
+            GroupKind::Y => g.pitch.map(pitch).into_iter().collect(),
+            _ => Vec::new(),
+        };
+        (!parts.is_empty()).then(|| parts.join(", "))
+    }
+
+    /// What tells two displacement subgroups apart: the pattern (kind and direction) and its
+    /// parameters made dimensionless (about the centre, over the length scale) and rounded, so
+    /// that the same subgroup reached by two lock sets is counted once whatever the unit.
+    fn subgroup_key(&self, mode: &Mode) -> String {
+        let Some(Pattern::Group(g)) = mode.classification.as_ref().map(|c| c.pattern) else {
+            return mode.pattern.clone();
+        };
+        let m = &self.mechanism;
+        let round = |x: f64| format!("{:.4}", (x * 1e4).round() / 1e4 + 0.0);
+        let mut key = mode.pattern.clone();
+        if let Some(p) = g.point {
+            let d = (Vector3::from(p) - m.centre()) / m.scale();
+            // An axis point: the one nearest the centre, so that any point of the axis gives it.
+            let d = match g.direction {
+                Some(u) => {
+                    let u = Vector3::from(u);
+                    d - u * u.dot(&d)
+                }
+                None => d,
+            };
+            key += &format!(" [{}, {}, {}]", round(d.x), round(d.y), round(d.z));
+        }
+        if let Some(h) = g.pitch {
+            key += &format!(" {}", round(h / m.scale()));
+        }
+        key
     }
 
     /// Labels of a set of inputs, space separated, `-` for none.
@@ -144,13 +213,15 @@ impl Manipulator {
         let mut by_pattern: BTreeMap<(bool, String), Vec<&Mode>> = BTreeMap::new();
         for m in modes.iter().filter(|m| m.error.is_none()) {
             by_pattern
-                .entry((!m.group, m.pattern.clone()))
+                .entry((!m.group, self.subgroup_key(m)))
                 .or_default()
                 .push(m);
         }
         let mut groups = Vec::new();
         let mut non_groups = Vec::new();
-        for ((non_group, pattern), ms) in by_pattern {
+        for ((non_group, _), ms) in by_pattern {
+            let pattern = ms[0].pattern.clone();
+            let parameters = ms[0].parameters.clone();
             let minimal: Vec<String> = ms
                 .iter()
                 .filter(|m| {
@@ -163,6 +234,7 @@ impl Manipulator {
                 .collect();
             let entry = PatternModes {
                 pattern,
+                parameters,
                 lock_sets: minimal,
             };
             if non_group {
@@ -194,5 +266,20 @@ impl Manipulator {
             groups,
             non_groups,
         })
+    }
+}
+
+/// A length printed with six significant digits relative to the mechanism's scale: values below
+/// a millionth of it are round-off and print as 0.
+fn number(x: f64, scale: f64) -> String {
+    if x.abs() < 1e-6 * scale {
+        return "0".into();
+    }
+    let digits = (6 - (x.abs().log10().floor() as i32) - 1).clamp(0, 12) as usize;
+    let text = format!("{x:.digits$}");
+    if text.contains('.') {
+        text.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        text
     }
 }
