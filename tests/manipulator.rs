@@ -585,3 +585,159 @@ fn every_verified_catalogue_chain_builds_a_six_dof_manipulator() {
         assert_eq!(dof, 6, "{} {}: {:?}", e.id, e.notation, d.source);
     }
 }
+
+#[test]
+fn the_three_prrr_sliders_drive_the_platform() {
+    // Issue 8 bug 1: each PRRR leg's constraints are two couples (perpendicular to its axis
+    // direction u_i), and the old wrench selection took one of them as the slider's actuation
+    // wrench (J_I = 0, false inverse and architecture singularities). Hand derivation: a force
+    // along u_i is reciprocal to the three revolutes (parallel lines) and does work 1 on the
+    // slider (f·u_i = 1), so J_I = 1 and the row's force is u_i (up to the row's sign).
+    let d = description("3-prrr");
+    let m = load("3-prrr");
+    let a = m
+        .analyse(&m.reference(), &[], &SampleSettings::default())
+        .unwrap();
+    assert!(a.singularities.is_empty(), "{:?}", a.singularities);
+    assert_eq!((a.platform_dof, a.jd_rank.rank), (3, 6));
+    for (i, leg) in d.legs.iter().enumerate() {
+        let kinsyn::manipulator::file::AxisSpec::Vector(u) = leg.axes.as_ref().unwrap()[0] else {
+            panic!()
+        };
+        let u = Vector3::from(u).normalize();
+        let k = a
+            .jacobians
+            .rows
+            .iter()
+            .position(|r| r.kind == RowKind::Actuation { actuator: i })
+            .unwrap();
+        let row = &a.jacobians.rows[k];
+        assert!(
+            (row.input - 1.0).abs() < 1e-12,
+            "leg {i}: J_I {}",
+            row.input
+        );
+        let f = Vector3::new(row.wrench[0], row.wrench[1], row.wrench[2]);
+        assert!(
+            f.cross(&u).norm() < 1e-12 && (f.norm() - 1.0).abs() < 1e-12,
+            "{f} vs {u}"
+        );
+    }
+    // Locking a slider removes a dof, as the J_I entry says (modes agreed all along).
+    let locked = m.mode(&[1], &SampleSettings::default());
+    assert_eq!(locked.dof, 2);
+}
+
+#[test]
+fn extreme_units_give_the_answers_of_the_metre() {
+    // Issue 8 bug 2: the 3-PRRR with lengths ×1e±3 gave other ranks and singularities, and the
+    // 3-UPS ×1e-9 "platform dof 5" with every input without effect. A unit is a choice: the
+    // answers at ×1e-9 and ×1e9 must be those of the file (tests/invariance.rs checks every
+    // file and exponent; these are the reported cases).
+    for name in ["3-prrr", "3-ups"] {
+        let d = description(name);
+        let summary = |m: &Manipulator| {
+            let a = m
+                .analyse(&m.reference(), &[], &SampleSettings::default())
+                .unwrap();
+            (
+                a.platform_dof,
+                a.jd_rank.rank,
+                a.constraint_rank.rank,
+                a.singularities.len(),
+                a.jacobians.without_wrench.len(),
+            )
+        };
+        let want = summary(&load(name));
+        assert_eq!(want.3 + want.4, 0, "{name}: no singularity in metres");
+        for k in [1e-9, 1e-3, 1e3, 1e9] {
+            let mut s = d.clone();
+            let scale = |p: &mut [f64; 3]| p.iter_mut().for_each(|x| *x *= k);
+            scale(&mut s.platform.position);
+            scale(&mut s.platform.point);
+            for leg in &mut s.legs {
+                scale(&mut leg.base);
+                scale(&mut leg.platform);
+                if let Some(points) = &mut leg.points {
+                    points.iter_mut().for_each(scale);
+                }
+            }
+            assert_eq!(
+                summary(&Manipulator::new(&s).unwrap()),
+                want,
+                "{name} × {k:e}"
+            );
+        }
+    }
+}
+
+#[test]
+fn a_leg_singular_reference_has_one_dof_and_is_flagged() {
+    // Issue 8 bug 3: the planar 3-RRR with its `points` removed puts each leg's middle joint on
+    // the line from base to platform. Hand derivation: three parallel revolutes through
+    // collinear points span only two twists (the leg cannot move along its line), each
+    // revolute depends on the other two, and three such legs meeting the platform at points
+    // whose lines are not concurrent leave it no instantaneous motion: platform dof 0 (not 3),
+    // while the joint rates keep 3 internal motions. The old code printed "platform dof 3
+    // (twist space) = 0 (wrenches)" and no singularity.
+    let mut d = description("3-rrr-planar");
+    for leg in &mut d.legs {
+        leg.points = None;
+    }
+    let m = Manipulator::new(&d).unwrap();
+    let a = m
+        .analyse(&m.reference(), &[], &SampleSettings::default())
+        .unwrap();
+    assert_eq!((a.mobility, a.platform_dof), (3, 0));
+    // One answer: the loop-closure twist space (second method) agrees.
+    assert_eq!(
+        m.mechanism()
+            .twist_space(m.platform(), &m.reference(), &[])
+            .1,
+        0
+    );
+    use kinsyn::manipulator::SingularityKind::{Inverse, Leg};
+    for kind in [Inverse, Leg] {
+        assert_eq!(
+            a.singularities.iter().filter(|s| s.kind == kind).count(),
+            3,
+            "{kind:?}: {:?}",
+            a.singularities
+        );
+    }
+    assert_eq!(a.generic.legs, vec![3, 3, 3]);
+    assert!(a.jacobians.leg_ranks.iter().all(|r| r.rank == 2));
+}
+
+#[test]
+fn the_three_ppps_reaches_no_helical_motion() {
+    // Issue 8 bug 4: a 3-PPPS built from T1-001 (three sliders and a spherical joint per leg)
+    // reported "5 of the 12 kinds (E R H S D)" for some seeds; H was a one-dof walk whose
+    // samples coincided. First principles: every joint axis of the legs is fixed in direction
+    // (three sliders) or passes through one point of the platform (the S), so a one-dof motion
+    // with legs locked is a rotation about a line through S centres, never a screw motion of
+    // non-zero pitch. Over 20 seeds the kinds reached are the same and never include H.
+    use kinsyn::manipulator::build::{BuildSpec, build};
+    let d = build(&BuildSpec {
+        chain: "T1-001".into(),
+        actuated: Some(vec![1, 2, 3]),
+        ..Default::default()
+    })
+    .unwrap();
+    let m = Manipulator::new(&d).unwrap();
+    let kinds: std::collections::BTreeSet<Vec<String>> = (0..20)
+        .map(|seed| {
+            m.modes(&SampleSettings {
+                seed,
+                ..SampleSettings::default()
+            })
+            .unwrap()
+            .group_kinds
+        })
+        .collect();
+    assert_eq!(kinds.len(), 1, "{kinds:?}");
+    assert!(
+        !kinds.iter().next().unwrap().contains(&"H".to_string()),
+        "{kinds:?}"
+    );
+}

@@ -126,14 +126,22 @@ impl Manipulator {
         };
         let pitch = |h: f64| format!("pitch {} {unit}/rad", number(h, self.mechanism.scale()));
         let parts: Vec<String> = match g.kind {
-            GroupKind::R | GroupKind::C => g.point.iter().map(|p| format!("axis through {}", point(p))).collect(),
+            GroupKind::R | GroupKind::C => g
+                .point
+                .iter()
+                .map(|p| format!("axis through {}", point(p)))
+                .collect(),
             GroupKind::H => g
                 .point
                 .iter()
                 .map(|p| format!("axis through {}", point(p)))
                 .chain(g.pitch.map(pitch))
                 .collect(),
-            GroupKind::S => g.point.iter().map(|p| format!("centre {}", point(p))).collect(),
+            GroupKind::S => g
+                .point
+                .iter()
+                .map(|p| format!("centre {}", point(p)))
+                .collect(),
             GroupKind::Y => g.pitch.map(pitch).into_iter().collect(),
             _ => Vec::new(),
         };
