@@ -15,6 +15,15 @@ pub fn load(path: &Path) -> Result<Manipulator, CliError> {
     Manipulator::from_json(&text).map_err(|e| CliError::Input(format!("{}: {e}", path.display())))
 }
 
+/// Prints each leg warning of `m` on stderr as one line `warning: FILE: …`, and returns them.
+fn warn(path: &Path, m: &Manipulator) -> Vec<String> {
+    let warnings: Vec<String> = m.leg_warnings().iter().map(ToString::to_string).collect();
+    for w in &warnings {
+        eprintln!("warning: {}: {w}", path.display());
+    }
+    warnings
+}
+
 /// `kinsyn build`: writes a description (to `output`, or returns it for stdout).
 pub fn build_command(spec: &BuildSpec, output: Option<&Path>) -> Result<String, CliError> {
     let description = build(spec).map_err(CliError::Input)?;
@@ -42,6 +51,7 @@ pub fn build_command(spec: &BuildSpec, output: Option<&Path>) -> Result<String, 
 /// `kinsyn modes`.
 pub fn modes(path: &Path, settings: &SampleSettings, as_json: bool) -> Result<String, CliError> {
     let m = load(path)?;
+    warn(path, &m);
     let modes = m.modes(settings).map_err(CliError::Input)?;
     if as_json {
         return Ok(json(&modes));
@@ -132,6 +142,7 @@ pub fn analyze(
     as_json: bool,
 ) -> Result<String, CliError> {
     let m = load(path)?;
+    let warnings = warn(path, &m);
     let locked = match lock {
         Some(text) => m
             .parse_locks(text)
@@ -150,7 +161,7 @@ pub fn analyze(
         .analyse(&q, &locked, settings)
         .map_err(|e| CliError::Input(e.to_string()))?;
     if as_json {
-        return Ok(json(&analysis_json(&m, &a)));
+        return Ok(json(&analysis_json(&m, &a, &warnings)));
     }
     Ok(analysis_text(&m, &a))
 }
@@ -163,7 +174,7 @@ fn row_label(m: &Manipulator, kind: RowKind) -> String {
     }
 }
 
-fn analysis_json(m: &Manipulator, a: &Analysis) -> serde_json::Value {
+fn analysis_json(m: &Manipulator, a: &Analysis, warnings: &[String]) -> serde_json::Value {
     let frame = m.platform_frame(&a.q);
     let rv = kinsyn::mechanism::rotation_log(&frame.0);
     let rows: Vec<serde_json::Value> = a
@@ -188,6 +199,7 @@ fn analysis_json(m: &Manipulator, a: &Analysis) -> serde_json::Value {
         "jd_rank": {"rank": a.jd_rank.rank, "generic": a.generic.0, "singular_values": a.jd_rank.singular_values},
         "constraint_rank": {"rank": a.constraint_rank.rank, "generic": a.generic.1, "singular_values": a.constraint_rank.singular_values},
         "singularities": a.singularities,
+        "warnings": warnings,
     })
 }
 
