@@ -29,6 +29,13 @@ pub fn build_command(spec: &BuildSpec, output: Option<&Path>) -> Result<String, 
     let description = build(spec).map_err(CliError::Input)?;
     // Check that what is written can be read back and built.
     let m = Manipulator::new(&description).map_err(|e| CliError::Input(e.to_string()))?;
+    // `build` refuses legs that are not generic; the file as read back must agree.
+    if let Some(w) = m.leg_warnings().first() {
+        return Err(CliError::Input(format!(
+            "--chain '{}': {w}",
+            spec.chain.trim()
+        )));
+    }
     let text = description.to_json();
     match output {
         Some(path) => {

@@ -222,7 +222,7 @@ pub struct LegWarning {
 }
 
 /// `1`, `1 and 2`, `1, 2 and 3`.
-fn joint_list(joints: &[usize]) -> String {
+pub(crate) fn joint_list(joints: &[usize]) -> String {
     match joints {
         [] => String::new(),
         [one] => one.to_string(),
