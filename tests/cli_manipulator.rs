@@ -548,6 +548,13 @@ fn a_singular_leg_is_warned_on_stderr_and_in_json() {
     let v: Value = serde_json::from_str(&stdout(&o)).unwrap();
     assert_eq!(v["warnings"], serde_json::json!([message]));
     assert_eq!(stderr(&o), format!("warning: {file}: {message}\n"));
+    // A command that fails still prints its error as the only stderr line.
+    let o = kinsyn(&["analyze", file, "--lock", "P9.9"]);
+    assert_input_error(
+        &o,
+        "bad lock on a warned file",
+        &["'P9.9' is not an actuator"],
+    );
 }
 
 #[test]

@@ -620,15 +620,6 @@ fn ups_with_spinning_leg(v: &mut serde_json::Value) {
     v["legs"][0]["axes"][1] = "leg".into();
 }
 
-const COMMITTED: [&str; 6] = [
-    "3-ups",
-    "3-rps",
-    "6-ups",
-    "3-prrr",
-    "3-rrr-spherical",
-    "3-rrr-planar",
-];
-
 #[test]
 fn committed_files_have_generic_legs() {
     // The files of mechanisms/ are meant to be generic. Hand ranks of their legs: a UPS leg's
@@ -717,7 +708,8 @@ fn leg_checks_do_not_depend_on_the_length_unit_or_the_origin() {
     // Issue 8 asks for unit-free ranks: the twists are made dimensionless with the leg's
     // characteristic length, so scaling every length by 10^k and moving the origin changes no
     // rank and no warning.
-    let files: Vec<(&str, fn(&mut serde_json::Value))> = vec![
+    type Edit = fn(&mut serde_json::Value);
+    let files: Vec<(&str, Edit)> = vec![
         ("3-rrr-planar", |_| {}),
         ("3-prrr", |_| {}),
         ("6-ups", |_| {}),

@@ -15,13 +15,17 @@ pub fn load(path: &Path) -> Result<Manipulator, CliError> {
     Manipulator::from_json(&text).map_err(|e| CliError::Input(format!("{}: {e}", path.display())))
 }
 
-/// Prints each leg warning of `m` on stderr as one line `warning: FILE: …`, and returns them.
-fn warn(path: &Path, m: &Manipulator) -> Vec<String> {
-    let warnings: Vec<String> = m.leg_warnings().iter().map(ToString::to_string).collect();
-    for w in &warnings {
+/// The leg warnings of `m` (docs/mechanism-format.md, "Leg checks").
+fn leg_warnings(m: &Manipulator) -> Vec<String> {
+    m.leg_warnings().iter().map(ToString::to_string).collect()
+}
+
+/// Prints each warning on stderr as one line `warning: FILE: …`. Called once the command has
+/// succeeded, so that an error stays the only line on stderr.
+fn warn(path: &Path, warnings: &[String]) {
+    for w in warnings {
         eprintln!("warning: {}: {w}", path.display());
     }
-    warnings
 }
 
 /// `kinsyn build`: writes a description (to `output`, or returns it for stdout).
@@ -58,8 +62,8 @@ pub fn build_command(spec: &BuildSpec, output: Option<&Path>) -> Result<String, 
 /// `kinsyn modes`.
 pub fn modes(path: &Path, settings: &SampleSettings, as_json: bool) -> Result<String, CliError> {
     let m = load(path)?;
-    warn(path, &m);
     let modes = m.modes(settings).map_err(CliError::Input)?;
+    warn(path, &leg_warnings(&m));
     if as_json {
         return Ok(json(&modes));
     }
@@ -149,7 +153,6 @@ pub fn analyze(
     as_json: bool,
 ) -> Result<String, CliError> {
     let m = load(path)?;
-    let warnings = warn(path, &m);
     let locked = match lock {
         Some(text) => m
             .parse_locks(text)
@@ -167,6 +170,8 @@ pub fn analyze(
     let a = m
         .analyse(&q, &locked, settings)
         .map_err(|e| CliError::Input(e.to_string()))?;
+    let warnings = leg_warnings(&m);
+    warn(path, &warnings);
     if as_json {
         return Ok(json(&analysis_json(&m, &a, &warnings)));
     }

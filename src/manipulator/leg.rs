@@ -100,7 +100,7 @@ impl LegCheck {
         };
         let extent = revolute_points.iter().map(|p| p.norm()).fold(0.0, f64::max);
         // Points that differ only by round-off of their coordinates coincide.
-        let coincide = !(rms > 1e-12 * extent);
+        let coincide = rms <= 1e-12 * extent;
         let length = if coincide { 1.0 } else { rms };
         let unitless = SerialChain::new(
             joints
