@@ -138,7 +138,11 @@ impl LegCheck {
             chain: chain.clone(),
             joints,
             length,
-            dependent_at_reference: first_dependency(&at_reference),
+            dependent_at_reference: if reference.rank < joints {
+                first_dependency(&at_reference)
+            } else {
+                Vec::new()
+            },
             dependent_everywhere: if generic.rank < joints {
                 first_dependency(&at_generic)
             } else {
