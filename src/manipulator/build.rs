@@ -16,9 +16,10 @@
 //! e.g. two guides parallel), the directions are replaced by those after every revolute has
 //! turned by a fixed angle, and kept only if they changed and the leg is then generic (the file's
 //! `source` says so, with the ranks found); otherwise `build` fails, naming the leg, its ranks
-//! and its dependent joints. A C, or a revolute whose axis is the leg line, cannot be turned
-//! away from its own axis: `--chain CRR --axes zzzz` puts the C's revolute and the last R on
-//! the leg line, coaxial, and is refused.
+//! and its dependent joints. Turning cannot help when every revolute turns about the direction
+//! of the axes at fault: `--chain CRR --axes zzzz` puts the C's revolute (at the base point)
+//! and the last R (at the platform point) on the leg line, coaxial, every axis stays z, and it
+//! is refused.
 
 use super::file::{AngleUnit, AxisSpec, Description, FORMAT, LegSpec, PlatformSpec, Units};
 use super::leg::LegCheck;
