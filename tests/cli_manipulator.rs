@@ -492,3 +492,156 @@ fn review_findings_stay_fixed() {
         "{rv:?}"
     );
 }
+
+/// The committed file `name` of mechanisms/ with `edit` applied, written to a file in `dir`.
+fn edited(dir: &tempfile::TempDir, name: &str, edit: impl FnOnce(&mut Value)) -> PathBuf {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("mechanisms/{name}.json"));
+    let mut v: Value = serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap();
+    edit(&mut v);
+    write(dir, &format!("{name}-edited.json"), &v.to_string())
+}
+
+#[test]
+fn committed_files_analyse_without_leg_warnings() {
+    // Issue 8: every committed file is meant to be generic, so its legs pass the leg check.
+    for name in [
+        "3-ups",
+        "3-rps",
+        "6-ups",
+        "3-prrr",
+        "3-rrr-spherical",
+        "3-rrr-planar",
+    ] {
+        let file = format!("mechanisms/{name}.json");
+        let o = kinsyn(&["analyze", &file, "--json"]);
+        assert_eq!(o.status.code(), Some(0), "{name}: {}", stderr(&o));
+        assert_eq!(stderr(&o), "", "{name}");
+        let v: Value = serde_json::from_str(&stdout(&o)).unwrap();
+        assert_eq!(v["warnings"], serde_json::json!([]), "{name}");
+    }
+}
+
+#[test]
+fn a_singular_leg_is_warned_on_stderr_and_in_json() {
+    // Issue 8, bug 5: hand-written files get a leg-rank check. Leg 1 of the planar 3-RRR with its
+    // middle joint at the midpoint of its base and platform points: three z revolutes through
+    // collinear points, twists (z; p × z) linear in p, rank 2 there and 3 at generic joint
+    // values (tests/manipulator.rs derives it). The analysis still runs; stdout is the analysis
+    // only, and each warning is one stderr line.
+    let dir = tempfile::tempdir().unwrap();
+    let path = edited(&dir, "3-rrr-planar", |v| {
+        let leg = &mut v["legs"][0];
+        let mid: Vec<f64> = (0..3)
+            .map(|i| {
+                (leg["base"][i].as_f64().unwrap() + leg["platform"][i].as_f64().unwrap()) / 2.0
+            })
+            .collect();
+        leg["points"] = serde_json::json!([mid]);
+    });
+    let file = path.to_str().unwrap();
+    let message = "leg 1 (RaRaRa) is singular at the reference configuration: its 3 joint twists have rank 2 there, 3 at generic joint values; joints 1, 2 and 3 dependent";
+    for command in ["analyze", "modes"] {
+        let o = kinsyn(&[command, file]);
+        assert_eq!(o.status.code(), Some(0), "{command}: {}", stderr(&o));
+        assert_eq!(
+            stderr(&o),
+            format!("warning: {file}: {message}\n"),
+            "{command}"
+        );
+        assert!(!stdout(&o).contains("warning"), "{command}: {}", stdout(&o));
+    }
+    let o = kinsyn(&["analyze", file, "--json"]);
+    let v: Value = serde_json::from_str(&stdout(&o)).unwrap();
+    assert_eq!(v["warnings"], serde_json::json!([message]));
+    assert_eq!(stderr(&o), format!("warning: {file}: {message}\n"));
+    // A command that fails still prints its error as the only stderr line.
+    let o = kinsyn(&["analyze", file, "--lock", "P9.9"]);
+    assert_input_error(
+        &o,
+        "bad lock on a warned file",
+        &["'P9.9' is not an actuator"],
+    );
+}
+
+#[test]
+fn parallel_marks_that_contradict_the_axes_are_one_line_exit_2() {
+    // Issue 8, bug 6: `RaRaRa` marks three parallel revolutes; an x axis among z axes is refused,
+    // naming the field.
+    let dir = tempfile::tempdir().unwrap();
+    let path = edited(&dir, "3-rrr-planar", |v| {
+        v["legs"][2]["axes"][1] = serde_json::json!([1.0, 0.0, 0.0]);
+    });
+    let o = kinsyn(&["analyze", path.to_str().unwrap()]);
+    assert_input_error(
+        &o,
+        "parallel marks",
+        &[
+            "legs[2].axes[1]: marked 'a' in RaRaRa like axes[0], so the two must be parallel",
+            "90.000° apart",
+        ],
+    );
+    let o = kinsyn(&[
+        "build",
+        "--chain",
+        "RaRaRa",
+        "--axes",
+        "xyx",
+        "--actuated",
+        "1",
+    ]);
+    assert_input_error(
+        &o,
+        "build parallel marks",
+        &["--axes 'xyx': joints 1 and 2 of RaRaRa are in parallel group 'a' but get 'x' and 'y'"],
+    );
+}
+
+#[test]
+fn build_fails_on_a_leg_that_is_singular_at_the_built_geometry() {
+    // Issue 8, bug 5: the C's revolute and the last R of CRR with axes zzzz both lie on the leg
+    // line (z), so joints 2 and 4 have equal twists at the reference (rank 3, 4 at generic joint
+    // values), and turning revolutes about z keeps every axis z. Once this wrote a file whose
+    // source claimed turned axes; now nothing is written.
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("crr.json");
+    let o = kinsyn(&[
+        "build",
+        "--chain",
+        "CRR",
+        "--axes",
+        "zzzz",
+        "--actuated",
+        "1",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert_input_error(
+        &o,
+        "CRR zzzz",
+        &[
+            "leg 1 (CRR) is singular at the reference configuration",
+            "rank 3 there, 4 at generic joint values",
+            "joints 2 and 4 dependent",
+            "leaves these axis directions unchanged, so no file is written",
+        ],
+    );
+    assert!(!out.exists());
+    // Four parallel revolutes are dependent at every configuration.
+    let o = kinsyn(&[
+        "build",
+        "--chain",
+        "RRRR",
+        "--axes",
+        "zzzz",
+        "--actuated",
+        "1",
+    ]);
+    assert_input_error(
+        &o,
+        "RRRR zzzz",
+        &[
+            "has joints dependent at every configuration",
+            "rank 3 at generic joint values",
+        ],
+    );
+}

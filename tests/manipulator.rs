@@ -741,3 +741,273 @@ fn the_three_ppps_reaches_no_helical_motion() {
         "{kinds:?}"
     );
 }
+
+// ---- Issue 8, bugs 5 and 6: leg checks and parallel marks ----
+
+/// The committed file `name` as JSON with `edit` applied, built into a manipulator.
+fn edited(
+    name: &str,
+    edit: impl FnOnce(&mut serde_json::Value),
+) -> Result<Manipulator, kinsyn::manipulator::ManipulatorError> {
+    let text = std::fs::read_to_string(format!("mechanisms/{name}.json")).unwrap();
+    let mut v: serde_json::Value = serde_json::from_str(&text).unwrap();
+    edit(&mut v);
+    Manipulator::from_json(&v.to_string())
+}
+
+/// Every length of a description multiplied by `s` and moved by `shift` (in the new unit).
+fn scaled(v: &mut serde_json::Value, s: f64, shift: [f64; 3]) {
+    let scale = |p: &mut serde_json::Value, shift: [f64; 3]| {
+        for (i, x) in p.as_array_mut().unwrap().iter_mut().enumerate() {
+            *x = serde_json::json!(x.as_f64().unwrap() * s + shift[i]);
+        }
+    };
+    scale(&mut v["platform"]["position"], shift);
+    scale(&mut v["platform"]["point"], [0.0; 3]);
+    for leg in v["legs"].as_array_mut().unwrap() {
+        scale(&mut leg["base"], shift);
+        scale(&mut leg["platform"], [0.0; 3]);
+        if let Some(points) = leg.get_mut("points").and_then(|p| p.as_array_mut()) {
+            for p in points {
+                scale(p, shift);
+            }
+        }
+    }
+}
+
+/// The planar 3-RRR with leg 1's middle joint moved to the midpoint of its base and platform
+/// points: its three joint points collinear.
+fn collinear_planar(v: &mut serde_json::Value) {
+    let leg = &mut v["legs"][0];
+    let (b, p) = (leg["base"].clone(), leg["platform"].clone());
+    let mid: Vec<f64> = (0..3)
+        .map(|i| (b[i].as_f64().unwrap() + p[i].as_f64().unwrap()) / 2.0)
+        .collect();
+    leg["points"] = serde_json::json!([mid]);
+}
+
+/// The 3-UPS with leg 1's U's second axis along the leg (base to platform point).
+fn ups_with_spinning_leg(v: &mut serde_json::Value) {
+    v["legs"][0]["axes"][1] = "leg".into();
+}
+
+#[test]
+fn committed_files_have_generic_legs() {
+    // The files of mechanisms/ are meant to be generic. Hand ranks of their legs: a UPS leg's
+    // six twists span all six (U and S centres distinct, the slider joining them); an RPS leg's
+    // five are independent (the R's axis misses the S centre); a PRRR leg with three revolutes
+    // parallel to its slider spans ω along them, the two translations across them (three axis
+    // points not collinear across the axes) and the slider: 4; three revolutes through one point
+    // (spherical) or parallel through non-collinear points (planar): 3. Each equals the number
+    // of joints, at the reference and generically.
+    let expected = [
+        ("3-ups", 6),
+        ("3-rps", 5),
+        ("6-ups", 6),
+        ("3-prrr", 4),
+        ("3-rrr-spherical", 3),
+        ("3-rrr-planar", 3),
+    ];
+    for (name, joints) in expected {
+        let m = load(name);
+        assert!(
+            m.leg_warnings().is_empty(),
+            "{name}: {:?}",
+            m.leg_warnings()
+        );
+        for c in m.leg_checks() {
+            assert_eq!(
+                (c.joints, c.reference.rank, c.generic.rank),
+                (joints, joints, joints),
+                "{name} leg {}",
+                c.leg + 1
+            );
+            // The decision has a clear gap: nothing near the relative tolerance 1e-9.
+            assert!(c.reference.gap().0 > 1e-4, "{name}: {:?}", c.reference);
+        }
+    }
+}
+
+#[test]
+fn a_planar_rrr_leg_with_collinear_joint_points_is_singular_at_the_reference() {
+    // Issue 8, bug 5 (hand-written files get no leg check). Three revolutes along z through
+    // p1, p2 = (p1 + p3)/2, p3 have twists (z; p_i × z), linear in p_i: column 2 is the mean of
+    // columns 1 and 3, rank 2, all three joints in the dependency. Turned by any angle at the
+    // middle joint, p3 leaves the line and the rank is 3 (= joints: no dependency everywhere).
+    let m = edited("3-rrr-planar", collinear_planar).unwrap();
+    let checks = m.leg_checks();
+    assert_eq!(
+        (
+            checks[0].reference.rank,
+            checks[0].generic.rank,
+            checks[0].joints
+        ),
+        (2, 3, 3)
+    );
+    assert_eq!(checks[0].dependent_at_reference, vec![1, 2, 3]);
+    let warnings: Vec<String> = m.leg_warnings().iter().map(ToString::to_string).collect();
+    assert_eq!(
+        warnings,
+        vec![
+            "leg 1 (RaRaRa) is singular at the reference configuration: its 3 joint twists have rank 2 there, 3 at generic joint values; joints 1, 2 and 3 dependent"
+        ]
+    );
+}
+
+#[test]
+fn a_ups_leg_whose_u_turns_about_the_leg_has_dependent_joints_everywhere() {
+    // Hand derivation: the U's second axis along the leg is the line through the U centre B and
+    // the S centre G. Whatever the joint values, the first revolute carries that line, the slider
+    // along it and G together, so the line still passes through G, and a rotation about a line
+    // through G is a combination of the S's three revolutes: joints 2, 4, 5, 6 are dependent at
+    // every configuration (the leg spins about itself), rank 5 of 6 both at the reference and
+    // generically, so no singularity of the reference is claimed.
+    let m = edited("3-ups", ups_with_spinning_leg).unwrap();
+    let c = &m.leg_checks()[0];
+    assert_eq!((c.reference.rank, c.generic.rank, c.joints), (5, 5, 6));
+    let warnings: Vec<String> = m.leg_warnings().iter().map(ToString::to_string).collect();
+    assert_eq!(
+        warnings,
+        vec![
+            "leg 1 (UPS) has joints dependent at every configuration: its 6 joint twists have rank 5 at generic joint values; joints 2, 4, 5 and 6 dependent"
+        ]
+    );
+}
+
+#[test]
+fn leg_checks_do_not_depend_on_the_length_unit_or_the_origin() {
+    // Issue 8 asks for unit-free ranks: the twists are made dimensionless with the leg's
+    // characteristic length, so scaling every length by 10^k and moving the origin changes no
+    // rank and no warning.
+    type Edit = fn(&mut serde_json::Value);
+    let files: Vec<(&str, Edit)> = vec![
+        ("3-rrr-planar", |_| {}),
+        ("3-prrr", |_| {}),
+        ("6-ups", |_| {}),
+        ("3-rrr-spherical", |_| {}),
+        ("3-rrr-planar", collinear_planar),
+        ("3-ups", ups_with_spinning_leg),
+    ];
+    for (name, edit) in files {
+        let base = edited(name, edit).unwrap();
+        let summary = |m: &Manipulator| {
+            let ranks: Vec<(usize, usize, usize)> = m
+                .leg_checks()
+                .iter()
+                .map(|c| (c.reference.rank, c.generic.rank, c.joints))
+                .collect();
+            (ranks, m.leg_warnings())
+        };
+        let expected = summary(&base);
+        for k in [-9, -5, -1, 2, 6, 9] {
+            let s = 10f64.powi(k);
+            let m = edited(name, |v| {
+                edit(v);
+                scaled(v, s, [3.0 * s, -7.0 * s, 0.5 * s]);
+            })
+            .unwrap();
+            assert_eq!(summary(&m), expected, "{name} ×1e{k}");
+        }
+    }
+}
+
+#[test]
+fn parallel_marks_are_checked_against_the_axes() {
+    // Issue 8, bug 6: `RaRaRa` says the three revolutes are parallel (docs/notation.md). Leg 1
+    // of the planar 3-RRR with its second axis along x instead of z contradicts it (90° apart).
+    let e = edited("3-rrr-planar", |v| {
+        v["legs"][0]["axes"][1] = serde_json::json!([1.0, 0.0, 0.0]);
+    })
+    .unwrap_err()
+    .to_string();
+    assert_eq!(
+        e,
+        "legs[0].axes[1]: marked 'a' in RaRaRa like axes[0], so the two must be parallel (a parallel group, docs/notation.md), but they are 90.000° apart"
+    );
+    // The third axis tilted by 1° about x: sin 1° = 0.017 ≫ 1e-6, named with its angle.
+    let t = 1f64.to_radians();
+    let e = edited("3-rrr-planar", |v| {
+        v["legs"][2]["axes"][2] = serde_json::json!([0.0, -t.sin(), t.cos()]);
+    })
+    .unwrap_err()
+    .to_string();
+    assert!(
+        e.starts_with("legs[2].axes[2]: marked 'a' in RaRaRa like axes[0]")
+            && e.contains("1.000° apart"),
+        "{e}"
+    );
+    // Opposite directions are parallel axes; unmarked revolutes may be parallel or not (the
+    // notation asserts nothing about them: the committed 3-UPS has its U's first axis parallel
+    // to its S's first, unmarked).
+    edited("3-rrr-planar", |v| {
+        v["legs"][0]["axes"][1] = serde_json::json!([0.0, 0.0, -1.0]);
+    })
+    .unwrap();
+    let m = load("3-ups");
+    let axis = |k: usize| m.mechanism().joints()[k].axis;
+    assert!(axis(0).cross(&axis(3)).norm() < 1e-9);
+    // Positions count primitive joints: in `PRaRaRa` the group starts at axes[1].
+    let e = edited("3-prrr", |v| {
+        v["legs"][1]["axes"][3] = serde_json::json!([0.0, 1.0, 0.0]);
+    })
+    .unwrap_err()
+    .to_string();
+    assert!(
+        e.starts_with("legs[1].axes[3]: marked 'a' in PRaRaRa like axes[1]"),
+        "{e}"
+    );
+}
+
+#[test]
+fn build_refuses_a_singular_leg_instead_of_claiming_turned_axes() {
+    // Issue 8, bug 5: `build --chain CRR --axes zzzz --actuated 1` wrote "axes turned" with the
+    // axes unchanged. Hand derivation: z is the leg line, from the base point (the C) to the
+    // platform point (the last R), so the C's revolute and the last revolute are the same line:
+    // equal twists, joints 2 and 4 dependent, rank 3 of 4 at the reference. At generic values the
+    // middle revolute moves the last axis off the C's (three parallel revolutes through
+    // non-collinear points give ω_z and two translations, the slider the third): rank 4. Turning
+    // revolutes about z axes leaves z axes z, so no turn can help: `build` fails.
+    use kinsyn::manipulator::build::{BuildSpec, build};
+    let spec = |chain: &str, axes: &str| BuildSpec {
+        chain: chain.into(),
+        axes: Some(axes.into()),
+        actuated: Some(vec![1]),
+        ..Default::default()
+    };
+    let e = build(&spec("CRR", "zzzz")).unwrap_err();
+    assert_eq!(
+        e,
+        "--chain 'CRR' --axes zzzz: leg 1 (CRR) is singular at the reference configuration: its 4 joint twists have rank 3 there, 4 at generic joint values; joints 2 and 4 dependent; turning its revolutes leaves these axis directions unchanged, so no file is written"
+    );
+    // Four parallel revolutes span at most ω_z and two translations: dependent everywhere.
+    let e = build(&spec("RRRR", "zzzz")).unwrap_err();
+    assert!(
+        e.contains("leg 1 (RRRR) has joints dependent at every configuration: its 4 joint twists have rank 3 at generic joint values; joints 1, 2, 3 and 4 dependent"),
+        "{e}"
+    );
+    // Parallel marks are checked on the letters too.
+    let e = build(&spec("RaRaRa", "xyx")).unwrap_err();
+    assert_eq!(
+        e,
+        "--axes 'xyx': joints 1 and 2 of RaRaRa are in parallel group 'a' but get 'x' and 'y': the axes of a parallel group must be parallel"
+    );
+    // When turning does help, the claim is true. Catalogue PPRCR with axes xyxyyz: joints 2 and
+    // 4 are both guides along y, twists (0; y), rank 5 at the reference; the R along x between
+    // them turns the second guide away at generic values (rank 6). The turned file has that
+    // guide no longer parallel to the first, and its legs are generic.
+    let d = build(&spec("PPRCR", "xyxyyz")).unwrap();
+    let source = d.source.clone().unwrap();
+    assert!(
+        source.contains("axes turned: with the directions of --axes the leg is singular at the reference (rank 5 there, 6 at generic joint values; joints 2 and 4 dependent)"),
+        "{source}"
+    );
+    let m = Manipulator::new(&d).unwrap();
+    assert!(m.leg_warnings().is_empty(), "{:?}", m.leg_warnings());
+    for leg in m.legs() {
+        let joints = &m.mechanism().joints()[leg.joints.clone()];
+        assert!(joints[1].axis.cross(&joints[3].axis).norm() > 1e-3);
+    }
+    // A build that needs no turn says nothing about turning.
+    let d = build(&spec("P!RaRaRa", "xxxx")).unwrap();
+    assert!(!d.source.unwrap().contains("turned"));
+}

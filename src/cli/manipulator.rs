@@ -15,11 +15,31 @@ pub fn load(path: &Path) -> Result<Manipulator, CliError> {
     Manipulator::from_json(&text).map_err(|e| CliError::Input(format!("{}: {e}", path.display())))
 }
 
+/// The leg warnings of `m` (docs/mechanism-format.md, "Leg checks").
+fn leg_warnings(m: &Manipulator) -> Vec<String> {
+    m.leg_warnings().iter().map(ToString::to_string).collect()
+}
+
+/// Prints each warning on stderr as one line `warning: FILE: …`. Called once the command has
+/// succeeded, so that an error stays the only line on stderr.
+fn warn(path: &Path, warnings: &[String]) {
+    for w in warnings {
+        eprintln!("warning: {}: {w}", path.display());
+    }
+}
+
 /// `kinsyn build`: writes a description (to `output`, or returns it for stdout).
 pub fn build_command(spec: &BuildSpec, output: Option<&Path>) -> Result<String, CliError> {
     let description = build(spec).map_err(CliError::Input)?;
     // Check that what is written can be read back and built.
     let m = Manipulator::new(&description).map_err(|e| CliError::Input(e.to_string()))?;
+    // `build` refuses legs that are not generic; the file as read back must agree.
+    if let Some(w) = m.leg_warnings().first() {
+        return Err(CliError::Input(format!(
+            "--chain '{}': {w}",
+            spec.chain.trim()
+        )));
+    }
     let text = description.to_json();
     match output {
         Some(path) => {
@@ -44,6 +64,7 @@ pub fn build_command(spec: &BuildSpec, output: Option<&Path>) -> Result<String, 
 pub fn modes(path: &Path, settings: &SampleSettings, as_json: bool) -> Result<String, CliError> {
     let m = load(path)?;
     let modes = m.modes(settings).map_err(CliError::Input)?;
+    warn(path, &leg_warnings(&m));
     if as_json {
         return Ok(json(&modes));
     }
@@ -161,8 +182,10 @@ pub fn analyze(
     let a = m
         .analyse(&q, &locked, settings)
         .map_err(|e| CliError::Input(e.to_string()))?;
+    let warnings = leg_warnings(&m);
+    warn(path, &warnings);
     if as_json {
-        return Ok(json(&analysis_json(&m, &a)));
+        return Ok(json(&analysis_json(&m, &a, &warnings)));
     }
     Ok(analysis_text(&m, &a))
 }
@@ -175,7 +198,7 @@ fn row_label(m: &Manipulator, kind: RowKind) -> String {
     }
 }
 
-fn analysis_json(m: &Manipulator, a: &Analysis) -> serde_json::Value {
+fn analysis_json(m: &Manipulator, a: &Analysis, warnings: &[String]) -> serde_json::Value {
     let frame = m.platform_frame(&a.q);
     let rv = kinsyn::mechanism::rotation_log(&frame.0);
     let rows: Vec<serde_json::Value> = a
@@ -201,6 +224,7 @@ fn analysis_json(m: &Manipulator, a: &Analysis) -> serde_json::Value {
         "leg_ranks": a.jacobians.leg_ranks.iter().zip(&a.generic.legs).map(|(r, &g)| rank_json(r, g)).collect::<Vec<_>>(),
         "generic_assemblies": a.generic.assemblies,
         "singularities": a.singularities,
+        "warnings": warnings,
     })
 }
 

@@ -10,21 +10,24 @@
 //! Joints between the first and the last are spaced evenly along the leg and pushed off it by
 //! 0.15 of its length, the m-th towards the angle m·ψ (ψ the golden angle) in the leg frame's
 //! xy plane, so that the joint points of a leg are not coplanar and parallel revolutes are not
-//! coaxial. When the catalogue's directions are a singular configuration of the chain (the rank
-//! of the leg's Jacobian there is below that of the same chain with random offsets, e.g. two
-//! guides parallel), the directions are those after every revolute has turned by a fixed angle,
-//! and the file's `source` says so.
+//! coaxial. Every leg is then checked as the file will hold it ([`super::leg::LegCheck`]):
+//! when its joints are dependent at every configuration, `build` fails; when the reference is a
+//! leg singularity (the rank of its joint twists there is below that at generic joint values,
+//! e.g. two guides parallel), the directions are replaced by those after every revolute has
+//! turned by a fixed angle, and kept only if they changed and the leg is then generic (the file's
+//! `source` says so, with the ranks found); otherwise `build` fails, naming the leg, its ranks
+//! and its dependent joints. Turning cannot help when every revolute turns about the direction
+//! of the axes at fault: `--chain CRR --axes zzzz` puts the C's revolute (at the base point)
+//! and the last R (at the platform point) on the leg line, coaxial, every axis stays z, and it
+//! is refused.
 
 use super::file::{AngleUnit, AxisSpec, Description, FORMAT, LegSpec, PlatformSpec, Units};
+use super::leg::LegCheck;
 use crate::chain::SerialChain;
 use crate::notation::{Chain, Primitive};
-use crate::screw;
-use crate::verification::random_configuration;
-use nalgebra::DMatrix;
 use nalgebra::Vector3;
-use rand::SeedableRng;
-use rand_chacha::ChaCha8Rng;
 use serde::Serialize;
+use std::fmt::Write as _;
 
 /// The geometry and legs asked for.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -128,42 +131,30 @@ fn leg_chain(chain: &Chain, axes: &[Vector3<f64>], points: &[Vector3<f64>]) -> O
     SerialChain::new(joints).ok()
 }
 
+/// The primitive joints `(kind, axis, point)` of a leg as the file will hold them (rounded by
+/// [`tidy`]), each with its letter's point.
+fn leg_primitives(
+    chain: &Chain,
+    axes: &[Vector3<f64>],
+    points: &[Vector3<f64>],
+) -> Vec<(Primitive, Vector3<f64>, Vector3<f64>)> {
+    let mut out = Vec::with_capacity(axes.len());
+    let mut k = 0;
+    for (letter, joint) in chain.joints().iter().enumerate() {
+        for &kind in joint.kind.primitives() {
+            out.push((
+                kind,
+                Vector3::from(tidy(axes[k])).normalize(),
+                Vector3::from(tidy(points[letter])),
+            ));
+            k += 1;
+        }
+    }
+    out
+}
+
 /// The golden angle, 2π(1 − 1/φ): successive multiples never line up.
 const GOLDEN_ANGLE: f64 = 2.399_963_229_728_653;
-
-/// Whether a leg with these axes and joint points (one per letter) is special at the reference
-/// configuration: the rank of its Jacobian there is below the chain's generic rank, that of the
-/// same joint directions with generic offsets between the letters
-/// ([`SerialChain::from_layout`], as in the catalogue's verification).
-fn special(chain: &Chain, axes: &str, vectors: &[Vector3<f64>], points: &[Vector3<f64>]) -> bool {
-    let word: Vec<Primitive> = chain.primitives().map(|(p, _)| p).collect();
-    let blocks: Vec<usize> = chain
-        .joints()
-        .iter()
-        .map(|j| j.kind.primitives().len())
-        .collect();
-    let rank = |leg: &SerialChain, q: &[f64]| {
-        let j = leg.jacobian(q);
-        screw::rank(
-            &DMatrix::from_column_slice(6, leg.len(), j.as_slice()),
-            screw::DEFAULT_RANK_TOLERANCE,
-        )
-        .rank
-    };
-    let letters: Vec<u8> = axes.bytes().map(|b| b - b'x').collect();
-    let mut rng = ChaCha8Rng::seed_from_u64(1);
-    let (Some(leg), Ok(generic)) = (
-        leg_chain(chain, vectors, points),
-        SerialChain::from_layout(&word, &letters, &blocks, &mut rng),
-    ) else {
-        return false;
-    };
-    let generic_rank = (0..4)
-        .map(|_| rank(&generic, &random_configuration(&generic, &mut rng)))
-        .max()
-        .unwrap_or(0);
-    rank(&leg, &vec![0.0; leg.len()]) < generic_rank
-}
 
 /// Rounds to 12 decimals so that written files do not carry round-off digits.
 fn tidy(v: Vector3<f64>) -> [f64; 3] {
@@ -228,6 +219,16 @@ pub fn build(spec: &BuildSpec) -> Result<Description, String> {
             f.why
         )
     })?;
+    super::leg::check_parallel_marks(&chain, &letter_vectors).map_err(|f| {
+        format!(
+            "--axes '{axes}': joints {} and {} of {chain} are in parallel group '{}' but get '{}' and '{}': the axes of a parallel group must be parallel",
+            f.first + 1,
+            f.at + 1,
+            f.group,
+            &axes[f.first..=f.first],
+            &axes[f.at..=f.at]
+        )
+    })?;
     let actuated: Vec<usize> = super::actuated_positions(&chain, spec.actuated.as_deref())
         .map_err(|m| format!("--actuated: {m}"))?
         .into_iter()
@@ -242,7 +243,8 @@ pub fn build(spec: &BuildSpec) -> Result<Description, String> {
     let letters = plain.joints().len();
     let n = spec.legs;
     let mut legs = Vec::with_capacity(n);
-    let mut turned_axes = false;
+    // The ranks and dependent joints of the first leg whose axes had to be turned.
+    let mut turned_note: Option<(usize, usize, Vec<usize>)> = None;
     for k in 0..n {
         let theta = std::f64::consts::TAU * k as f64 / n as f64;
         let sense = if spec.alternate && k % 2 == 1 {
@@ -271,12 +273,62 @@ pub fn build(spec: &BuildSpec) -> Result<Description, String> {
                 _ => base + (end - base) * (m as f64 / (letters - 1) as f64) + off(m as f64),
             })
             .collect();
-        if special(&plain, &axes, &axis_vectors, &points) {
+        // The leg as it will be written (rounded as in the file) must be generic at the
+        // reference: its joint twists of full generic rank, and that rank reached there.
+        let check = |axis_vectors: &[Vector3<f64>]| {
+            let joints = leg_primitives(&plain, axis_vectors, &points);
+            LegCheck::new(k, &plain, &joints)
+        };
+        let sound = |c: &LegCheck| !c.is_singular() && !c.has_dependent_joints();
+        let found = check(&axis_vectors);
+        if !sound(&found) {
+            let warning = found
+                .warnings()
+                .first()
+                .map(ToString::to_string)
+                .unwrap_or_default();
+            let refused = |why: &str| {
+                format!(
+                    "--chain '{}' --axes {axes}: {warning}; {why}, so no file is written",
+                    spec.chain.trim()
+                )
+            };
+            if found.has_dependent_joints() {
+                return Err(refused(
+                    "turning the axes cannot remove a dependency that holds at every configuration",
+                ));
+            }
             // The aligned directions are a singular configuration of this chain (e.g. two
             // guides parallel there): take the directions the joints have after every revolute
-            // turned by a fixed angle; parallel groups stay parallel (paper 000 §2).
-            axis_vectors = turned(&plain, &axis_vectors, &points);
-            turned_axes = true;
+            // turned by a fixed angle; parallel groups stay parallel (paper 000 §2). Kept only
+            // when the directions changed and the leg is then generic.
+            let turned_vectors = turned(&plain, &axis_vectors, &points);
+            let changed = turned_vectors
+                .iter()
+                .zip(&axis_vectors)
+                .any(|(a, b)| a.cross(b).norm() > super::AXIS_TOLERANCE);
+            if !changed {
+                return Err(refused(
+                    "turning its revolutes leaves these axis directions unchanged",
+                ));
+            }
+            let valid = super::check_joint_axes(&plain, &turned_vectors).is_ok()
+                && super::leg::check_parallel_marks(&plain, &turned_vectors).is_ok();
+            let after = check(&turned_vectors);
+            if !valid || !sound(&after) {
+                return Err(refused(&format!(
+                    "with its revolutes turned it is still not generic (rank {} of {} joints, {} at generic joint values)",
+                    after.reference.rank, after.joints, after.generic.rank
+                )));
+            }
+            turned_note.get_or_insert_with(|| {
+                (
+                    found.reference.rank,
+                    found.generic.rank,
+                    found.dependent_at_reference.clone(),
+                )
+            });
+            axis_vectors = turned_vectors;
         }
 
         let first = points[0];
@@ -322,9 +374,16 @@ pub fn build(spec: &BuildSpec) -> Result<Description, String> {
         if spec.alternate { " --alternate" } else { "" }
     );
     source += &from_catalogue.unwrap_or_default();
-    if turned_axes {
-        source +=
-            "; axes turned from the catalogue's directions, a singular configuration of this chain";
+    if let Some((rank, generic, dependent)) = turned_note {
+        let _ = write!(
+            source,
+            "; axes turned: with the directions of --axes the leg is singular at the reference (rank {rank} there, {generic} at generic joint values{}), so every revolute was turned by 0.6 + 0.25 k rad (k its 0-based position), joint points kept; the leg is then generic",
+            if dependent.is_empty() {
+                String::new()
+            } else {
+                format!("; joints {} dependent", super::leg::joint_list(&dependent))
+            }
+        );
     }
     Ok(Description {
         format: FORMAT.into(),

@@ -17,11 +17,13 @@
 pub mod build;
 pub mod file;
 mod jacobian;
+pub mod leg;
 mod modes;
 
 pub use jacobian::{
     Analysis, GenericRanks, Jacobians, RowKind, Singularity, SingularityKind, WrenchRow, rank_text,
 };
+pub use leg::{LegCheck, LegWarning, LegWarningKind};
 pub use modes::{MAX_INPUTS, Mode, Modes, PatternModes};
 
 use crate::catalogue::Catalogue;
@@ -117,7 +119,7 @@ impl Manipulator {
     /// A chain that does not parse or an unknown catalogue id, axes or points in the wrong
     /// number, axes of no length, joints whose axes break the joint's definition (a C whose
     /// revolute is not parallel to its slider, a U with parallel axes, an S with dependent
-    /// axes), a one-joint leg whose base and platform points differ, actuated positions out of
+    /// axes), revolutes of one parallel group (`Ra…Ra`) whose axes are not parallel, a one-joint leg whose base and platform points differ, actuated positions out of
     /// range, or no leg at all. Each error names its field.
     pub fn new(d: &Description) -> Result<Self, ManipulatorError> {
         if d.legs.is_empty() {
@@ -229,6 +231,9 @@ impl Manipulator {
             };
             check_joint_axes(&chain, &axes)
                 .map_err(|f| DescriptionError::new(field(&format!("axes[{}]", f.at)), f.why))?;
+            leg::check_parallel_marks(&chain, &axes).map_err(|f| {
+                DescriptionError::new(field(&format!("axes[{}]", f.at)), f.message(&chain))
+            })?;
             let actuated = actuated_positions(&chain, spec.actuated.as_deref())
                 .map_err(|m| DescriptionError::new(field("actuated"), m))?;
             // Joints: ground → link 1 → ... → platform.
