@@ -1,7 +1,8 @@
 //! Speed of the manipulator analysis: the multioperation capacity of the 3-UPS (finite motion of
 //! the platform for all 64 lock subsets of its six inputs, paper 000 §5), one evaluation of the
-//! Jacobians J_D, J_I from reciprocal screws (eqs. 11, 18–21) on the 3-UPS and the 6-UPS, and the
-//! Newton assembly of the 6-UPS at a displaced platform pose.
+//! Jacobians J_D, J_I from reciprocal screws (eqs. 11, 18–21) on the 3-UPS, the 6-UPS and the
+//! 3-PRRR (legs whose constraints are couples), a whole `analyse` of the 3-UPS, and the Newton
+//! assembly of the 6-UPS at a displaced platform pose.
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use kinsyn::manipulator::Manipulator;
@@ -30,6 +31,16 @@ fn manipulator(c: &mut Criterion) {
     group.bench_function("jacobians J_D, J_I, 3-UPS at the reference", |b| {
         b.iter(|| ups3.jacobians(black_box(&q3), &[]))
     });
+    let prrr = load("3-prrr");
+    let qp = prrr.reference();
+    group.bench_function(
+        "jacobians J_D, J_I, 3-PRRR at the reference (couple constraints)",
+        |b| b.iter(|| prrr.jacobians(black_box(&qp), &[])),
+    );
+    group.bench_function(
+        "analyse 3-UPS at the reference (ranks, generic assemblies)",
+        |b| b.iter(|| ups3.analyse(black_box(&q3), &[], &settings)),
+    );
     let q6 = ups6.reference();
     group.bench_function("jacobians J_D, J_I, 6-UPS at the reference", |b| {
         b.iter(|| ups6.jacobians(black_box(&q6), &[]))

@@ -706,7 +706,7 @@ fn a_leg_singular_reference_has_one_dof_and_is_flagged() {
         );
     }
     assert_eq!(a.generic.legs, vec![3, 3, 3]);
-    assert!(a.jacobians.leg_ranks.iter().all(|r| r.rank == 2));
+    assert!(a.leg_ranks.iter().all(|r| r.rank == 2));
 }
 
 #[test]

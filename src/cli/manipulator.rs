@@ -221,7 +221,7 @@ fn analysis_json(m: &Manipulator, a: &Analysis, warnings: &[String]) -> serde_js
         "rows": rows,
         "jd_rank": rank_json(&a.jd_rank, a.generic.jd),
         "constraint_rank": rank_json(&a.constraint_rank, a.generic.constraint),
-        "leg_ranks": a.jacobians.leg_ranks.iter().zip(&a.generic.legs).map(|(r, &g)| rank_json(r, g)).collect::<Vec<_>>(),
+        "leg_ranks": a.leg_ranks.iter().zip(&a.generic.legs).map(|(r, &g)| rank_json(r, g)).collect::<Vec<_>>(),
         "generic_assemblies": a.generic.assemblies,
         "singularities": a.singularities,
         "warnings": warnings,
@@ -302,13 +302,7 @@ fn analysis_text(m: &Manipulator, a: &Analysis) -> String {
         rank_text(&a.constraint_rank),
         a.generic.constraint
     );
-    for (i, (r, g)) in a
-        .jacobians
-        .leg_ranks
-        .iter()
-        .zip(&a.generic.legs)
-        .enumerate()
-    {
+    for (i, (r, g)) in a.leg_ranks.iter().zip(&a.generic.legs).enumerate() {
         let _ = writeln!(
             s,
             "leg {} joint twists: {} (generic {g})",

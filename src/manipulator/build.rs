@@ -277,7 +277,7 @@ pub fn build(spec: &BuildSpec) -> Result<Description, String> {
         // reference: its joint twists of full generic rank, and that rank reached there.
         let check = |axis_vectors: &[Vector3<f64>]| {
             let joints = leg_primitives(&plain, axis_vectors, &points);
-            LegCheck::new(k, &plain, &joints)
+            LegCheck::standalone(k, &plain, &joints)
         };
         let sound = |c: &LegCheck| !c.is_singular() && !c.has_dependent_joints();
         let found = check(&axis_vectors);

@@ -88,7 +88,7 @@ pub struct Jacobians {
     /// of its leg: an inverse singularity).
     pub without_wrench: Vec<usize>,
     /// The rank of each leg's joint twists (dimensionless, all joints of the leg).
-    pub leg_ranks: Vec<Rank>,
+    pub leg_ranks: Vec<usize>,
     /// `J_D`: one row per wrench, columns `(v_P; ω)`.
     pub jd: DMatrix<f64>,
     /// `J_I`: one row per wrench, one column per free input.
@@ -168,6 +168,8 @@ pub struct Analysis {
     pub jd_rank: Rank,
     /// Rank of the constraint rows (dimensionless), with its singular values and gap.
     pub constraint_rank: Rank,
+    /// Rank of each leg's joint twists (dimensionless), with its singular values and gap.
+    pub leg_ranks: Vec<Rank>,
     /// The ranks at generic configurations.
     pub generic: GenericRanks,
     /// Singularities found.
@@ -291,10 +293,14 @@ impl Manipulator {
         for (i, leg) in self.legs.iter().enumerate() {
             let joints: Vec<usize> = leg.joints.clone().collect();
             let t = self.unitless_leg_twists(&screws, &joints);
-            let rank = screw::rank(&t, DEFAULT_RANK_TOLERANCE);
-            // A leg of six independent joints: the wrenches of all its joints at once, the rows
-            // of (Δ T)⁻¹ (w_j · $_k = δ_jk). Otherwise reciprocal complements, joint by joint.
-            let dual = (t.ncols() == 6 && rank.rank == 6)
+            // A leg of six independent joints (certified by `rank6`): the wrenches of all its
+            // joints at once, the rows of (Δ T)⁻¹ (w_j · $_k = δ_jk). Otherwise reciprocal
+            // complements, joint by joint.
+            let dual = (t.ncols() == 6
+                && screw::rank6(
+                    &nalgebra::Matrix6xX::from_column_slice(t.as_slice()),
+                    DEFAULT_RANK_TOLERANCE,
+                ) == 6)
                 .then(|| swap_blocks(&t).try_inverse())
                 .flatten();
             let structural = if dual.is_some() {
@@ -302,7 +308,7 @@ impl Manipulator {
             } else {
                 screw::reciprocal_complement(&t, DEFAULT_RANK_TOLERANCE)
             };
-            leg_ranks.push(rank);
+            leg_ranks.push(6 - structural.ncols());
             for (a, act) in self
                 .actuators
                 .iter()
@@ -492,8 +498,21 @@ impl Manipulator {
         let jd_rank = self.wrench_rank(&jacobians.jd, &jacobians.point);
         let (_, constraint_rank) = self.twists_of(&jacobians);
         let platform_dof = 6 - constraint_rank.rank;
+        let screws = m.joint_screws(&q);
+        let leg_ranks: Vec<Rank> = self
+            .legs
+            .iter()
+            .map(|leg| {
+                let joints: Vec<usize> = leg.joints.clone().collect();
+                screw::rank(
+                    &self.unitless_leg_twists(&screws, &joints),
+                    DEFAULT_RANK_TOLERANCE,
+                )
+            })
+            .collect();
         let generic = self.generic_ranks(&q, locked, settings)?;
-        let singularities = self.singularities(&jacobians, &jd_rank, &constraint_rank, &generic);
+        let singularities =
+            self.singularities(&jacobians, &leg_ranks, &jd_rank, &constraint_rank, &generic);
         Ok(Analysis {
             locked: locked.to_vec(),
             q,
@@ -502,6 +521,7 @@ impl Manipulator {
             platform_dof,
             jd_rank,
             constraint_rank,
+            leg_ranks,
             generic,
             singularities,
         })
@@ -536,8 +556,8 @@ impl Manipulator {
             jd = jd.max(self.wrench_rank(&j.jd, &j.point).rank);
             let (_, c) = self.twists_of(&j);
             constraint_counts[c.rank] += 1;
-            for (g, r) in legs.iter_mut().zip(&j.leg_ranks) {
-                *g = (*g).max(r.rank);
+            for (g, &r) in legs.iter_mut().zip(&j.leg_ranks) {
+                *g = (*g).max(r);
             }
         }
         let most = constraint_counts.iter().copied().max().unwrap_or(0);
@@ -557,6 +577,7 @@ impl Manipulator {
     fn singularities(
         &self,
         j: &Jacobians,
+        leg_ranks: &[Rank],
         jd_rank: &Rank,
         constraint_rank: &Rank,
         generic: &GenericRanks,
@@ -571,12 +592,12 @@ impl Manipulator {
                         "input {} has no effect on the platform: its joint depends on the other joints of leg {} ({})",
                         act.label(),
                         act.leg + 1,
-                        rank_text(&j.leg_ranks[act.leg])
+                        rank_text(&leg_ranks[act.leg])
                     ),
                 });
             }
         }
-        for (i, (here, &elsewhere)) in j.leg_ranks.iter().zip(&generic.legs).enumerate() {
+        for (i, (here, &elsewhere)) in leg_ranks.iter().zip(&generic.legs).enumerate() {
             if here.rank < elsewhere {
                 out.push(Singularity {
                     kind: SingularityKind::Leg,

@@ -11,9 +11,11 @@
 //! every configuration** (four parallel revolutes, a U whose second axis lies along the slider
 //! of a UPS leg): the leg has a self-motion or a redundant joint.
 //!
-//! Rank decisions are unit-free. The twists are made dimensionless with the leg's
-//! **characteristic length** `L`, the RMS distance of its revolutes' points from their centroid
-//! `c` (a prismatic joint has no point): a revolute of unit axis `ω` through `p` becomes
+//! Rank decisions are unit-free. The twists are made dimensionless with the mechanism's
+//! **characteristic point and length** `c`, `L` ([`crate::mechanism::Mechanism::scale`]; for a
+//! leg checked on its own by `kinsyn build`, those of its revolute points: their centroid and
+//! RMS distance from it; a prismatic joint has no point): a revolute of unit axis `ω` through
+//! `p` becomes
 //! `(ω; ((p − c)/L) × ω)`, a prismatic joint of unit direction `a` becomes `(0; a)` (its column
 //! multiplied by `L`, translational rows divided by it), and slider values are drawn in units of
 //! `L`. The rank is then [`screw::rank`] with the relative tolerance
@@ -49,8 +51,7 @@ pub struct LegCheck {
     pub chain: Chain,
     /// Number of primitive joints.
     pub joints: usize,
-    /// The characteristic length `L` (RMS distance of the revolutes' points from their
-    /// centroid; 1 when they coincide or there is no revolute, where it does not matter).
+    /// The characteristic length `L` the twists were made dimensionless with.
     pub length: f64,
     /// The rank of the dimensionless joint twists at the reference configuration, with its
     /// singular values ([`Rank::gap`] gives the gap of the decision).
@@ -68,7 +69,11 @@ pub struct LegCheck {
 
 impl LegCheck {
     /// Checks a leg given as its primitive joints `(kind, unit axis, point)` at the reference
-    /// configuration (the point of a prismatic joint is ignored). `leg` and `chain` only name it.
+    /// configuration (the point of a prismatic joint is ignored), made dimensionless about the
+    /// characteristic point and length `(centre, length)`: the mechanism's
+    /// ([`crate::mechanism::Mechanism::centre`], [`crate::mechanism::Mechanism::scale`]) for a
+    /// leg of a manipulator, the leg's own revolute points' when there is no manipulator yet
+    /// ([`LegCheck::standalone`]). `leg` and `chain` only name it.
     ///
     /// # Panics
     /// If an axis has no length or a point is not finite (a [`Manipulator`] never has either).
@@ -77,38 +82,15 @@ impl LegCheck {
         leg: usize,
         chain: &Chain,
         joints: &[(Primitive, Vector3<f64>, Vector3<f64>)],
+        (centre, length): (Vector3<f64>, f64),
     ) -> Self {
-        let revolute_points: Vec<Vector3<f64>> = joints
-            .iter()
-            .filter(|j| j.0 == Primitive::R)
-            .map(|j| j.2)
-            .collect();
-        let centroid = if revolute_points.is_empty() {
-            Vector3::zeros()
-        } else {
-            revolute_points.iter().sum::<Vector3<f64>>() / revolute_points.len() as f64
-        };
-        let rms = if revolute_points.is_empty() {
-            0.0
-        } else {
-            (revolute_points
-                .iter()
-                .map(|p| (p - centroid).norm_squared())
-                .sum::<f64>()
-                / revolute_points.len() as f64)
-                .sqrt()
-        };
-        let extent = revolute_points.iter().map(|p| p.norm()).fold(0.0, f64::max);
-        // Points that differ only by round-off of their coordinates coincide.
-        let coincide = rms <= 1e-12 * extent;
-        let length = if coincide { 1.0 } else { rms };
         let unitless = SerialChain::new(
             joints
                 .iter()
                 .map(|&(kind, axis, point)| {
                     let r = match kind {
-                        Primitive::R if !coincide => (point - centroid) / length,
-                        _ => Vector3::zeros(),
+                        Primitive::R => (point - centre) / length,
+                        Primitive::P => Vector3::zeros(),
                     };
                     (kind, axis, r)
                 })
@@ -151,6 +133,28 @@ impl LegCheck {
             reference,
             generic,
         }
+    }
+
+    /// [`LegCheck::new`] with the leg's own characteristic point and length (those of its
+    /// revolute points, [`crate::mechanism::Mechanism::scale`]'s definition): for a leg checked
+    /// before its manipulator exists (`kinsyn build`).
+    #[must_use]
+    pub fn standalone(
+        leg: usize,
+        chain: &Chain,
+        joints: &[(Primitive, Vector3<f64>, Vector3<f64>)],
+    ) -> Self {
+        let revolutes: Vec<Vector3<f64>> = joints
+            .iter()
+            .filter(|j| j.0 == Primitive::R)
+            .map(|j| j.2)
+            .collect();
+        Self::new(
+            leg,
+            chain,
+            joints,
+            crate::mechanism::characteristic_of(&revolutes),
+        )
     }
 
     /// Whether the reference configuration is a leg singularity: the rank there is below the
@@ -311,7 +315,12 @@ impl Manipulator {
                 .iter()
                 .map(|j| (j.kind, j.axis, j.point))
                 .collect();
-                LegCheck::new(i, &leg.chain, &primitives)
+                LegCheck::new(
+                    i,
+                    &leg.chain,
+                    &primitives,
+                    (self.mechanism.centre(), self.mechanism.scale()),
+                )
             })
             .collect()
     }

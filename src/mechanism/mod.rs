@@ -699,19 +699,26 @@ fn solve_least_squares(a: &DMatrix<f64>, b: &DVector<f64>) -> DVector<f64> {
 }
 
 /// The characteristic point and length of a set of joints (see [`Mechanism::scale`] and
-/// [`Mechanism::centre`]): the centroid of the revolute axis points (of every joint point when
-/// there is no revolute) and their RMS distance from it.
+/// [`Mechanism::centre`]): those of the revolute axis points, or of every joint point when there
+/// is no revolute.
 fn characteristic(joints: &[JointSpec]) -> (Vector3<f64>, f64) {
     let revolutes: Vec<Vector3<f64>> = joints
         .iter()
         .filter(|j| j.kind == Primitive::R)
         .map(|j| j.point)
         .collect();
-    let points = if revolutes.is_empty() {
-        joints.iter().map(|j| j.point).collect()
+    if revolutes.is_empty() {
+        characteristic_of(&joints.iter().map(|j| j.point).collect::<Vec<_>>())
     } else {
-        revolutes
-    };
+        characteristic_of(&revolutes)
+    }
+}
+
+/// The characteristic point and length of a set of points: their centroid and their RMS
+/// distance from it; the length is 1 when the points coincide (to round-off of their
+/// coordinates), where no length enters the kinematics. Every twist and wrench kinsyn makes
+/// dimensionless is referred to such a point and divided by such a length.
+pub(crate) fn characteristic_of(points: &[Vector3<f64>]) -> (Vector3<f64>, f64) {
     if points.is_empty() {
         return (Vector3::zeros(), 1.0);
     }
@@ -723,9 +730,8 @@ fn characteristic(joints: &[JointSpec]) -> (Vector3<f64>, f64) {
         .sum::<f64>()
         / n)
         .sqrt();
-    // All points coincide (e.g. a spherical mechanism): no length enters the kinematics, so any
-    // unit works.
-    if rms > 1e-9 * centroid.norm() && rms > 1e-150 {
+    let extent = points.iter().map(|p| p.norm()).fold(0.0, f64::max);
+    if rms > 1e-12 * extent && rms > 1e-150 {
         (centroid, rms)
     } else {
         (centroid, 1.0)
