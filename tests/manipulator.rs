@@ -1011,3 +1011,53 @@ fn build_refuses_a_singular_leg_instead_of_claiming_turned_axes() {
     let d = build(&spec("P!RaRaRa", "xxxx")).unwrap();
     assert!(!d.source.unwrap().contains("turned"));
 }
+
+#[test]
+fn the_platform_twists_from_the_wrenches_are_those_of_the_loop_closure() {
+    // One dof, one answer (issue 8): the platform's twists are computed once, as the twists
+    // reciprocal to the constraint rows of J_D. Second method: the platform's twists over the
+    // joint rates that close every loop (the intersection of the legs' twist systems). The two
+    // spans must be the same subspace, for every file of mechanisms/ and tests/library/, at the
+    // reference and along the finite motion.
+    let mut paths: Vec<std::path::PathBuf> = ["mechanisms", "tests/library"]
+        .iter()
+        .flat_map(|d| std::fs::read_dir(d).unwrap().map(|e| e.unwrap().path()))
+        .filter(|p| p.extension().is_some_and(|x| x == "json"))
+        .collect();
+    paths.sort();
+    for path in paths {
+        let m = Manipulator::from_json(&std::fs::read_to_string(&path).unwrap()).unwrap();
+        let settings = SampleSettings::default();
+        let walked = m
+            .mechanism()
+            .sample_motion(m.platform(), &m.reference(), &[], &settings)
+            .unwrap()
+            .samples;
+        for q in std::iter::once(m.reference()).chain(walked.into_iter().map(|s| s.q)) {
+            let (from_wrenches, _) = m.platform_twists(&q, &[]);
+            let (by_closure, dof) = m.mechanism().twist_space(m.platform(), &q, &[]);
+            assert_eq!(from_wrenches.ncols(), dof, "{}", path.display());
+            // (ω; v at the origin) to (v_P; ω), dimensionless with the mechanism's length.
+            let p = m.point(&q);
+            let l = m.mechanism().scale();
+            let to_p = |t: &DMatrix<f64>| {
+                DMatrix::from_fn(6, t.ncols(), |r, c| {
+                    let w = Vector3::new(t[(0, c)], t[(1, c)], t[(2, c)]);
+                    let v = Vector3::new(t[(3, c)], t[(4, c)], t[(5, c)]) + w.cross(&p);
+                    [v.x / l, v.y / l, v.z / l, w.x, w.y, w.z][r]
+                })
+            };
+            let a = kinsyn::screw::span_basis(&to_p(&by_closure), 1e-9).0;
+            let mut b = from_wrenches.clone();
+            for r in 0..3 {
+                b.row_mut(r).scale_mut(1.0 / l);
+            }
+            let b = kinsyn::screw::span_basis(&b, 1e-9).0;
+            assert!(
+                kinsyn::motion::same_span(&a, &b, 1e-7),
+                "{}: twist spaces differ",
+                path.display()
+            );
+        }
+    }
+}

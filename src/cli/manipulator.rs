@@ -216,12 +216,13 @@ fn analysis_json(m: &Manipulator, a: &Analysis, warnings: &[String]) -> serde_js
         "platform_rotation_vector_rad": [rv.x, rv.y, rv.z],
         "joint_values": a.q,
         "mobility": a.mobility,
+        "closure_rank": rank_json(&a.closure_rank, None),
         "platform_dof": a.platform_dof,
         "inputs": a.jacobians.free.iter().map(|&i| m.actuators()[i].label()).collect::<Vec<_>>(),
         "rows": rows,
-        "jd_rank": rank_json(&a.jd_rank, a.generic.jd),
-        "constraint_rank": rank_json(&a.constraint_rank, a.generic.constraint),
-        "leg_ranks": a.leg_ranks.iter().zip(&a.generic.legs).map(|(r, &g)| rank_json(r, g)).collect::<Vec<_>>(),
+        "jd_rank": rank_json(&a.jd_rank, Some(a.generic.jd)),
+        "constraint_rank": rank_json(&a.constraint_rank, Some(a.generic.constraint)),
+        "leg_ranks": a.leg_ranks.iter().zip(&a.generic.legs).map(|(r, &g)| rank_json(r, Some(g))).collect::<Vec<_>>(),
         "generic_assemblies": a.generic.assemblies,
         "singularities": a.singularities,
         "warnings": warnings,
@@ -229,7 +230,7 @@ fn analysis_json(m: &Manipulator, a: &Analysis, warnings: &[String]) -> serde_js
 }
 
 /// A rank decision with its gap and the generic rank it is compared with.
-fn rank_json(r: &kinsyn::screw::Rank, generic: usize) -> serde_json::Value {
+fn rank_json(r: &kinsyn::screw::Rank, generic: Option<usize>) -> serde_json::Value {
     let (kept, dropped) = r.gap();
     serde_json::json!({
         "rank": r.rank,
@@ -264,6 +265,13 @@ fn analysis_text(m: &Manipulator, a: &Analysis) -> String {
         a.mobility,
         a.platform_dof,
         a.mobility.saturating_sub(a.platform_dof)
+    );
+    let (kept, dropped) = a.closure_rank.gap();
+    let _ = writeln!(
+        s,
+        "loop closure: rank {} over {} free joint rates, gap {kept:.3e} kept / {dropped:.3e} dropped",
+        a.closure_rank.rank,
+        a.closure_rank.rank + a.mobility,
     );
     let inputs: Vec<String> = a
         .jacobians

@@ -161,6 +161,8 @@ pub struct Analysis {
     /// Dimension of the joint-rate null space of the loop closure (all free joints): the
     /// platform's degrees of freedom plus the legs' internal motions.
     pub mobility: usize,
+    /// The rank decision of the (dimensionless) loop-closure Jacobian behind `mobility`.
+    pub closure_rank: Rank,
     /// The platform's local degrees of freedom: six minus the rank of the constraint rows
     /// (the dimension of the twists reciprocal to them, [`Manipulator::platform_twists`]).
     pub platform_dof: usize,
@@ -494,7 +496,8 @@ impl Manipulator {
         let m = &self.mechanism;
         let q = m.assemble(q, &mask, None)?;
         let jacobians = self.jacobians(&q, locked);
-        let mobility = m.mobility(&q, &mask).dof;
+        let closure = m.mobility(&q, &mask);
+        let (mobility, closure_rank) = (closure.dof, closure.closure_rank);
         let jd_rank = self.wrench_rank(&jacobians.jd, &jacobians.point);
         let (_, constraint_rank) = self.twists_of(&jacobians);
         let platform_dof = 6 - constraint_rank.rank;
@@ -518,6 +521,7 @@ impl Manipulator {
             q,
             jacobians,
             mobility,
+            closure_rank,
             platform_dof,
             jd_rank,
             constraint_rank,
