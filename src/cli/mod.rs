@@ -91,8 +91,12 @@ enum Command {
     ///
     /// Rows of J_D are wrenches (f; m_P) at the platform point P acting on (v_P; ω): one per
     /// free input (its J_I entry), one per locked input and one per leg constraint wrench (zero
-    /// J_I rows: the constraint equations, eq. 22). Singularities are rank drops against nearby
-    /// configurations: inverse (an input without effect), direct (J_D), constraint.
+    /// J_I rows: the constraint equations, eq. 22). The platform dof is six minus the rank of
+    /// the constraint rows. Every rank is decided on a dimensionless copy (lengths over the
+    /// mechanism's characteristic length) and printed with its gap. Singularities are ranks
+    /// below those at random assemblies of the same mechanism around the pose (generic ranks):
+    /// inverse (an input without effect), leg (a leg loses rank), constraint (the constraint
+    /// wrenches lose rank: the platform gains a motion), direct (J_D loses rank).
     Analyze {
         /// A manipulator file (docs/mechanism-format.md).
         file: PathBuf,
@@ -104,8 +108,9 @@ enum Command {
         /// Inputs to lock, e.g. 'R1.1,R2.1,R3.1' (labels as in kinsyn modes).
         #[arg(long)]
         lock: Option<String>,
-        #[command(flatten)]
-        sampling: Sampling,
+        /// Seed of the random assemblies that give the generic ranks.
+        #[arg(long, default_value_t = 2026)]
+        seed: u64,
         /// Print JSON instead of text.
         #[arg(long)]
         json: bool,
@@ -183,11 +188,11 @@ impl From<BuildArgs> for kinsyn::manipulator::build::BuildSpec {
 /// How finite motion is sampled (seeded, reproducible).
 #[derive(Debug, Args)]
 struct Sampling {
-    /// Seed of the random walks.
+    /// Seed of the random walks (continuous random step lengths and directions).
     #[arg(long, default_value_t = 2026)]
     seed: u64,
     /// Configurations sampled per motion (at least 2: a group is recognised by its twist space
-    /// staying the same from one sample to another).
+    /// staying the same at samples at least 1e-3 apart).
     #[arg(long, default_value_t = 3, value_parser = clap::value_parser!(u16).range(2..))]
     samples: u16,
 }
@@ -367,13 +372,16 @@ fn execute(command: Command) -> Result<String, CliError> {
             file,
             pose,
             lock,
-            sampling,
+            seed,
             json: as_json,
         } => manipulator::analyze(
             &file,
             pose.as_deref(),
             lock.as_deref(),
-            &sampling.settings(),
+            &kinsyn::mechanism::SampleSettings {
+                seed,
+                ..Default::default()
+            },
             as_json,
         ),
         Command::Build { spec, output } => {
