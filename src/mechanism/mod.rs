@@ -357,51 +357,13 @@ impl Mechanism {
     /// the centre `c` over the characteristic length `L`.
     #[must_use]
     pub fn unitless_twists(&self, m: &DMatrix<f64>) -> DMatrix<f64> {
-        let mut out = m.clone();
-        for block in 0..m.nrows() / 6 {
-            for col in 0..m.ncols() {
-                let w = Vector3::new(
-                    m[(6 * block, col)],
-                    m[(6 * block + 1, col)],
-                    m[(6 * block + 2, col)],
-                );
-                let v = Vector3::new(
-                    m[(6 * block + 3, col)],
-                    m[(6 * block + 4, col)],
-                    m[(6 * block + 5, col)],
-                );
-                let vc = (v + w.cross(&self.centre)) / self.scale;
-                for k in 0..3 {
-                    out[(6 * block + 3 + k, col)] = vc[k];
-                }
-            }
-        }
-        out
+        map_velocities(m, |w, v| (v + w.cross(&self.centre)) / self.scale)
     }
 
     /// The inverse of [`Mechanism::unitless_twists`]: physical twists at the ground origin.
     #[must_use]
     pub fn physical_twists(&self, m: &DMatrix<f64>) -> DMatrix<f64> {
-        let mut out = m.clone();
-        for block in 0..m.nrows() / 6 {
-            for col in 0..m.ncols() {
-                let w = Vector3::new(
-                    m[(6 * block, col)],
-                    m[(6 * block + 1, col)],
-                    m[(6 * block + 2, col)],
-                );
-                let vc = Vector3::new(
-                    m[(6 * block + 3, col)],
-                    m[(6 * block + 4, col)],
-                    m[(6 * block + 5, col)],
-                );
-                let v = vc * self.scale - w.cross(&self.centre);
-                for k in 0..3 {
-                    out[(6 * block + 3 + k, col)] = v[k];
-                }
-            }
-        }
-        out
+        map_velocities(m, |w, vc| vc * self.scale - w.cross(&self.centre))
     }
 
     /// A wrench `(f; m_O)` (moment about the ground origin) in the dimensionless form
@@ -679,6 +641,26 @@ impl Mechanism {
             iterations: 60,
         })
     }
+}
+
+/// Twists (6-row blocks of the columns of `m`) with their linear parts replaced by
+/// `velocity(ω, v)`: a change of reference point or of length unit.
+fn map_velocities(
+    m: &DMatrix<f64>,
+    velocity: impl Fn(Vector3<f64>, Vector3<f64>) -> Vector3<f64>,
+) -> DMatrix<f64> {
+    let mut out = m.clone();
+    for block in (0..m.nrows() / 6).map(|b| 6 * b) {
+        for col in 0..m.ncols() {
+            let w = Vector3::from_fn(|k, _| m[(block + k, col)]);
+            let v = Vector3::from_fn(|k, _| m[(block + 3 + k, col)]);
+            let moved = velocity(w, v);
+            for k in 0..3 {
+                out[(block + 3 + k, col)] = moved[k];
+            }
+        }
+    }
+    out
 }
 
 /// The minimum-norm least-squares solution of `a x = b` (checked SVD, relative cut 1e-12).
