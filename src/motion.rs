@@ -550,6 +550,18 @@ pub struct Classification {
     pub same_span: bool,
     /// The smallest distance between two samples (dimensionless), `None` with fewer than two.
     pub min_separation: Option<f64>,
+    /// The gap of the rank decisions behind `dof`, over the samples.
+    pub rank_gap: RankGap,
+}
+
+/// The worst gap over several rank decisions, each singular value relative to the scale its
+/// decision was judged against ([`screw::Rank::gap`]).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct RankGap {
+    /// The smallest kept singular value (`None` when every rank is 0).
+    pub smallest_kept: Option<f64>,
+    /// The largest dropped singular value (0 when none is dropped).
+    pub largest_dropped: f64,
 }
 
 /// Classifies a motion from its twist spaces at several sampled configurations (the columns of
@@ -574,6 +586,7 @@ pub fn classify(samples: &[DMatrix<f64>], min_separation: f64, tolerance: f64) -
     let same = spans.iter().all(|(_, r)| r.rank == dof)
         && generic.windows(2).all(|w| same_span(w[0], w[1], tolerance));
     let min_separation = (samples.len() >= 2).then_some(min_separation);
+    let rank_gap = gap_over(spans.iter().map(|(_, r)| r));
     let evidence = dof == 0 || min_separation.is_some_and(|d| d >= MIN_SEPARATION);
     if let Some(first) = generic.first()
         && same
@@ -586,6 +599,7 @@ pub fn classify(samples: &[DMatrix<f64>], min_separation: f64, tolerance: f64) -
             dof,
             same_span: true,
             min_separation,
+            rank_gap,
         };
     }
     let rotations = generic
@@ -605,5 +619,28 @@ pub fn classify(samples: &[DMatrix<f64>], min_separation: f64, tolerance: f64) -
         dof,
         same_span: same,
         min_separation,
+        rank_gap,
     }
+}
+
+/// The worst gap over several rank decisions ([`RankGap`]).
+#[must_use]
+pub fn gap_over<'a>(ranks: impl Iterator<Item = &'a screw::Rank>) -> RankGap {
+    ranks.fold(
+        RankGap {
+            smallest_kept: None,
+            largest_dropped: 0.0,
+        },
+        |gap, r| {
+            let (kept, dropped) = r.gap();
+            RankGap {
+                smallest_kept: if r.rank == 0 {
+                    gap.smallest_kept
+                } else {
+                    Some(gap.smallest_kept.map_or(kept, |k| k.min(kept)))
+                },
+                largest_dropped: gap.largest_dropped.max(dropped),
+            }
+        },
+    )
 }

@@ -239,12 +239,15 @@ impl Line {
 /// The rank of a set of screws (the columns of `m`) with the singular values that decide it.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Rank {
-    /// Number of singular values above `tolerance × largest`.
+    /// Number of singular values above `tolerance × scale`.
     pub rank: usize,
     /// All singular values, largest first.
     pub singular_values: Vec<f64>,
     /// The relative tolerance used.
     pub tolerance: f64,
+    /// The value the tolerance is relative to: the largest singular value, or a scale that
+    /// cannot be round-off when one was given ([`span_basis_scaled`]).
+    pub scale: f64,
 }
 
 impl Rank {
@@ -264,16 +267,19 @@ impl Rank {
         self.singular_values.get(self.rank).copied().unwrap_or(0.0)
     }
 
-    /// The gap at the cut relative to the largest singular value: the smallest kept value over
-    /// the largest (how far the rank is from dropping) and the largest dropped value over the
-    /// largest (how far it is from rising). Near-singular cases show as a small first number.
+    /// The gap at the cut relative to the scale the rank was judged against (the largest
+    /// singular value unless another was given): the smallest kept value over it (how far the
+    /// rank is from dropping) and the largest dropped value over it (how far it is from
+    /// rising). Near-singular cases show as a small first number.
     #[must_use]
     pub fn gap(&self) -> (f64, f64) {
-        let top = self.singular_values.first().copied().unwrap_or(0.0);
-        if top == 0.0 {
+        if self.scale <= 0.0 {
             return (0.0, 0.0);
         }
-        (self.smallest_kept() / top, self.largest_dropped() / top)
+        (
+            self.smallest_kept() / self.scale,
+            self.largest_dropped() / self.scale,
+        )
     }
 }
 
@@ -436,6 +442,7 @@ pub fn rank(m: &DMatrix<f64>, tolerance: f64) -> Rank {
         rank,
         singular_values: sv,
         tolerance,
+        scale: top,
     }
 }
 
@@ -501,6 +508,7 @@ pub fn span_basis_scaled(
                 rank: 0,
                 singular_values: Vec::new(),
                 tolerance,
+                scale: 0.0,
             },
         );
     }
@@ -518,6 +526,7 @@ pub fn span_basis_scaled(
             rank: r,
             singular_values: d.singular_values,
             tolerance,
+            scale: top,
         },
     )
 }
@@ -544,6 +553,7 @@ pub fn nullspace_scaled(
                 rank: 0,
                 singular_values: Vec::new(),
                 tolerance,
+                scale: 0.0,
             },
         );
     }
@@ -561,6 +571,7 @@ pub fn nullspace_scaled(
             rank: r,
             singular_values: d.singular_values,
             tolerance,
+            scale: top,
         },
     )
 }

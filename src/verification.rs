@@ -232,6 +232,7 @@ pub fn verify(chain: &SerialChain, settings: &Settings, seed: u64) -> Verificati
             rank: 0,
             singular_values: vec![],
             tolerance: settings.rank_tolerance,
+            scale: 0.0,
         });
     let idle_joints: Vec<usize> = (0..n)
         .filter(|&i| {

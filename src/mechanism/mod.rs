@@ -545,6 +545,7 @@ impl Mechanism {
                     rank: 0,
                     singular_values: Vec::new(),
                     tolerance: MOBILITY_TOLERANCE,
+                    scale: 0.0,
                 },
             );
         }

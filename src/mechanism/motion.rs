@@ -66,6 +66,8 @@ pub struct MotionSample {
     /// Orthonormal basis of the body's spatial twists in the dimensionless form
     /// ([`Mechanism::unitless_twists`]: at the centre, translations over the length scale).
     pub twists: DMatrix<f64>,
+    /// The rank decision behind it (relative to the norm of the body's dimensionless Jacobian).
+    pub rank: crate::screw::Rank,
 }
 
 /// The sampled finite motion of a body.
@@ -177,8 +179,13 @@ impl Mechanism {
             };
             min_separation = min_separation.min(nearest);
             let screws = self.joint_screws(&q);
-            let (twists, _) = self.unitless_twist_space(body, &screws, locked);
-            samples.push(MotionSample { q, pose, twists });
+            let (twists, rank) = self.unitless_twist_space(body, &screws, locked);
+            samples.push(MotionSample {
+                q,
+                pose,
+                twists,
+                rank,
+            });
         }
         Ok(SampledMotion {
             samples,
@@ -227,8 +234,10 @@ impl Mechanism {
         settings: &SampleSettings,
     ) -> Result<Classification, MechanismError> {
         let motion = self.sample_motion(body, start, locked, settings)?;
-        let spans: Vec<DMatrix<f64>> = motion.samples.into_iter().map(|s| s.twists).collect();
+        let spans: Vec<DMatrix<f64>> = motion.samples.iter().map(|s| s.twists.clone()).collect();
         let mut c = motion::classify(&spans, motion.min_separation, motion::SUBSPACE_TOLERANCE);
+        // The rank decisions were made on the body's twists, not on these orthonormal bases.
+        c.rank_gap = motion::gap_over(motion.samples.iter().map(|s| &s.rank));
         if let Pattern::Group(g) = &mut c.pattern {
             // From the dimensionless form (about the centre, over the length scale) to the
             // mechanism's units, the axis point taken nearest the ground origin.
