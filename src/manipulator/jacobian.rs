@@ -31,7 +31,6 @@
 //! (dimensionless) positive.
 
 use super::Manipulator;
-use crate::mechanism::SampleSettings;
 use crate::notation::Primitive;
 use crate::screw::{self, DEFAULT_RANK_TOLERANCE, Rank, Wrench};
 use nalgebra::{DMatrix, DVector, Vector3};
@@ -109,79 +108,6 @@ impl Jacobians {
 /// The force below which (relative to the dimensionless size of a unit wrench) a wrench counts
 /// as a couple.
 const COUPLE_TOLERANCE: f64 = 1e-8;
-
-/// Which kind of singularity (Gosselin–Angeles, and Zlatanov's constraint singularity).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "snake_case")]
-pub enum SingularityKind {
-    /// Inverse (serial): an input's rate has no effect on the platform (`J_I` loses rank).
-    Inverse,
-    /// Leg: a leg's joint twists lose rank; the platform loses a freedom it has at generic
-    /// configurations.
-    Leg,
-    /// Direct (parallel): the platform moves with all inputs held (`J_D` loses rank).
-    Direct,
-    /// Constraint: the legs' constraint wrenches become dependent; the platform gains a motion
-    /// it does not have elsewhere.
-    Constraint,
-}
-
-/// A singularity found at a configuration.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct Singularity {
-    /// Which kind.
-    pub kind: SingularityKind,
-    /// What dropped, with the numbers.
-    pub detail: String,
-}
-
-/// The ranks of a manipulator at generic configurations: at random assemblies of the same
-/// mechanism around the configuration analysed ([`crate::mechanism::Mechanism::random_assemblies`]).
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct GenericRanks {
-    /// Random assemblies that closed (the ranks below are over them).
-    pub assemblies: usize,
-    /// The largest rank of `J_D`.
-    pub jd: usize,
-    /// The rank of the constraint rows found most often (the smaller on a tie).
-    pub constraint: usize,
-    /// The largest rank of each leg's joint twists.
-    pub legs: Vec<usize>,
-}
-
-/// Jacobians, mobility and singularities of a manipulator at one configuration.
-#[derive(Debug, Clone)]
-pub struct Analysis {
-    /// The locked inputs.
-    pub locked: Vec<usize>,
-    /// The joint values.
-    pub q: Vec<f64>,
-    /// The Jacobians.
-    pub jacobians: Jacobians,
-    /// Dimension of the joint-rate null space of the loop closure (all free joints): the
-    /// platform's degrees of freedom plus the legs' internal motions.
-    pub mobility: usize,
-    /// The rank decision of the (dimensionless) loop-closure Jacobian behind `mobility`.
-    pub closure_rank: Rank,
-    /// The platform's local degrees of freedom: six minus the rank of the constraint rows
-    /// (the dimension of the twists reciprocal to them, [`Manipulator::platform_twists`]).
-    pub platform_dof: usize,
-    /// Rank of `J_D` (dimensionless), with its singular values and gap.
-    pub jd_rank: Rank,
-    /// Rank of the constraint rows (dimensionless), with its singular values and gap.
-    pub constraint_rank: Rank,
-    /// Rank of each leg's joint twists (dimensionless), with its singular values and gap.
-    pub leg_ranks: Vec<Rank>,
-    /// The ranks at generic configurations.
-    pub generic: GenericRanks,
-    /// Singularities found.
-    pub singularities: Vec<Singularity>,
-}
-
-/// The number of random assemblies that decide the generic ranks, and their spread (radians;
-/// prismatic values over the length scale).
-const GENERIC_ASSEMBLIES: usize = 4;
-const GENERIC_SPREAD: f64 = 0.3;
 
 /// `Δ T`: the twists with their angular and linear halves swapped, so that a wrench `w` acts on
 /// them by the plain product `wᵀ (Δ T)`.
@@ -405,7 +331,11 @@ impl Manipulator {
 
     /// The current screws of a leg's joints in the dimensionless form (columns of unit size:
     /// at the centre, translations over the length scale, prismatic rates in length-scale units).
-    fn unitless_leg_twists(&self, screws: &[screw::Twist], joints: &[usize]) -> DMatrix<f64> {
+    pub(super) fn unitless_leg_twists(
+        &self,
+        screws: &[screw::Twist],
+        joints: &[usize],
+    ) -> DMatrix<f64> {
         let m = &self.mechanism;
         let t = DMatrix::from_fn(6, joints.len(), |r, c| screws[joints[c]].to_vector()[r]);
         let mut t = m.unitless_twists(&t);
@@ -437,7 +367,7 @@ impl Manipulator {
     }
 
     /// The rank of rows `(f; m_P)` in the dimensionless form, with its singular values.
-    fn wrench_rank(&self, rows: &DMatrix<f64>, point: &Vector3<f64>) -> Rank {
+    pub(super) fn wrench_rank(&self, rows: &DMatrix<f64>, point: &Vector3<f64>) -> Rank {
         screw::rank(&self.unitless_rows(rows, point), DEFAULT_RANK_TOLERANCE)
     }
 
@@ -451,7 +381,7 @@ impl Manipulator {
         self.twists_of(&j)
     }
 
-    fn twists_of(&self, j: &Jacobians) -> (DMatrix<f64>, Rank) {
+    pub(super) fn twists_of(&self, j: &Jacobians) -> (DMatrix<f64>, Rank) {
         let m = &self.mechanism;
         let rows = self.unitless_rows(&j.constraint_rows(), &j.point);
         let rank = screw::rank(&rows, DEFAULT_RANK_TOLERANCE);
@@ -476,194 +406,4 @@ impl Manipulator {
         });
         (out, rank)
     }
-
-    /// Jacobians, mobility and singularities at the assembled configuration `q` with the
-    /// `locked` inputs held. Singularities are rank drops against the ranks at generic
-    /// configurations: random assemblies of the same mechanism around `q`
-    /// ([`crate::mechanism::Mechanism::random_assemblies`], seeded by `settings.seed`). A configuration that is
-    /// singular along a whole neighbourhood of its own motion is still found, as long as the
-    /// mechanism is generic elsewhere.
-    ///
-    /// # Errors
-    /// When `q` is not assembled, or no random assembly around it closes.
-    pub fn analyse(
-        &self,
-        q: &[f64],
-        locked: &[usize],
-        settings: &SampleSettings,
-    ) -> Result<Analysis, super::ManipulatorError> {
-        let mask = self.lock_mask(locked);
-        let m = &self.mechanism;
-        let q = m.assemble(q, &mask, None)?;
-        let jacobians = self.jacobians(&q, locked);
-        let closure = m.mobility(&q, &mask);
-        let (mobility, closure_rank) = (closure.dof, closure.closure_rank);
-        let jd_rank = self.wrench_rank(&jacobians.jd, &jacobians.point);
-        let (_, constraint_rank) = self.twists_of(&jacobians);
-        let platform_dof = 6 - constraint_rank.rank;
-        let screws = m.joint_screws(&q);
-        let leg_ranks: Vec<Rank> = self
-            .legs
-            .iter()
-            .map(|leg| {
-                let joints: Vec<usize> = leg.joints.clone().collect();
-                screw::rank(
-                    &self.unitless_leg_twists(&screws, &joints),
-                    DEFAULT_RANK_TOLERANCE,
-                )
-            })
-            .collect();
-        let generic = self.generic_ranks(&q, locked, settings)?;
-        let singularities =
-            self.singularities(&jacobians, &leg_ranks, &jd_rank, &constraint_rank, &generic);
-        Ok(Analysis {
-            locked: locked.to_vec(),
-            q,
-            jacobians,
-            mobility,
-            closure_rank,
-            platform_dof,
-            jd_rank,
-            constraint_rank,
-            leg_ranks,
-            generic,
-            singularities,
-        })
-    }
-
-    /// The ranks at random assemblies around `q` (every joint free, so that they can leave a
-    /// singular set), with the `locked` inputs' rows as constraints.
-    fn generic_ranks(
-        &self,
-        q: &[f64],
-        locked: &[usize],
-        settings: &SampleSettings,
-    ) -> Result<GenericRanks, super::ManipulatorError> {
-        let m = &self.mechanism;
-        let assemblies = m.random_assemblies(
-            q,
-            &vec![false; m.joints().len()],
-            GENERIC_ASSEMBLIES,
-            GENERIC_SPREAD,
-            settings.seed,
-        );
-        if assemblies.is_empty() {
-            return Err(super::ManipulatorError::Pose(
-                "no random assembly around this configuration closes, so its generic ranks are unknown".into(),
-            ));
-        }
-        let mut jd = 0;
-        let mut legs = vec![0; self.legs.len()];
-        let mut constraint_counts = [0usize; 7];
-        for sample in &assemblies {
-            let j = self.jacobians(sample, locked);
-            jd = jd.max(self.wrench_rank(&j.jd, &j.point).rank);
-            let (_, c) = self.twists_of(&j);
-            constraint_counts[c.rank] += 1;
-            for (g, &r) in legs.iter_mut().zip(&j.leg_ranks) {
-                *g = (*g).max(r);
-            }
-        }
-        let most = constraint_counts.iter().copied().max().unwrap_or(0);
-        let constraint = constraint_counts
-            .iter()
-            .position(|&c| c == most)
-            .unwrap_or(0);
-        Ok(GenericRanks {
-            assemblies: assemblies.len(),
-            jd,
-            constraint,
-            legs,
-        })
-    }
-
-    /// The singularities at a configuration, from its ranks against the generic ones.
-    fn singularities(
-        &self,
-        j: &Jacobians,
-        leg_ranks: &[Rank],
-        jd_rank: &Rank,
-        constraint_rank: &Rank,
-        generic: &GenericRanks,
-    ) -> Vec<Singularity> {
-        let mut out = Vec::new();
-        for &a in &j.free {
-            let act = &self.actuators[a];
-            if j.without_wrench.contains(&a) {
-                out.push(Singularity {
-                    kind: SingularityKind::Inverse,
-                    detail: format!(
-                        "input {} has no effect on the platform: its joint depends on the other joints of leg {} ({})",
-                        act.label(),
-                        act.leg + 1,
-                        rank_text(&leg_ranks[act.leg])
-                    ),
-                });
-            }
-        }
-        for (i, (here, &elsewhere)) in leg_ranks.iter().zip(&generic.legs).enumerate() {
-            if here.rank < elsewhere {
-                out.push(Singularity {
-                    kind: SingularityKind::Leg,
-                    detail: format!(
-                        "leg {} ({}) has joint twists of rank {} here, {} at generic configurations ({})",
-                        i + 1,
-                        self.legs[i].chain,
-                        here.rank,
-                        elsewhere,
-                        rank_text(here)
-                    ),
-                });
-            }
-        }
-        if constraint_rank.rank < generic.constraint {
-            out.push(Singularity {
-                kind: SingularityKind::Constraint,
-                detail: format!(
-                    "constraint wrenches of rank {} here, {} at generic configurations: the platform gains {} dof ({})",
-                    constraint_rank.rank,
-                    generic.constraint,
-                    generic.constraint - constraint_rank.rank,
-                    rank_text(constraint_rank)
-                ),
-            });
-        }
-        if generic.jd < 6 {
-            out.push(Singularity {
-                kind: SingularityKind::Direct,
-                detail: format!(
-                    "the held inputs and constraints never fix the platform: J_D of rank {} at every generic configuration (too few inputs, or an architecture singularity)",
-                    generic.jd
-                ),
-            });
-        }
-        if jd_rank.rank < generic.jd {
-            out.push(Singularity {
-                kind: SingularityKind::Direct,
-                detail: format!(
-                    "J_D of rank {} here, {} at generic configurations ({})",
-                    jd_rank.rank,
-                    generic.jd,
-                    rank_text(jd_rank)
-                ),
-            });
-        }
-        out
-    }
-}
-
-/// A rank decision in words: the rank, the gap (smallest kept and largest dropped singular
-/// values over the largest) and the singular values.
-#[must_use]
-pub fn rank_text(r: &Rank) -> String {
-    let (kept, dropped) = r.gap();
-    format!(
-        "rank {}, gap {kept:.3e} kept / {dropped:.3e} dropped, singular values {}",
-        r.rank,
-        r.singular_values
-            .iter()
-            .map(|x| format!("{x:.3e}"))
-            .collect::<Vec<_>>()
-            .join(" ")
-    )
 }

@@ -19,12 +19,12 @@ pub mod file;
 mod jacobian;
 pub mod leg;
 mod modes;
+mod singularity;
 
-pub use jacobian::{
-    Analysis, GenericRanks, Jacobians, RowKind, Singularity, SingularityKind, WrenchRow, rank_text,
-};
+pub use jacobian::{Jacobians, RowKind, WrenchRow};
 pub use leg::{LegCheck, LegWarning, LegWarningKind};
 pub use modes::{MAX_INPUTS, Mode, Modes, PatternModes};
+pub use singularity::{Analysis, GenericRanks, Singularity, SingularityKind, rank_text};
 
 use crate::catalogue::Catalogue;
 use crate::chain::Displacement;
