@@ -645,3 +645,35 @@ fn build_fails_on_a_leg_that_is_singular_at_the_built_geometry() {
         ],
     );
 }
+
+#[test]
+fn a_structure_is_called_one() {
+    // Issue 8 bug 3 mentions a 4-leg PPR built with `build`. Hand derivation: each PPR leg
+    // (sliders along its leg frame's x and y, revolute along z, the leg's direction) allows the
+    // planar motions G of the plane normal to its leg; two planar groups with non-parallel
+    // normals share no rotation and only the translations along the line where the planes meet,
+    // and three independent normals leave none. Four inclined legs: dof 0 everywhere, one
+    // answer from mobility and wrenches, and `analyze` says it is a structure.
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("ppr.json");
+    let file = file.to_str().unwrap();
+    succeed(&[
+        "build",
+        "--legs",
+        "4",
+        "--chain",
+        "PPR",
+        "--axes",
+        "xyz",
+        "--actuated",
+        "1",
+        "-o",
+        file,
+    ]);
+    let out = succeed(&["analyze", file]);
+    assert!(
+        out.contains("mobility 0 (joint rates closing the loops), platform dof 0"),
+        "{out}"
+    );
+    assert!(out.contains("a structure, not a manipulator"), "{out}");
+}

@@ -318,6 +318,12 @@ fn analysis_text(m: &Manipulator, a: &Analysis) -> String {
             rank_text(r)
         );
     }
+    if a.generic.constraint == 6 && a.locked.is_empty() {
+        let _ = writeln!(
+            s,
+            "note: the constraint wrenches have rank 6 at every generic configuration: with every input free the platform cannot move (a structure, not a manipulator)"
+        );
+    }
     if a.singularities.is_empty() {
         let _ = writeln!(s, "no singularity");
     }
