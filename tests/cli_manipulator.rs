@@ -550,10 +550,12 @@ fn a_singular_leg_is_warned_on_stderr_and_in_json() {
         );
         assert!(!stdout(&o).contains("warning"), "{command}: {}", stdout(&o));
     }
-    let o = kinsyn(&["analyze", file, "--json"]);
-    let v: Value = serde_json::from_str(&stdout(&o)).unwrap();
-    assert_eq!(v["warnings"], serde_json::json!([message]));
-    assert_eq!(stderr(&o), format!("warning: {file}: {message}\n"));
+    for command in ["analyze", "modes"] {
+        let o = kinsyn(&[command, file, "--json"]);
+        let v: Value = serde_json::from_str(&stdout(&o)).unwrap();
+        assert_eq!(v["warnings"], serde_json::json!([message]), "{command}");
+        assert_eq!(stderr(&o), format!("warning: {file}: {message}\n"));
+    }
     // A command that fails still prints its error as the only stderr line.
     let o = kinsyn(&["analyze", file, "--lock", "P9.9"]);
     assert_input_error(

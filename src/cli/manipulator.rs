@@ -64,9 +64,14 @@ pub fn build_command(spec: &BuildSpec, output: Option<&Path>) -> Result<String, 
 pub fn modes(path: &Path, settings: &SampleSettings, as_json: bool) -> Result<String, CliError> {
     let m = load(path)?;
     let modes = m.modes(settings).map_err(CliError::Input)?;
-    warn(path, &leg_warnings(&m));
+    let warnings = leg_warnings(&m);
+    warn(path, &warnings);
     if as_json {
-        return Ok(json(&modes));
+        let mut value = serde_json::to_value(&modes).unwrap_or_default();
+        if let Some(object) = value.as_object_mut() {
+            object.insert("warnings".into(), serde_json::json!(warnings));
+        }
+        return Ok(json(&value));
     }
     let mut s = String::new();
     let _ = writeln!(
