@@ -171,20 +171,29 @@ fn joint_distance(chain: &SerialChain, i: usize, a: f64, b: f64) -> f64 {
 /// the samples are distinct ([`crate::motion::MIN_SEPARATION`]).
 const SAMPLE_APART: f64 = 1e-2;
 
+/// Draws per sample before one that is not apart is taken anyway (with many samples the joint
+/// ranges run out of room; the classification then refuses group claims it cannot prove).
+const DRAWS_PER_SAMPLE: usize = 1000;
+
 /// The sampled configurations [`verify`] uses for `seed`: independent uniform draws, a draw
-/// taken again while one of its joint values is within `SAMPLE_APART` of an earlier sample's.
+/// taken again (up to `DRAWS_PER_SAMPLE` times) while one of its joint values is within
+/// `SAMPLE_APART` of an earlier sample's.
 #[must_use]
 pub fn configurations(chain: &SerialChain, settings: &Settings, seed: u64) -> Vec<Vec<f64>> {
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
     let mut out: Vec<Vec<f64>> = Vec::with_capacity(settings.samples.max(1));
     while out.len() < settings.samples.max(1) {
-        let q = random_configuration(chain, &mut rng);
-        let apart = out.iter().all(|p| {
-            (0..chain.len()).all(|i| joint_distance(chain, i, p[i], q[i]) >= SAMPLE_APART)
-        });
-        if apart {
-            out.push(q);
+        let mut q = random_configuration(chain, &mut rng);
+        for _ in 1..DRAWS_PER_SAMPLE {
+            let apart = out.iter().all(|p| {
+                (0..chain.len()).all(|i| joint_distance(chain, i, p[i], q[i]) >= SAMPLE_APART)
+            });
+            if apart {
+                break;
+            }
+            q = random_configuration(chain, &mut rng);
         }
+        out.push(q);
     }
     out
 }

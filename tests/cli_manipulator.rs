@@ -679,3 +679,25 @@ fn a_structure_is_called_one() {
     );
     assert!(out.contains("a structure, not a manipulator"), "{out}");
 }
+
+#[test]
+fn modes_print_the_parameters_of_the_groups() {
+    // Issue 8: a group's parameters in the text output. Hand derivation for the 3-UPS of
+    // mechanisms/ (platform radius 0.5 at height 1, legs at 0°, 120°, 240°): with legs 2 and 3
+    // fully locked and leg 1's α locked, the platform turns about the line through the S centres
+    // G2 = (−0.25, 0.433, 1) and G3 = (−0.25, −0.433, 1), along y; its point nearest the origin
+    // is (−0.25, 0, 1). The spherical 3-RRR's axes all pass through (0, 0, 0.5) (its source).
+    let out = succeed(&["modes", "mechanisms/3-ups.json"]);
+    assert!(
+        out.lines()
+            .any(|l| l.starts_with("R1.1 R2.1 P2.3 R3.1 P3.3 ")
+                && l.ends_with("R(y)  group, axis through [-0.25, 0, 1] m")),
+        "{out}"
+    );
+    let out = succeed(&["modes", "mechanisms/3-rrr-spherical.json"]);
+    assert!(
+        out.lines()
+            .any(|l| l.trim() == "S        lock - (centre [0, 0, 0.5] m)"),
+        "{out}"
+    );
+}

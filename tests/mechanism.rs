@@ -314,3 +314,33 @@ fn a_sampled_motion_reports_how_far_apart_its_samples_are() {
         assert!((nearest - motion.min_separation).abs() < 1e-12);
     }
 }
+
+#[test]
+fn a_classification_reports_the_gap_of_its_rank_decisions() {
+    // The four-bar's coupler has one dof at every sample: one kept singular value, none
+    // dropped (its twists over a one-dimensional space of rates), and the kept one well away
+    // from the tolerance — a generic configuration. With the crank locked the coupler cannot
+    // move: nothing kept, and what is dropped is round-off relative to its unit screws.
+    let m = four_bar();
+    let settings = mechanism::SampleSettings::default();
+    let free = m
+        .motion_pattern(2, &[0.0; 4], &[false; 4], &settings)
+        .unwrap();
+    assert_eq!(free.dof, 1);
+    assert!(
+        free.rank_gap.smallest_kept.unwrap() > 1e-3,
+        "{:?}",
+        free.rank_gap
+    );
+    assert!(free.rank_gap.largest_dropped == 0.0, "{:?}", free.rank_gap);
+    let locked = m
+        .motion_pattern(2, &[0.0; 4], &[true, false, false, false], &settings)
+        .unwrap();
+    assert_eq!(locked.dof, 0);
+    assert_eq!(locked.rank_gap.smallest_kept, None);
+    assert!(
+        locked.rank_gap.largest_dropped < 1e-12,
+        "{:?}",
+        locked.rank_gap
+    );
+}

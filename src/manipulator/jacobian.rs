@@ -146,40 +146,44 @@ fn joint_wrench(b: &DMatrix<f64>, s: &DMatrix<f64>, offset: &Vector3<f64>) -> Op
     if s.ncols() == 0 {
         return Some(w0);
     }
-    // Smallest force: remove the constraint forces' share of the force.
-    let forces = s.rows(0, 3).into_owned();
-    let f0 = w0.rows(0, 3).into_owned();
-    let fd = screw::svd(&forces);
-    let mut c = DVector::zeros(s.ncols());
-    let mut couples = Vec::new();
-    for (k, &sigma) in fd.singular_values.iter().enumerate() {
-        // The basis is orthonormal, so a constraint direction with a force below the tolerance
-        // (relative to 1, not to the other forces) is a couple.
-        if sigma > COUPLE_TOLERANCE && k < fd.u.ncols() {
-            c += fd.v.column(k) * (fd.u.column(k).dot(&f0) / sigma);
-        } else {
-            couples.push(fd.v.column(k).into_owned());
-        }
-    }
+    // Smallest force: remove the constraint forces' share of the force. The basis is
+    // orthonormal, so a constraint direction whose force is below the tolerance (relative to 1,
+    // not to the other forces) is a couple.
+    let (c, couples) =
+        truncated_least_squares(&s.rows(0, 3).into_owned(), &w0.rows(0, 3).into_owned());
     let w1 = &w0 - s * &c;
-    if couples.is_empty() {
+    if couples.ncols() == 0 {
         return Some(w1);
     }
     // Then the smallest moment about P: remove the constraint couples' share of it.
-    let n = DMatrix::from_columns(&couples);
-    let sn = s * &n;
+    let sn = s * &couples;
     let moments = DMatrix::from_fn(3, sn.ncols(), |r, k| {
         moment_at(&sn.column(k).into_owned(), offset)[r + 3]
     });
-    let m1 = moment_at(&w1, offset).rows(3, 3).into_owned();
-    let md = screw::svd(&moments);
-    let mut z = DVector::zeros(sn.ncols());
-    for (k, &sigma) in md.singular_values.iter().enumerate() {
-        if sigma > COUPLE_TOLERANCE && k < md.u.ncols() {
-            z += md.v.column(k) * (md.u.column(k).dot(&m1) / sigma);
+    let (z, _) = truncated_least_squares(&moments, &moment_at(&w1, offset).rows(3, 3).into_owned());
+    Some(w1 - sn * z)
+}
+
+/// The least-squares solution `x` of `a x ≈ b` over the directions of `a` whose singular values
+/// exceed [`COUPLE_TOLERANCE`] (absolute: `a` is a block of an orthonormal basis), and the other
+/// directions (columns), along which `a` is round-off.
+fn truncated_least_squares(a: &DMatrix<f64>, b: &DVector<f64>) -> (DVector<f64>, DMatrix<f64>) {
+    let d = screw::svd(a);
+    let mut x = DVector::zeros(a.ncols());
+    let mut rest = Vec::new();
+    for (k, &sigma) in d.singular_values.iter().enumerate() {
+        if sigma > COUPLE_TOLERANCE && k < d.u.ncols() {
+            x += d.v.column(k) * (d.u.column(k).dot(b) / sigma);
+        } else {
+            rest.push(d.v.column(k).into_owned());
         }
     }
-    Some(w1 - sn * z)
+    let rest = if rest.is_empty() {
+        DMatrix::zeros(a.ncols(), 0)
+    } else {
+        DMatrix::from_columns(&rest)
+    };
+    (x, rest)
 }
 
 impl Manipulator {
@@ -198,8 +202,8 @@ impl Manipulator {
         let mut constraints = Vec::new();
         let mut without_wrench = Vec::new();
         let mut leg_ranks = Vec::with_capacity(self.legs.len());
-        // A row from a dimensionless wrench: physical (f; m_P), unit force (unit moment for a
-        // couple), with its sign chosen by `positive` applied to the physical row.
+        // A row from a dimensionless wrench: the physical wrench and its row (f; m_P), with a
+        // unit force (a unit moment for a couple).
         let physical = |w: &DVector<f64>| -> (Wrench, [f64; 6]) {
             let at_p = moment_at(w, &offset);
             let size = at_p.norm();
@@ -384,18 +388,17 @@ impl Manipulator {
     pub(super) fn twists_of(&self, j: &Jacobians) -> (DMatrix<f64>, Rank) {
         let m = &self.mechanism;
         let rows = self.unitless_rows(&j.constraint_rows(), &j.point);
-        let rank = screw::rank(&rows, DEFAULT_RANK_TOLERANCE);
-        // Twists reciprocal to every constraint wrench: the reciprocal complement with the roles
-        // of the halves exchanged (a wrench acts on a twist as a twist acts on a wrench).
-        let twists = if rows.ncols() == 0 || rank.rank == 0 {
-            DMatrix::identity(6, 6)
+        // Twists reciprocal to every constraint wrench: the null space of the rows, whose
+        // coefficients (of f, then of m̂) are a twist's (v̂; ω) since w·t = f·v̂ + m̂·ω.
+        let (basis, rank) = if rows.ncols() == 0 {
+            (
+                DMatrix::identity(6, 6),
+                screw::rank(&rows, DEFAULT_RANK_TOLERANCE),
+            )
         } else {
-            let d = screw::svd(&rows.transpose());
-            let basis = d.v.columns(rank.rank, 6 - rank.rank).into_owned();
-            // basis holds (f-slot; m-slot) coefficients of twists t with w·t = f·v̂ + m̂·ω = 0,
-            // i.e. (v̂; ω): back to (ω; v̂).
-            swap_blocks(&basis)
+            screw::nullspace(&rows.transpose(), DEFAULT_RANK_TOLERANCE)
         };
+        let twists = swap_blocks(&basis);
         // Dimensionless (ω; v_c/L) to physical (v_P; ω).
         let physical = m.physical_twists(&twists);
         let out = DMatrix::from_fn(6, physical.ncols(), |r, c| {

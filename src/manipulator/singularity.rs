@@ -90,9 +90,9 @@ impl Manipulator {
     /// Jacobians, mobility and singularities at the assembled configuration `q` with the
     /// `locked` inputs held. Singularities are rank drops against the ranks at generic
     /// configurations: random assemblies of the same mechanism around `q`
-    /// ([`crate::mechanism::Mechanism::random_assemblies`], seeded by `settings.seed`). A configuration that is
-    /// singular along a whole neighbourhood of its own motion is still found, as long as the
-    /// mechanism is generic elsewhere.
+    /// ([`crate::mechanism::Mechanism::random_assemblies`], seeded by `settings.seed`). A
+    /// configuration that is singular along a whole neighbourhood of its own motion is still
+    /// found, as long as the mechanism is generic elsewhere.
     ///
     /// # Errors
     /// When `q` is not assembled, or no random assembly around it closes.

@@ -141,7 +141,8 @@ impl Mechanism {
 
     /// Samples the finite motion of `body` from the assembled configuration `start` with the
     /// `locked` joints held: `settings.samples` random walks, each walked again (up to 16 times)
-    /// while its body pose ends closer than [`MIN_SEPARATION`] to an earlier sample's.
+    /// while its body pose ends closer than [`MIN_SEPARATION`] to an earlier sample's and the
+    /// body can move there.
     ///
     /// # Errors
     /// When Newton's method cannot close the loops even after halving a step four times (the
@@ -159,33 +160,36 @@ impl Mechanism {
         let mut samples: Vec<MotionSample> = Vec::with_capacity(settings.samples);
         let mut min_separation = f64::INFINITY;
         for _ in 0..settings.samples.max(1) {
-            let mut best: Option<(f64, Vec<f64>, Displacement)> = None;
+            let mut best: Option<(f64, MotionSample)> = None;
             for _ in 0..WALK_ATTEMPTS {
                 let q = self.walk(&start, locked, &free, settings, &mut rng)?;
                 let pose = self.poses(&q)[body];
+                let (twists, rank) =
+                    self.unitless_twist_space(body, &self.joint_screws(&q), locked);
                 let nearest = samples
                     .iter()
                     .map(|s| self.pose_distance(&s.pose, &pose))
                     .fold(f64::INFINITY, f64::min);
-                if best.as_ref().is_none_or(|(d, _, _)| nearest > *d) {
-                    best = Some((nearest, q, pose));
+                // A body that cannot move here has nothing to tell apart: no walk again.
+                let done = nearest >= MIN_SEPARATION || rank.rank == 0;
+                if best.as_ref().is_none_or(|(d, _)| nearest > *d) {
+                    let sample = MotionSample {
+                        q,
+                        pose,
+                        twists,
+                        rank,
+                    };
+                    best = Some((nearest, sample));
                 }
-                if nearest >= MIN_SEPARATION {
+                if done {
                     break;
                 }
             }
-            let Some((nearest, q, pose)) = best else {
+            let Some((nearest, sample)) = best else {
                 break;
             };
             min_separation = min_separation.min(nearest);
-            let screws = self.joint_screws(&q);
-            let (twists, rank) = self.unitless_twist_space(body, &screws, locked);
-            samples.push(MotionSample {
-                q,
-                pose,
-                twists,
-                rank,
-            });
+            samples.push(sample);
         }
         Ok(SampledMotion {
             samples,
