@@ -253,11 +253,11 @@ pub enum PatternQuery {
 pub enum PatternError {
     /// Not a known form.
     #[error(
-        "'{0}' is not a motion pattern; write a group (E, T(x), R(z), H(z), T2(xy), C(z), G(xy), T3, S, Y(z), X(z), D) or nTmR such as 3T1R"
+        "{0:?} is not a motion pattern; write a group (E, T(x), R(z), H(z), T2(xy), C(z), G(xy), T3, S, Y(z), X(z), D) or nTmR such as 3T1R"
     )]
     Unknown(String),
     /// A group that takes no direction was given one, or a bad direction.
-    #[error("'{text}': {why}")]
+    #[error("{text:?}: {why}")]
     BadParameter {
         /// The input.
         text: String,
@@ -316,7 +316,7 @@ impl FromStr for PatternQuery {
                 _ => {
                     return Err(PatternError::BadParameter {
                         text,
-                        why: format!("direction '{p}' is not x, y or z"),
+                        why: format!("direction {p:?} is not x, y or z"),
                     });
                 }
             }),
@@ -327,7 +327,7 @@ impl FromStr for PatternQuery {
                 _ => {
                     return Err(PatternError::BadParameter {
                         text,
-                        why: format!("plane '{p}' is not xy, yz or xz"),
+                        why: format!("plane {p:?} is not xy, yz or xz"),
                     });
                 }
             }),

@@ -164,7 +164,7 @@ pub enum NotationError {
     Empty,
     /// A character that is no joint letter, mark or bracket.
     #[error(
-        "column {column}: '{found}' is not a joint letter (P, R, C, U, S) or a mark (a, b, c, !)"
+        "column {column}: {found:?} is not a joint letter (P, R, C, U, S) or a mark (a, b, c, !)"
     )]
     UnknownCharacter {
         /// Where.
@@ -174,7 +174,7 @@ pub enum NotationError {
     },
     /// A mark, bracket or comma with no joint letter before it.
     #[error(
-        "column {column}: mark '{found}' refers to no joint; marks follow the joint letter they belong to"
+        "column {column}: mark {found:?} refers to no joint; marks follow the joint letter they belong to"
     )]
     DanglingMark {
         /// Where.
@@ -198,7 +198,7 @@ pub enum NotationError {
     },
     /// A slot that is not `-`, a group letter, `!` or a group letter followed by `!`.
     #[error(
-        "column {column}: bad slot '{slot}'; a slot is '-', a group letter a/b/c, '!' or both as in 'a!'"
+        "column {column}: bad slot {slot:?}; a slot is '-', a group letter a/b/c, '!' or both as in 'a!'"
     )]
     BadSlot {
         /// Where the slot starts.

@@ -208,11 +208,11 @@ pub fn parse_lock_set(text: &str, n: usize) -> Result<u32, String> {
     for c in text.chars().filter(|c| !matches!(c, ',' | ' ' | '-')) {
         let Some(d) = c.to_digit(10).filter(|&d| d >= 1 && (d as usize) <= n) else {
             return Err(format!(
-                "lock set '{text}': '{c}' is not a joint of this chain (joints 1 to {n})"
+                "lock set {text:?}: {c:?} is not a joint of this chain (joints 1 to {n})"
             ));
         };
         if mask & (1 << (d - 1)) != 0 {
-            return Err(format!("lock set '{text}': joint {d} named twice"));
+            return Err(format!("lock set {text:?}: joint {d} named twice"));
         }
         mask |= 1 << (d - 1);
     }

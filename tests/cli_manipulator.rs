@@ -215,14 +215,17 @@ fn bad_description_files_are_one_line_naming_the_field_and_exit_2() {
                 "notjson.json",
                 "{\"format\": \"kinsyn-manipulator/1\", ",
             ),
-            vec!["file: not JSON"],
+            vec!["is not a kinsyn manipulator file (not JSON"],
         ),
         (
             "no format",
             broken(&dir, "noformat.json", |v| {
                 v.as_object_mut().unwrap().remove("format");
             }),
-            vec!["format: missing", "kinsyn-manipulator/1"],
+            vec![
+                "is not a kinsyn manipulator file (no \"format\"",
+                "kinsyn-manipulator/1",
+            ],
         ),
         (
             "wrong format",
@@ -230,8 +233,8 @@ fn bad_description_files_are_one_line_naming_the_field_and_exit_2() {
                 v["format"] = "kinsyn-manipulator/2".into();
             }),
             vec![
-                "format: 'kinsyn-manipulator/2'",
-                "expected 'kinsyn-manipulator/1'",
+                "(\"format\" is \"kinsyn-manipulator/2\"",
+                "expected \"kinsyn-manipulator/1\"",
             ],
         ),
         (
@@ -309,16 +312,16 @@ fn bad_poses_locks_and_builds_are_one_line_and_exit_2() {
     assert_input_error(
         &o,
         "unreachable pose",
-        &["--pose '0.3,0,1,0,0,0'", "the pose does not assemble"],
+        &["--pose \"0.3,0,1,0,0,0\"", "the pose does not assemble"],
     );
     let o = kinsyn(&["analyze", "mechanisms/3-rps.json", "--pose", "0,0,1"]);
-    assert_input_error(&o, "short pose", &["--pose '0,0,1'", "six numbers"]);
+    assert_input_error(&o, "short pose", &["--pose \"0,0,1\"", "six numbers"]);
     // R1.1 is an input of the 3-UPS, not of the 3-RPS (whose inputs are the prismatic joints).
     let o = kinsyn(&["analyze", "mechanisms/3-rps.json", "--lock", "R1.1"]);
     assert_input_error(
         &o,
         "unknown lock label",
-        &["'R1.1' is not an actuator of 3-RPS", "P1.2 P2.2 P3.2"],
+        &["\"R1.1\" is not an actuator of 3-RPS", "P1.2 P2.2 P3.2"],
     );
     let o = kinsyn(&["build", "--legs", "2", "--chain", "U(!,-)P!S"]);
     assert_input_error(&o, "build --legs 2", &["--legs 2", "three to six legs"]);
@@ -331,13 +334,14 @@ fn bad_poses_locks_and_builds_are_one_line_and_exit_2() {
     );
 }
 
+/// A missing input file is a mistake in the arguments: exit 2 (docs/limits.md).
 #[test]
-fn a_missing_file_is_exit_1() {
+fn a_missing_file_is_exit_2() {
     let dir = tempfile::tempdir().unwrap();
     let missing = dir.path().join("missing.json");
     for command in ["modes", "analyze"] {
         let o = kinsyn(&[command, missing.to_str().unwrap()]);
-        assert_eq!(o.status.code(), Some(1), "{command}: {}", stderr(&o));
+        assert_eq!(o.status.code(), Some(2), "{command}: {}", stderr(&o));
         let err = stderr(&o);
         assert_eq!(err.lines().count(), 1, "{err}");
         assert!(err.starts_with("kinsyn: error: "), "{err}");
@@ -399,7 +403,7 @@ fn review_findings_stay_fixed() {
     assert_input_error(
         &kinsyn(&["analyze", p.to_str().unwrap()]),
         "format 1",
-        &["format: 1 is not"],
+        &["is not a kinsyn manipulator file (\"format\" is 1, expected"],
     );
     // A missing nested field is named by its whole path.
     let p = broken(&dir, "no-position.json", |v| {
@@ -437,7 +441,7 @@ fn review_findings_stay_fixed() {
             "xxzxyz",
         ]),
         "U with parallel axes",
-        &["--axes 'xxzxyz'", "the U at joints 1–2"],
+        &["--axes \"xxzxyz\"", "the U at joints 1–2"],
     );
     assert_input_error(
         &kinsyn(&["build", "--chain", "UPS", "--actuated", "9"]),
@@ -561,7 +565,7 @@ fn a_singular_leg_is_warned_on_stderr_and_in_json() {
     assert_input_error(
         &o,
         "bad lock on a warned file",
-        &["'P9.9' is not an actuator"],
+        &["\"P9.9\" is not an actuator"],
     );
 }
 
@@ -594,7 +598,7 @@ fn parallel_marks_that_contradict_the_axes_are_one_line_exit_2() {
     assert_input_error(
         &o,
         "build parallel marks",
-        &["--axes 'xyx': joints 1 and 2 of RaRaRa are in parallel group 'a' but get 'x' and 'y'"],
+        &["--axes \"xyx\": joints 1 and 2 of RaRaRa are in parallel group 'a' but get 'x' and 'y'"],
     );
 }
 

@@ -974,7 +974,7 @@ fn build_refuses_a_singular_leg_instead_of_claiming_turned_axes() {
     let e = build(&spec("RaRaRa", "xyx")).unwrap_err();
     assert_eq!(
         e,
-        "--axes 'xyx': joints 1 and 2 of RaRaRa are in parallel group 'a' but get 'x' and 'y': the axes of a parallel group must be parallel"
+        "--axes \"xyx\": joints 1 and 2 of RaRaRa are in parallel group 'a' but get 'x' and 'y': the axes of a parallel group must be parallel"
     );
     // When turning does help, the claim is true. Catalogue PPRCR with axes xyxyyz: joints 2 and
     // 4 are both guides along y, twists (0; y), rank 5 at the reference; the R along x between

@@ -2,17 +2,61 @@
 
 use super::{CliError, json};
 use kinsyn::manipulator::build::{BuildSpec, build};
-use kinsyn::manipulator::{Analysis, Manipulator, RowKind, rank_text};
+use kinsyn::manipulator::{Analysis, Manipulator, ManipulatorError, RowKind, file, rank_text};
 use kinsyn::mechanism::SampleSettings;
 use nalgebra::Vector3;
 use std::fmt::Write as _;
+use std::io::Read as _;
 use std::path::Path;
 
-/// Reads and builds a manipulator file; errors name the file and the field.
+/// The largest manipulator file read, in bytes: the largest description within the limits of
+/// docs/limits.md (12 legs of 12 joints, written out with every optional field) is under
+/// 64 KiB; anything much larger is not a description.
+pub const MAX_FILE_BYTES: u64 = 1 << 20;
+
+/// Reads and builds a manipulator file; errors name the file and the field. A path that is
+/// not a regular file, a file over [`MAX_FILE_BYTES`], or text that is not UTF-8 or not a
+/// description is refused as "not a kinsyn manipulator file" before it is parsed further.
 pub fn load(path: &Path) -> Result<Manipulator, CliError> {
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| std::io::Error::new(e.kind(), format!("{}: {e}", path.display())))?;
-    Manipulator::from_json(&text).map_err(|e| CliError::Input(format!("{}: {e}", path.display())))
+    let shown = path.display();
+    let refuse =
+        |why: String| CliError::Input(format!("{shown} is {} ({why})", file::NOT_A_DESCRIPTION));
+    let metadata = std::fs::metadata(path).map_err(|e| CliError::Input(format!("{shown}: {e}")))?;
+    if !metadata.is_file() {
+        return Err(refuse(if metadata.is_dir() {
+            "a directory".into()
+        } else {
+            "not a regular file".into()
+        }));
+    }
+    if metadata.len() > MAX_FILE_BYTES {
+        return Err(refuse(format!(
+            "{} bytes; description files are at most {} bytes",
+            metadata.len(),
+            MAX_FILE_BYTES
+        )));
+    }
+    let mut bytes = Vec::new();
+    std::fs::File::open(path)
+        .and_then(|f| f.take(MAX_FILE_BYTES + 1).read_to_end(&mut bytes))
+        .map_err(|e| CliError::Input(format!("{shown}: {e}")))?;
+    if bytes.len() as u64 > MAX_FILE_BYTES {
+        return Err(refuse(format!(
+            "more than {MAX_FILE_BYTES} bytes; description files are at most that"
+        )));
+    }
+    let text = String::from_utf8(bytes).map_err(|e| {
+        refuse(format!(
+            "not UTF-8 text: invalid byte at offset {}",
+            e.utf8_error().valid_up_to()
+        ))
+    })?;
+    Manipulator::from_json(&text).map_err(|e| match &e {
+        ManipulatorError::Description(d) if d.is_not_a_description() => {
+            CliError::Input(format!("{shown} is {}", d.message))
+        }
+        _ => CliError::Input(format!("{shown}: {e}")),
+    })
 }
 
 /// The leg warnings of `m` (docs/mechanism-format.md, "Leg checks").
@@ -24,7 +68,7 @@ fn leg_warnings(m: &Manipulator) -> Vec<String> {
 /// succeeded, so that an error stays the only line on stderr.
 fn warn(path: &Path, warnings: &[String]) {
     for w in warnings {
-        eprintln!("warning: {}: {w}", path.display());
+        super::terminal::warning(&format!("{}: {w}", path.display()));
     }
 }
 
@@ -32,11 +76,16 @@ fn warn(path: &Path, warnings: &[String]) {
 pub fn build_command(spec: &BuildSpec, output: Option<&Path>) -> Result<String, CliError> {
     let description = build(spec).map_err(CliError::Input)?;
     // Check that what is written can be read back and built.
-    let m = Manipulator::new(&description).map_err(|e| CliError::Input(e.to_string()))?;
+    let m = Manipulator::new(&description).map_err(|e| {
+        CliError::Input(format!(
+            "--chain {:?} in this geometry makes no usable manipulator: {e}",
+            spec.chain.trim()
+        ))
+    })?;
     // `build` refuses legs that are not generic; the file as read back must agree.
     if let Some(w) = m.leg_warnings().first() {
         return Err(CliError::Input(format!(
-            "--chain '{}': {w}",
+            "--chain {:?}: {w}",
             spec.chain.trim()
         )));
     }
@@ -147,7 +196,7 @@ fn parse_pose(text: &str, m: &Manipulator) -> Result<(Vector3<f64>, Vector3<f64>
         .filter(|v| v.len() == 6 && v.iter().all(|x| x.is_finite()))
         .ok_or_else(|| {
             CliError::Input(format!(
-                "--pose '{text}': six numbers x,y,z,rx,ry,rz (platform frame position, then rotation vector in {})",
+                "--pose {text:?}: six numbers x,y,z,rx,ry,rz (platform frame position, then rotation vector in {})",
                 match m.units().angle {
                     kinsyn::manipulator::file::AngleUnit::Deg => "degrees",
                     kinsyn::manipulator::file::AngleUnit::Rad => "radians",
@@ -173,14 +222,14 @@ pub fn analyze(
     let locked = match lock {
         Some(text) => m
             .parse_locks(text)
-            .map_err(|e| CliError::Input(format!("--lock '{text}': {e}")))?,
+            .map_err(|e| CliError::Input(format!("--lock {text:?}: {e}")))?,
         None => Vec::new(),
     };
     let q = match pose {
         Some(text) => {
             let (position, orientation) = parse_pose(text, &m)?;
             m.assemble_at(position, orientation, &locked)
-                .map_err(|e| CliError::Input(format!("--pose '{text}': {e}")))?
+                .map_err(|e| CliError::Input(format!("--pose {text:?}: {e}")))?
         }
         None => m.reference(),
     };

@@ -4,6 +4,7 @@
 //! 1 anything else (I/O). Errors are one line on stderr, prefixed `kinsyn: error:`.
 
 mod manipulator;
+mod terminal;
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use kinsyn::catalogue::{Catalogue, Entry, VERIFICATION_SEED};
@@ -21,7 +22,13 @@ use std::path::PathBuf;
 /// approach", §2), reads them in C/U/S letters with their parallel-axis groups, and compares
 /// the result row by row with the paper's printed Appendix.
 #[derive(Debug, Parser)]
-#[command(name = "kinsyn", version, propagate_version = true)]
+#[command(
+    name = "kinsyn",
+    version,
+    propagate_version = true,
+    subcommand_required = true,
+    arg_required_else_help = false
+)]
 #[command(
     after_help = "Examples:\n  kinsyn catalogue summary\n  kinsyn catalogue list --family PPRRRR\n  kinsyn catalogue show T1-001\n  kinsyn catalogue show 'RaU(a,b)U(b,c)Rc'\n  kinsyn notation 'U(!,-)P!S'"
 )]
@@ -33,7 +40,7 @@ struct Cli {
 #[derive(Debug, Subcommand)]
 enum Command {
     /// The catalogue of 6-dof leg chains (paper 000 §2, Tables 1–8).
-    #[command(subcommand)]
+    #[command(subcommand, subcommand_required = true, arg_required_else_help = false)]
     Catalogue(CatalogueCommand),
     /// Find the verified chains that give a motion pattern, directly or by locking joints.
     ///
@@ -320,34 +327,74 @@ enum CliError {
 pub fn run() -> i32 {
     let cli = match Cli::try_parse() {
         Ok(cli) => cli,
+        Err(e) if e.use_stderr() => {
+            terminal::error(&format!("{} (see kinsyn --help)", usage_error(&e)));
+            return 2;
+        }
         Err(e) => {
-            let code = if e.use_stderr() { 2 } else { 0 };
-            if e.use_stderr() {
-                // clap's message starts with "error: "; keep the first line, as one clear line.
-                let text = e.to_string();
-                let first = text
-                    .lines()
-                    .next()
-                    .unwrap_or("bad arguments")
-                    .trim_start_matches("error: ");
-                eprintln!("kinsyn: error: {first} (see kinsyn --help)");
-            } else {
-                let _ = e.print();
+            // --help and --version: their text is the result.
+            let mut text = e.render().to_string();
+            if !text.ends_with('\n') {
+                text.push('\n');
             }
-            return code;
+            return match terminal::print(&text) {
+                Ok(()) => 0,
+                Err(_) => 1,
+            };
         }
     };
-    match execute(cli.command) {
-        Ok(text) => {
-            print!("{text}");
-            0
-        }
+    let result = execute(cli.command).and_then(|text| Ok(terminal::print(&text)?));
+    match result {
+        Ok(()) => 0,
         Err(e) => {
-            eprintln!("kinsyn: error: {e}");
+            terminal::error(&e.to_string());
             match e {
                 CliError::Input(_) => 2,
                 CliError::Io(_) => 1,
             }
+        }
+    }
+}
+
+/// A command-line mistake in one line: what is missing or wrong, with the names of the
+/// arguments or subcommands concerned (clap spreads these over several lines).
+fn usage_error(e: &clap::Error) -> String {
+    use clap::error::{ContextKind, ContextValue, ErrorKind};
+    let values = |kind| match e.get(kind) {
+        Some(ContextValue::Strings(v)) => v.join(", "),
+        Some(ContextValue::String(v)) => v.clone(),
+        _ => String::new(),
+    };
+    match e.kind() {
+        ErrorKind::MissingSubcommand | ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => {
+            let command = values(ContextKind::InvalidSubcommand);
+            let available = values(ContextKind::ValidSubcommand);
+            format!(
+                "{} needs a subcommand: {}",
+                if command.is_empty() {
+                    "kinsyn".into()
+                } else {
+                    command
+                },
+                available
+            )
+        }
+        ErrorKind::MissingRequiredArgument => {
+            format!(
+                "missing required argument {}",
+                values(ContextKind::InvalidArg)
+            )
+        }
+        _ => {
+            // The message lines, without the usage and "for more information" footer.
+            let text = e.render().to_string();
+            text.lines()
+                .map(str::trim)
+                .take_while(|l| !l.starts_with("Usage:") && !l.starts_with("For more information"))
+                .filter(|l| !l.is_empty())
+                .map(|l| l.trim_start_matches("error: "))
+                .collect::<Vec<_>>()
+                .join(" ")
         }
     }
 }
@@ -393,7 +440,7 @@ fn execute(command: Command) -> Result<String, CliError> {
 fn check_family(family: Option<&str>) -> Result<(), CliError> {
     match family {
         Some(f) if !tables::families().contains(&f) => Err(CliError::Input(format!(
-            "unknown family '{f}'; the families are {}",
+            "unknown family {f:?}; the families are {}",
             tables::families().join(", ")
         ))),
         _ => Ok(()),
@@ -457,7 +504,7 @@ fn json<T: serde::Serialize>(value: &T) -> String {
 fn notation(text: &str, as_json: bool) -> Result<String, CliError> {
     let chain: Chain = text
         .parse()
-        .map_err(|e| CliError::Input(format!("'{text}': {e}")))?;
+        .map_err(|e| CliError::Input(format!("{text:?}: {e}")))?;
     let primitives: Vec<String> = chain
         .primitives()
         .enumerate()
@@ -578,7 +625,7 @@ fn catalogue(command: CatalogueCommand) -> Result<String, CliError> {
                 && !tables::families().contains(&f.as_str())
             {
                 return Err(CliError::Input(format!(
-                    "unknown family '{f}'; the families are {}",
+                    "unknown family {f:?}; the families are {}",
                     tables::families().join(", ")
                 )));
             }
@@ -645,7 +692,7 @@ fn catalogue(command: CatalogueCommand) -> Result<String, CliError> {
                         .collect();
                     if same.is_empty() {
                         return Err(CliError::Input(format!(
-                            "'{letters}' is not in the catalogue: the rules of paper 000 §2 do not give it"
+                            "{letters:?} is not in the catalogue: the rules of paper 000 §2 do not give it"
                         )));
                     }
                     if as_json {
@@ -671,10 +718,10 @@ fn catalogue(command: CatalogueCommand) -> Result<String, CliError> {
                         && query.chars().any(|c| c.is_ascii_digit());
                     return Err(CliError::Input(match query.parse::<Chain>() {
                         Err(_) if looks_like_id => format!(
-                            "no entry with id '{query}' (ids look like T2-017; see kinsyn catalogue list)"
+                            "no entry with id {query:?} (ids look like T2-017; see kinsyn catalogue list)"
                         ),
                         Err(e) => {
-                            format!("'{query}' is neither an entry id nor a valid chain: {e}")
+                            format!("{query:?} is neither an entry id nor a valid chain: {e}")
                         }
                         Ok(chain) => {
                             let same: Vec<&str> = cat

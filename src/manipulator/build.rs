@@ -182,9 +182,31 @@ pub fn build(spec: &BuildSpec) -> Result<Description, String> {
         if !(x.is_finite() && x > 0.0) {
             return Err(format!("{name} {x}: must be a positive length"));
         }
+        if !(super::SMALLEST_LENGTH..=super::LARGEST_COORDINATE).contains(&x) {
+            return Err(format!(
+                "{name} {x:e}: lengths are between {:e} and {:e} (docs/limits.md); choose another length unit",
+                super::SMALLEST_LENGTH,
+                super::LARGEST_COORDINATE
+            ));
+        }
     }
-    if !spec.twist.is_finite() {
-        return Err(format!("--twist {}: not a number", spec.twist));
+    let lengths = [spec.base_radius, spec.platform_radius, spec.height];
+    let ratio = lengths.iter().copied().fold(0.0, f64::max)
+        / lengths.iter().copied().fold(f64::INFINITY, f64::min);
+    if ratio > super::LARGEST_LENGTH_RATIO {
+        return Err(format!(
+            "--base-radius {}, --platform-radius {}, --height {}: the largest is {ratio:.1e} times the smallest; at most {:e} (docs/limits.md), beyond which the legs' ranks are round-off",
+            spec.base_radius,
+            spec.platform_radius,
+            spec.height,
+            super::LARGEST_LENGTH_RATIO
+        ));
+    }
+    if !spec.twist.is_finite() || spec.twist.abs() > 360.0 {
+        return Err(format!(
+            "--twist {}: degrees between -360 and 360",
+            spec.twist
+        ));
     }
     let mut catalogue = None;
     let (chain, entry_axes) = super::leg_chain(&spec.chain, spec.axes.is_none(), &mut catalogue)?;
@@ -200,7 +222,7 @@ pub fn build(spec: &BuildSpec) -> Result<Description, String> {
     };
     if axes.len() != primitives || !axes.bytes().all(|b| matches!(b, b'x' | b'y' | b'z')) {
         return Err(format!(
-            "--axes '{axes}': one letter x, y or z per primitive joint of {chain} ({primitives})"
+            "--axes {axes:?}: one letter x, y or z per primitive joint of {chain} ({primitives})"
         ));
     }
     // Each C, U and S must get directions that keep it that joint (paper 000 §2); the letters
@@ -211,7 +233,7 @@ pub fn build(spec: &BuildSpec) -> Result<Description, String> {
         .collect();
     super::check_joint_axes(&chain, &letter_vectors).map_err(|f| {
         format!(
-            "--axes '{axes}': the {} at joints {}–{} ('{}'): {}",
+            "--axes {axes:?}: the {} at joints {}–{} ('{}'): {}",
             f.letter,
             f.primitives.start + 1,
             f.primitives.end,
@@ -221,7 +243,7 @@ pub fn build(spec: &BuildSpec) -> Result<Description, String> {
     })?;
     super::leg::check_parallel_marks(&chain, &letter_vectors).map_err(|f| {
         format!(
-            "--axes '{axes}': joints {} and {} of {chain} are in parallel group '{}' but get '{}' and '{}': the axes of a parallel group must be parallel",
+            "--axes {axes:?}: joints {} and {} of {chain} are in parallel group '{}' but get '{}' and '{}': the axes of a parallel group must be parallel",
             f.first + 1,
             f.at + 1,
             f.group,

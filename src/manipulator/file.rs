@@ -122,7 +122,24 @@ pub struct DescriptionError {
     pub message: String,
 }
 
+/// The message of a [`DescriptionError`] whose text is not a description file at all.
+pub const NOT_A_DESCRIPTION: &str = "not a kinsyn manipulator file";
+
 impl DescriptionError {
+    /// Text that is not a manipulator description at all (not JSON, or JSON without this
+    /// format's marker): the field is `file`, the message says why.
+    #[must_use]
+    pub fn not_a_description(why: String) -> Self {
+        DescriptionError::new("file", format!("{NOT_A_DESCRIPTION} ({why})"))
+    }
+
+    /// Whether the text was not a description file at all (rather than a description with a
+    /// faulty field).
+    #[must_use]
+    pub fn is_not_a_description(&self) -> bool {
+        self.field == "file" && self.message.starts_with(NOT_A_DESCRIPTION)
+    }
+
     /// An error at `field`.
     pub fn new(field: impl Into<String>, message: impl Into<String>) -> Self {
         DescriptionError {
@@ -141,28 +158,28 @@ impl Description {
     /// values of the wrong type (serde's message, with line and column).
     pub fn from_json(text: &str) -> Result<Self, DescriptionError> {
         let value: serde_json::Value = serde_json::from_str(text)
-            .map_err(|e| DescriptionError::new("file", format!("not JSON ({e})")))?;
+            .map_err(|e| DescriptionError::not_a_description(format!("not JSON: {e}")))?;
         match value.get("format") {
             Some(serde_json::Value::String(f)) if f == FORMAT => {}
             Some(serde_json::Value::String(other)) => {
-                return Err(DescriptionError::new(
-                    "format",
-                    format!("'{other}' is not a manipulator file format; expected '{FORMAT}'"),
-                ));
+                return Err(DescriptionError::not_a_description(format!(
+                    "\"format\" is {other:?}, expected \"{FORMAT}\""
+                )));
             }
             Some(other) => {
-                return Err(DescriptionError::new(
-                    "format",
-                    format!("{other} is not a format name; expected \"{FORMAT}\""),
+                return Err(DescriptionError::not_a_description(format!(
+                    "\"format\" is {other}, expected \"{FORMAT}\""
+                )));
+            }
+            None if !value.is_object() => {
+                return Err(DescriptionError::not_a_description(
+                    "JSON, but not an object".to_string(),
                 ));
             }
             None => {
-                return Err(DescriptionError::new(
-                    "format",
-                    format!(
-                        "missing: not a kinsyn manipulator file (expected \"format\": \"{FORMAT}\")"
-                    ),
-                ));
+                return Err(DescriptionError::not_a_description(format!(
+                    "no \"format\": \"{FORMAT}\""
+                )));
             }
         }
         // Deserialise with the path of the offending field (`legs[2].axes[0]`).

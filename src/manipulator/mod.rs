@@ -371,7 +371,7 @@ impl Manipulator {
             else {
                 let all: Vec<String> = self.actuators.iter().map(Actuator::label).collect();
                 return Err(format!(
-                    "'{label}' is not an actuator of {} (actuators: {})",
+                    "{label:?} is not an actuator of {} (actuators: {})",
                     self.name,
                     all.join(" ")
                 ));
@@ -409,8 +409,16 @@ impl Manipulator {
     }
 }
 
-/// The largest coordinate magnitude accepted: products of lengths must stay far from overflow.
-const LARGEST_COORDINATE: f64 = 1e15;
+/// The largest coordinate magnitude accepted (docs/limits.md): far enough from overflow that
+/// products and squares of lengths stay exact to round-off.
+pub const LARGEST_COORDINATE: f64 = 1e12;
+
+/// The smallest length `kinsyn build` accepts for a radius or height (docs/limits.md).
+pub const SMALLEST_LENGTH: f64 = 1e-12;
+
+/// The largest ratio between the lengths of a built geometry (docs/limits.md): beyond it the
+/// legs' joint twists differ in size by more than the rank tolerances can tell from round-off.
+pub const LARGEST_LENGTH_RATIO: f64 = 1e6;
 
 fn finite(p: &[f64; 3], field: &str) -> Result<(), DescriptionError> {
     if !p.iter().all(|x| x.is_finite()) {
@@ -438,21 +446,21 @@ pub(crate) fn leg_chain(
         && bytes[1].is_ascii_digit()
         && bytes.contains(&b'-');
     if !looks_like_id && !need_axes {
-        let chain: Chain = text.parse().map_err(|e| format!("'{text}': {e}"))?;
+        let chain: Chain = text.parse().map_err(|e| format!("{text:?}: {e}"))?;
         return Ok((chain, None));
     }
     let cat = catalogue.get_or_insert_with(|| Catalogue::synthesise(&Options::default()));
     if looks_like_id {
         let entry = cat
             .find(text)
-            .ok_or_else(|| format!("'{text}' is not a catalogue id (see kinsyn catalogue list)"))?;
+            .ok_or_else(|| format!("{text:?} is not a catalogue id (see kinsyn catalogue list)"))?;
         let chain: Chain = entry
             .notation
             .parse()
             .map_err(|e| format!("catalogue entry {}: {e}", entry.id))?;
         return Ok((chain, Some(entry.axes.clone())));
     }
-    let chain: Chain = text.parse().map_err(|e| format!("'{text}': {e}"))?;
+    let chain: Chain = text.parse().map_err(|e| format!("{text:?}: {e}"))?;
     let axes = cat.find(text).map(|e| e.axes.clone());
     Ok((chain, axes))
 }
@@ -468,7 +476,7 @@ fn axis_vector(a: &AxisSpec, along: &Vector3<f64>) -> Result<Vector3<f64>, Strin
         }
         AxisSpec::Named(name) => {
             return Err(format!(
-                "'{name}' is not an axis (a vector [x, y, z] or \"leg\")"
+                "{name:?} is not an axis (a vector [x, y, z] or \"leg\")"
             ));
         }
     };

@@ -50,8 +50,10 @@
 //! assert_eq!(m.mobility(&q, &[false; 4]).dof, 1);
 //! ```
 
+mod assembly;
 mod motion;
 
+pub use assembly::{ASSEMBLY_STEPS, ASSEMBLY_TOLERANCE, Coordinate, Goal};
 pub use motion::{MotionSample, SampleSettings};
 
 pub use crate::chain::compose;
@@ -135,7 +137,7 @@ pub enum MechanismError {
         bodies: usize,
     },
     /// A joint joins a body to itself.
-    #[error("joint {joint} joins body '{body}' to itself")]
+    #[error("joint {joint} joins body {body:?} to itself")]
     SelfJoint {
         /// 1-based joint index.
         joint: usize,
@@ -151,7 +153,7 @@ pub enum MechanismError {
         what: String,
     },
     /// A body no chain of joints connects to the ground.
-    #[error("body '{0}' is not connected to the ground")]
+    #[error("body {0:?} is not connected to the ground")]
     Disconnected(String),
     /// Newton's method did not close the loops (or reach the asked-for pose).
     #[error(
@@ -580,67 +582,24 @@ impl Mechanism {
         screw::span_basis_scaled(&(jf * rates), MOBILITY_TOLERANCE, Some(norm.max(1.0)))
     }
 
-    /// Closes the loops by Newton's method from `q` with the `locked` joints held, and when
-    /// `target` is given also moves `body` to the displacement `target` from its reference
-    /// pose. Each step is the least-squares (minimum-norm) correction of the free joints.
+    /// Closes the loops from `q` with the `locked` joints held, and when `target` is given also
+    /// moves `body` to the displacement `target` from its reference pose
+    /// ([`Mechanism::assemble_to`] with a [`Goal::Pose`]).
     ///
     /// # Errors
-    /// [`MechanismError::NotAssembled`] when the residual does not fall below `1e-10` (rotation
-    /// in radians, translation over the length scale) in 60 steps.
+    /// [`MechanismError::NotAssembled`] when the residual does not fall below
+    /// [`ASSEMBLY_TOLERANCE`] (rotation in radians, translation over the length scale).
     pub fn assemble(
         &self,
         q: &[f64],
         locked: &[bool],
         target: Option<(usize, &Displacement)>,
     ) -> Result<Vec<f64>, MechanismError> {
-        let free = self.free(locked);
-        let mut q = q.to_vec();
-        let tolerance = 1e-10;
-        let mut residual = f64::INFINITY;
-        for iteration in 0..60 {
-            let poses = self.poses(&q);
-            let screws = self.screws_at(&poses);
-            // Equations: C Δ = ε (loops) and J_body Δ = −log(g g_target⁻¹) (target).
-            let mut rows = self.closure_jacobian(&screws);
-            let mut rhs = self.residual_at(&q, &poses);
-            if let Some((body, goal)) = target {
-                let g = poses[body];
-                let e = log(&compose(&g, &inverse(goal))).to_vector();
-                let jb = self.body_jacobian(body, &screws);
-                let n = rows.nrows();
-                rows = rows.insert_rows(n, 6, 0.0);
-                rows.view_mut((n, 0), (6, self.joints.len())).copy_from(&jb);
-                rhs = rhs.insert_rows(n, 6, 0.0);
-                rhs.rows_mut(n, 6).copy_from(&(-e));
-            }
-            let scaled_rhs = self
-                .unitless_twists(&DMatrix::from_column_slice(rhs.len(), 1, rhs.as_slice()))
-                .column(0)
-                .into_owned();
-            residual = scaled_rhs.amax();
-            if residual < tolerance {
-                return Ok(q);
-            }
-            let a = self.dimensionless(&rows);
-            let af = DMatrix::from_fn(a.nrows(), free.len(), |r, k| a[(r, free[k])]);
-            let step = solve_least_squares(&af, &scaled_rhs);
-            // Damp steps that would turn a joint by more than half a radian.
-            let largest = step.amax();
-            let damping = if largest > 0.5 { 0.5 / largest } else { 1.0 };
-            for (k, &j) in free.iter().enumerate() {
-                q[j] += damping * step[k] * self.unit(j);
-            }
-            if !q.iter().all(|x| x.is_finite()) {
-                return Err(MechanismError::NotAssembled {
-                    residual: f64::INFINITY,
-                    iterations: iteration + 1,
-                });
-            }
-        }
-        Err(MechanismError::NotAssembled {
-            residual,
-            iterations: 60,
-        })
+        let goal = target.map(|(body, g)| Goal::Pose {
+            body,
+            displacement: *g,
+        });
+        self.assemble_to(q, locked, goal.as_ref())
     }
 }
 
@@ -662,23 +621,6 @@ fn map_velocities(
         }
     }
     out
-}
-
-/// The minimum-norm least-squares solution of `a x = b` (checked SVD, relative cut 1e-12).
-fn solve_least_squares(a: &DMatrix<f64>, b: &DVector<f64>) -> DVector<f64> {
-    if a.ncols() == 0 {
-        return DVector::zeros(0);
-    }
-    let d = screw::svd(a);
-    let top = d.singular_values.first().copied().unwrap_or(0.0);
-    let mut x = DVector::zeros(a.ncols());
-    for (k, &s) in d.singular_values.iter().enumerate() {
-        if top > 0.0 && s > 1e-12 * top {
-            let coefficient = d.u.column(k).dot(b) / s;
-            x += d.v.column(k) * coefficient;
-        }
-    }
-    x
 }
 
 /// The characteristic point and length of a set of joints (see [`Mechanism::scale`] and

@@ -1,0 +1,307 @@
+//! Assembly: joint values that close every loop and, optionally, put one body where it is
+//! asked to be: at a whole displacement, or at some coordinates of a frame fixed to it (the
+//! position and rotation-vector components an analyst gives for a low-dof platform, whose other
+//! coordinates, the parasitic motion, follow).
+//!
+//! The equations are solved by damped Newton steps (Levenberg–Marquardt) on their dimensionless
+//! form (rotations in radians, lengths over [`Mechanism::scale`] about [`Mechanism::centre`]):
+//! a step is kept only when it reduces the residual, and the damping grows until it does. Near a
+//! regular solution the damping vanishes and the steps are Newton's, converging quadratically;
+//! near a singular solution set (a configuration where the loop-closure Jacobian loses rank,
+//! such as a mechanism built in a special pose) the damping keeps the steps from being thrown
+//! along the nearly-null directions, where undamped least-squares steps wander off.
+
+use super::{Mechanism, MechanismError, compose, inverse, log};
+use crate::chain::Displacement;
+use crate::screw;
+use nalgebra::{DMatrix, DVector, Matrix3, Vector3};
+
+/// The residual below which the loops count as closed and a goal as met: the largest
+/// dimensionless component (radians, or lengths over the mechanism's characteristic length).
+/// Coordinates of order 1 carry round-off of about 1e-16; 1e-10 leaves six orders for the
+/// conditioning of the equations (docs/limits.md).
+pub const ASSEMBLY_TOLERANCE: f64 = 1e-10;
+
+/// The most damped Newton steps tried before an assembly is given up.
+pub const ASSEMBLY_STEPS: usize = 100;
+
+/// The steps taken after the tolerance is met, while they still reduce the residual.
+const POLISHING_STEPS: usize = 2;
+
+/// A coordinate of a frame's pose: its origin's position components, or its rotation vector's.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Coordinate {
+    /// Position along x.
+    X,
+    /// Position along y.
+    Y,
+    /// Position along z.
+    Z,
+    /// Rotation-vector component along x.
+    Rx,
+    /// Rotation-vector component along y.
+    Ry,
+    /// Rotation-vector component along z.
+    Rz,
+}
+
+impl Coordinate {
+    /// The six coordinates in the order x, y, z, rx, ry, rz.
+    pub const ALL: [Coordinate; 6] = [
+        Coordinate::X,
+        Coordinate::Y,
+        Coordinate::Z,
+        Coordinate::Rx,
+        Coordinate::Ry,
+        Coordinate::Rz,
+    ];
+
+    /// The name used on the command line: `x`, `y`, `z`, `rx`, `ry`, `rz`.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        ["x", "y", "z", "rx", "ry", "rz"][self.index()]
+    }
+
+    /// Position in [`Coordinate::ALL`].
+    #[must_use]
+    pub fn index(self) -> usize {
+        self as usize
+    }
+
+    /// Whether the coordinate is an angle (a rotation-vector component).
+    #[must_use]
+    pub fn is_angle(self) -> bool {
+        self.index() >= 3
+    }
+
+    /// The coordinate's value for a frame at `g`: position, or rotation vector in radians.
+    #[must_use]
+    pub fn of(self, g: &Displacement) -> f64 {
+        let i = self.index();
+        if i < 3 {
+            g.1[i]
+        } else {
+            super::rotation_log(&g.0)[i - 3]
+        }
+    }
+}
+
+/// Where a body of the mechanism is asked to be.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Goal {
+    /// The body at this displacement from its reference pose.
+    Pose {
+        /// The body.
+        body: usize,
+        /// Its displacement.
+        displacement: Displacement,
+    },
+    /// A frame fixed to the body (at `frame` in the body's reference pose) with some of its
+    /// coordinates at given values (radians for angles); the others are free.
+    Coordinates {
+        /// The body.
+        body: usize,
+        /// The frame's pose when the body is at its reference.
+        frame: Displacement,
+        /// The coordinates asked for and their values.
+        values: Vec<(Coordinate, f64)>,
+    },
+}
+
+impl Goal {
+    /// The number of equations the goal adds.
+    #[must_use]
+    pub fn equations(&self) -> usize {
+        match self {
+            Goal::Pose { .. } => 6,
+            Goal::Coordinates { values, .. } => values.len(),
+        }
+    }
+
+    /// The goal's body.
+    #[must_use]
+    pub fn body(&self) -> usize {
+        match self {
+            Goal::Pose { body, .. } | Goal::Coordinates { body, .. } => *body,
+        }
+    }
+
+    /// The goal's dimensionless equations at the body pose `g`: a matrix `C` that maps the
+    /// body's dimensionless twist (ω; v_c/L) to the rates of the goal's quantities, and their
+    /// errors `e` (goal met when `e = 0`; a step `Δ` of twist reduces them by `C Δ`).
+    fn linearised(&self, m: &Mechanism, g: &Displacement) -> (DMatrix<f64>, DVector<f64>) {
+        match self {
+            Goal::Pose { displacement, .. } => {
+                let error = log(&compose(g, &inverse(displacement))).to_vector();
+                let unitless = m
+                    .unitless_twists(&DMatrix::from_column_slice(6, 1, error.as_slice()))
+                    .column(0)
+                    .into_owned();
+                (DMatrix::identity(6, 6), unitless)
+            }
+            Goal::Coordinates { frame, values, .. } => {
+                let f = compose(g, frame);
+                let (centre, length) = (m.centre(), m.scale());
+                let arm = (f.1 - centre) / length;
+                let r = super::rotation_log(&f.0);
+                let rotation_rates = inverse_left_jacobian(&r);
+                let mut c = DMatrix::zeros(values.len(), 6);
+                let mut e = DVector::zeros(values.len());
+                for (row, &(coordinate, value)) in values.iter().enumerate() {
+                    let i = coordinate.index();
+                    if i < 3 {
+                        // ṗ/L = v_c/L + ω × (p − c)/L.
+                        let cross = -arm.cross_matrix();
+                        for k in 0..3 {
+                            c[(row, k)] = cross[(i, k)];
+                        }
+                        c[(row, 3 + i)] = 1.0;
+                        e[row] = (f.1[i] - value) / length;
+                    } else {
+                        // ṙ = J_l⁻¹(r) ω for the spatial angular velocity ω.
+                        for k in 0..3 {
+                            c[(row, k)] = rotation_rates[(i - 3, k)];
+                        }
+                        e[row] = r[i - 3] - value;
+                    }
+                }
+                (c, e)
+            }
+        }
+    }
+}
+
+/// The inverse of the left Jacobian of SO(3) at the rotation vector `r`: the map from the
+/// spatial angular velocity to the rate of the rotation vector.
+fn inverse_left_jacobian(r: &Vector3<f64>) -> Matrix3<f64> {
+    let theta = r.norm();
+    let k = r.cross_matrix();
+    // Coefficient of [r]²: (1 − θ/2 · cot(θ/2)) / θ², with its series at small θ.
+    let c = if theta < 1e-4 {
+        1.0 / 12.0 + theta * theta / 720.0
+    } else {
+        (1.0 - 0.5 * theta / (0.5 * theta).tan()) / (theta * theta)
+    };
+    Matrix3::identity() - 0.5 * k + c * k * k
+}
+
+impl Mechanism {
+    /// Closes the loops from `q` with the `locked` joints held, and meets `goal` when one is
+    /// given, by damped Newton steps on the dimensionless equations (module documentation).
+    /// The solution found is the one the steps reach from `q`: for a mechanism with several
+    /// assemblies, the one nearest `q` in this sense.
+    ///
+    /// # Errors
+    /// [`MechanismError::NotAssembled`] when the largest dimensionless residual does not fall
+    /// below [`ASSEMBLY_TOLERANCE`] within [`ASSEMBLY_STEPS`] steps, or a step stops reducing
+    /// it (a configuration where the equations have no solution nearby).
+    pub fn assemble_to(
+        &self,
+        q: &[f64],
+        locked: &[bool],
+        goal: Option<&Goal>,
+    ) -> Result<Vec<f64>, MechanismError> {
+        let free = self.free(locked);
+        let mut q = q.to_vec();
+        let (mut rows, mut residual) = self.equations(&q, goal);
+        let mut norm = residual.norm();
+        // Damping relative to the largest squared singular value of the step's matrix.
+        let mut damping = 1e-12;
+        // Once the tolerance is met, a few more steps polish the solution to round-off (each
+        // is kept only if it helps): derivatives by finite differences of assemblies need it.
+        let mut polish = 0;
+        for iteration in 0..ASSEMBLY_STEPS {
+            if residual.amax() < ASSEMBLY_TOLERANCE {
+                polish += 1;
+                if polish > POLISHING_STEPS {
+                    return Ok(q);
+                }
+            }
+            let af = DMatrix::from_fn(rows.nrows(), free.len(), |r, k| rows[(r, free[k])]);
+            let d = screw::svd(&af);
+            let top = d.singular_values.first().copied().unwrap_or(0.0);
+            if top == 0.0 {
+                break;
+            }
+            let projected = d.u.transpose() * &residual;
+            let mut improved = false;
+            while damping < 1e12 {
+                let lambda = damping * top * top;
+                let mut step = DVector::zeros(free.len());
+                for (k, &s) in d.singular_values.iter().enumerate() {
+                    if s > 1e-14 * top {
+                        step += d.v.column(k) * (s / (s * s + lambda) * projected[k]);
+                    }
+                }
+                // No joint turns by more than half a radian in one step.
+                let largest = step.amax();
+                if largest > 0.5 {
+                    step *= 0.5 / largest;
+                }
+                let mut trial = q.clone();
+                for (k, &j) in free.iter().enumerate() {
+                    trial[j] -= step[k] * self.unit(j);
+                }
+                if !trial.iter().all(|x| x.is_finite()) {
+                    damping *= 10.0;
+                    continue;
+                }
+                let (trial_rows, trial_residual) = self.equations(&trial, goal);
+                let trial_norm = trial_residual.norm();
+                if trial_norm < norm {
+                    (q, rows, residual, norm) = (trial, trial_rows, trial_residual, trial_norm);
+                    damping = (damping / 10.0).max(1e-20);
+                    improved = true;
+                    break;
+                }
+                damping *= 10.0;
+            }
+            if !improved && residual.amax() < ASSEMBLY_TOLERANCE {
+                return Ok(q);
+            }
+            if !improved {
+                return Err(MechanismError::NotAssembled {
+                    residual: residual.amax(),
+                    iterations: iteration + 1,
+                });
+            }
+        }
+        if residual.amax() < ASSEMBLY_TOLERANCE {
+            return Ok(q);
+        }
+        Err(MechanismError::NotAssembled {
+            residual: residual.amax(),
+            iterations: ASSEMBLY_STEPS,
+        })
+    }
+
+    /// The dimensionless equations at `q`: loop closure (6 rows per loop), then the goal's;
+    /// their matrix over every joint (a joint step `Δ` changes the residual by `A Δ`) and the
+    /// residual.
+    fn equations(&self, q: &[f64], goal: Option<&Goal>) -> (DMatrix<f64>, DVector<f64>) {
+        let poses = self.poses(q);
+        let screws = self.screws_at(&poses);
+        let closure = self.residual_at(q, &poses);
+        let closure = self
+            .unitless_twists(&DMatrix::from_column_slice(
+                closure.len(),
+                1,
+                closure.as_slice(),
+            ))
+            .column(0)
+            .into_owned();
+        // The loop residual ε of a chord changes by −(V_b − V_a − ξ q̇) = −C q̇.
+        let mut rows = -self.dimensionless(&self.closure_jacobian(&screws));
+        let mut residual = closure;
+        if let Some(goal) = goal {
+            let (c, e) = goal.linearised(self, &poses[goal.body()]);
+            let body = c * self.dimensionless(&self.body_jacobian(goal.body(), &screws));
+            let n = rows.nrows();
+            rows = rows.insert_rows(n, body.nrows(), 0.0);
+            rows.view_mut((n, 0), body.shape()).copy_from(&body);
+            residual = residual.insert_rows(n, e.len(), 0.0);
+            residual.rows_mut(n, e.len()).copy_from(&e);
+        }
+        (rows, residual)
+    }
+}
