@@ -227,6 +227,9 @@ fn lock_count(locks: &str) -> usize {
 /// Whether a classified pattern's text form (parsed back as a query) is what `asked` wants: same
 /// kind, and the same axis when the question names one.
 fn pattern_query_covers(asked: &PatternQuery, classified: &PatternQuery) -> bool {
+    if let (Some(kind), PatternQuery::Group { kind: k, .. }) = (asked.forced_group(), classified) {
+        return kind == *k;
+    }
     match (asked, classified) {
         (PatternQuery::Group { kind, axis }, PatternQuery::Group { kind: k, axis: a }) => {
             kind == k && (axis.is_none() || axis == a)

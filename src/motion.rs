@@ -114,6 +114,22 @@ impl GroupKind {
         }
     }
 
+    /// Rank of the rotational part of the group's Lie algebra: the `m` of the `nTmR` that
+    /// counts its motions (`n` = dimension − `m`).
+    #[must_use]
+    pub fn rotations(self) -> usize {
+        match self {
+            GroupKind::E | GroupKind::T | GroupKind::T2 | GroupKind::T3 => 0,
+            GroupKind::R
+            | GroupKind::H
+            | GroupKind::C
+            | GroupKind::G
+            | GroupKind::Y
+            | GroupKind::X => 1,
+            GroupKind::S | GroupKind::D => 3,
+        }
+    }
+
     /// Whether the group's parameter is a direction (T, R, H, C, Y, X) or a plane normal (T2, G).
     fn parameter(self) -> Parameter {
         match self {
@@ -360,9 +376,53 @@ impl fmt::Display for PatternQuery {
 }
 
 impl PatternQuery {
-    /// Whether a classified pattern is the one asked for (a direction must be parallel).
+    /// The group that every motion named by this `nTmR` is: `0T0R` is E (no motion), `3T0R` is
+    /// T3 (three independent translations span every translation at every configuration) and
+    /// `3T3R` is D (six dimensions fill a neighbourhood of SE(3)). `None` for the other names,
+    /// which a non-group motion can have, and for groups.
+    #[must_use]
+    pub fn forced_group(&self) -> Option<GroupKind> {
+        match *self {
+            PatternQuery::NonGroup {
+                translations: 0,
+                rotations: 0,
+            } => Some(GroupKind::E),
+            PatternQuery::NonGroup {
+                translations: 3,
+                rotations: 0,
+            } => Some(GroupKind::T3),
+            PatternQuery::NonGroup {
+                translations: 3,
+                rotations: 3,
+            } => Some(GroupKind::D),
+            _ => None,
+        }
+    }
+
+    /// The groups whose motions have the numbers of translations and rotations of this
+    /// `nTmR` (`2T1R`: G and Y): a non-group query does not match them, so these are the
+    /// queries to try for the group motions of the same type. Empty for groups.
+    #[must_use]
+    pub fn groups_of_the_same_type(&self) -> Vec<GroupKind> {
+        match *self {
+            PatternQuery::NonGroup {
+                translations,
+                rotations,
+            } => GroupKind::ALL
+                .into_iter()
+                .filter(|k| k.rotations() == rotations && k.dimension() == translations + rotations)
+                .collect(),
+            PatternQuery::Group { .. } => Vec::new(),
+        }
+    }
+
+    /// Whether a classified pattern is the one asked for (a direction must be parallel). An
+    /// `nTmR` that is always a group ([`PatternQuery::forced_group`]) matches that group.
     #[must_use]
     pub fn matches(&self, p: &Pattern) -> bool {
+        if let (Some(kind), Pattern::Group(g)) = (self.forced_group(), p) {
+            return g.kind == kind;
+        }
         match (self, p) {
             (
                 PatternQuery::NonGroup {

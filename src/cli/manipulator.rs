@@ -2,9 +2,10 @@
 
 use super::{CliError, json};
 use kinsyn::manipulator::build::{BuildSpec, build};
-use kinsyn::manipulator::{Analysis, Manipulator, ManipulatorError, RowKind, file, rank_text};
+use kinsyn::manipulator::{
+    Analysis, Manipulator, ManipulatorError, PositionRequest, RowKind, file, rank_text,
+};
 use kinsyn::mechanism::SampleSettings;
-use nalgebra::Vector3;
 use std::fmt::Write as _;
 use std::io::Read as _;
 use std::path::Path;
@@ -187,33 +188,51 @@ pub fn modes(path: &Path, settings: &SampleSettings, as_json: bool) -> Result<St
     Ok(s)
 }
 
-/// Parses `x,y,z,rx,ry,rz`: the platform frame's position and rotation vector (angles in the
-/// file's unit).
-fn parse_pose(text: &str, m: &Manipulator) -> Result<(Vector3<f64>, Vector3<f64>), CliError> {
-    let values: Result<Vec<f64>, _> = text.split(',').map(|v| v.trim().parse::<f64>()).collect();
-    let values = values
-        .ok()
-        .filter(|v| v.len() == 6 && v.iter().all(|x| x.is_finite()))
-        .ok_or_else(|| {
-            CliError::Input(format!(
-                "--pose {text:?}: six numbers x,y,z,rx,ry,rz (platform frame position, then rotation vector in {})",
-                match m.units().angle {
-                    kinsyn::manipulator::file::AngleUnit::Deg => "degrees",
-                    kinsyn::manipulator::file::AngleUnit::Rad => "radians",
-                }
-            ))
-        })?;
-    let a = |x: f64| m.units().angle.to_radians(x);
-    Ok((
-        Vector3::new(values[0], values[1], values[2]),
-        Vector3::new(a(values[3]), a(values[4]), a(values[5])),
-    ))
+/// The platform pose of `--pose TEXT` (or another option named `option`) for `m`, assembled
+/// from the reference configuration with the `locked` inputs held.
+pub fn configuration_at_pose(
+    m: &Manipulator,
+    option: &str,
+    text: &str,
+    locked: &[usize],
+) -> Result<Vec<f64>, CliError> {
+    let request = PositionRequest {
+        platform: Some(
+            m.parse_pose(text)
+                .map_err(|e| CliError::Input(format!("{option} {text:?}: {e}")))?,
+        ),
+        held: locked.to_vec(),
+        ..PositionRequest::default()
+    };
+    m.solve_position(&m.reference(), &request)
+        .map(|p| p.q)
+        .map_err(|e| CliError::Input(format!("{option} {text:?}: {e}")))
+}
+
+/// Where `kinsyn analyze` puts the manipulator: a start (the reference, or `--from`), then the
+/// input values and platform coordinates asked for, reached by continuation from it.
+#[derive(Debug, Default)]
+pub struct Placement<'a> {
+    /// `--pose`: a whole or partial platform pose.
+    pub pose: Option<&'a str>,
+    /// `--inputs`: input values.
+    pub inputs: Option<&'a str>,
+    /// `--from`: the pose of the start configuration.
+    pub from: Option<&'a str>,
+}
+
+/// How the configuration analysed was reached, for the report.
+struct Reached {
+    /// "the reference configuration" or "--from …".
+    start: String,
+    /// Continuation steps from the start (0 when nothing was asked).
+    steps: usize,
 }
 
 /// `kinsyn analyze`.
 pub fn analyze(
     path: &Path,
-    pose: Option<&str>,
+    placement: &Placement<'_>,
     lock: Option<&str>,
     settings: &SampleSettings,
     as_json: bool,
@@ -225,13 +244,47 @@ pub fn analyze(
             .map_err(|e| CliError::Input(format!("--lock {text:?}: {e}")))?,
         None => Vec::new(),
     };
-    let q = match pose {
-        Some(text) => {
-            let (position, orientation) = parse_pose(text, &m)?;
-            m.assemble_at(position, orientation, &locked)
-                .map_err(|e| CliError::Input(format!("--pose {text:?}: {e}")))?
-        }
-        None => m.reference(),
+    let (start, start_text) = match placement.from {
+        Some(text) => (
+            configuration_at_pose(&m, "--from", text, &[])?,
+            format!("--from {text}"),
+        ),
+        None => (m.reference(), "the reference configuration".to_string()),
+    };
+    let mut request = PositionRequest {
+        held: locked.clone(),
+        ..PositionRequest::default()
+    };
+    if let Some(text) = placement.inputs {
+        request.inputs = m
+            .parse_inputs(text)
+            .map_err(|e| CliError::Input(format!("--inputs {text:?}: {e}")))?;
+        // Inputs not named keep their values at the start.
+        request.held.extend(
+            (0..m.actuators().len()).filter(|a| !request.inputs.iter().any(|&(b, _)| b == *a)),
+        );
+    }
+    if let Some(text) = placement.pose {
+        request.platform = Some(
+            m.parse_pose(text)
+                .map_err(|e| CliError::Input(format!("--pose {text:?}: {e}")))?,
+        );
+    }
+    let (q, steps) = if request.inputs.is_empty() && request.platform.is_none() {
+        (start, 0)
+    } else {
+        let asked: Vec<String> = [("--inputs", placement.inputs), ("--pose", placement.pose)]
+            .iter()
+            .filter_map(|(o, t)| t.map(|t| format!("{o} {t:?}")))
+            .collect();
+        let p = m
+            .solve_position(&start, &request)
+            .map_err(|e| CliError::Input(format!("{}: {e}", asked.join(" "))))?;
+        (p.q, p.steps)
+    };
+    let reached = Reached {
+        start: start_text,
+        steps,
     };
     let a = m
         .analyse(&q, &locked, settings)
@@ -239,9 +292,25 @@ pub fn analyze(
     let warnings = leg_warnings(&m);
     warn(path, &warnings);
     if as_json {
-        return Ok(json(&analysis_json(&m, &a, &warnings)));
+        return Ok(json(&analysis_json(&m, &a, &reached, &warnings)));
     }
-    Ok(analysis_text(&m, &a))
+    Ok(analysis_text(&m, &a, &reached))
+}
+
+/// The input values at `q` in the file's units (lengths, or angles in its angle unit), with
+/// their labels: `P1.3 = 0.050000`.
+fn input_values(m: &Manipulator, q: &[f64]) -> Vec<(String, f64)> {
+    m.actuators()
+        .iter()
+        .map(|a| {
+            let value = q[a.joint];
+            let shown = match a.kind {
+                kinsyn::notation::Primitive::R => m.units().angle.from_radians(value),
+                kinsyn::notation::Primitive::P => value,
+            };
+            (a.label(), shown)
+        })
+        .collect()
 }
 
 fn row_label(m: &Manipulator, kind: RowKind) -> String {
@@ -252,7 +321,12 @@ fn row_label(m: &Manipulator, kind: RowKind) -> String {
     }
 }
 
-fn analysis_json(m: &Manipulator, a: &Analysis, warnings: &[String]) -> serde_json::Value {
+fn analysis_json(
+    m: &Manipulator,
+    a: &Analysis,
+    reached: &Reached,
+    warnings: &[String],
+) -> serde_json::Value {
     let frame = m.platform_frame(&a.q);
     let rv = kinsyn::mechanism::rotation_log(&frame.0);
     let rows: Vec<serde_json::Value> = a
@@ -269,6 +343,9 @@ fn analysis_json(m: &Manipulator, a: &Analysis, warnings: &[String]) -> serde_js
         "platform_position": [frame.1.x, frame.1.y, frame.1.z],
         "platform_rotation_vector_rad": [rv.x, rv.y, rv.z],
         "joint_values": a.q,
+        "input_values": input_values(m, &a.q).into_iter().map(|(k, v)| (k, serde_json::json!(v))).collect::<serde_json::Map<String, serde_json::Value>>(),
+        "reached_from": reached.start,
+        "continuation_steps": reached.steps,
         "mobility": a.mobility,
         "closure_rank": rank_json(&a.closure_rank, None),
         "platform_dof": a.platform_dof,
@@ -295,7 +372,7 @@ fn rank_json(r: &kinsyn::screw::Rank, generic: Option<usize>) -> serde_json::Val
     })
 }
 
-fn analysis_text(m: &Manipulator, a: &Analysis) -> String {
+fn analysis_text(m: &Manipulator, a: &Analysis, reached: &Reached) -> String {
     let mut s = String::new();
     let frame = m.platform_frame(&a.q);
     let rv = kinsyn::mechanism::rotation_log(&frame.0);
@@ -312,6 +389,26 @@ fn analysis_text(m: &Manipulator, a: &Analysis) -> String {
         clean(rv.y),
         clean(rv.z),
         m.lock_text(&a.locked)
+    );
+    if reached.steps > 0 {
+        let _ = writeln!(
+            s,
+            "reached from {} in {} continuation step{}: the assembly continuous with it (another start, --from POSE, may give another assembly)",
+            reached.start,
+            reached.steps,
+            if reached.steps == 1 { "" } else { "s" }
+        );
+    }
+    let values: Vec<String> = input_values(m, &a.q)
+        .iter()
+        .map(|(label, v)| format!("{label} = {:.6}", clean(*v)))
+        .collect();
+    let _ = writeln!(
+        s,
+        "input values (from the reference; {}, angles in {}): {}",
+        m.units().length,
+        m.units().angle.name(),
+        values.join(", ")
     );
     let _ = writeln!(
         s,

@@ -107,12 +107,25 @@ enum Command {
     Analyze {
         /// A manipulator file (docs/mechanism-format.md).
         file: PathBuf,
-        /// The platform pose: x,y,z,rx,ry,rz — the platform frame's origin and rotation vector
-        /// (angles in the file's unit), like the file's platform.position and
-        /// platform.orientation. Default: the file's reference pose.
+        /// The platform pose: six numbers x,y,z,rx,ry,rz (the platform frame's origin, then its
+        /// rotation vector, angles in the file's unit, like the file's platform.position and
+        /// platform.orientation), or some of them by name, e.g. 'z=1.1,rx=5,ry=-3' for a
+        /// 3-dof platform: the others (its parasitic motion) are solved. Default: the file's
+        /// reference pose.
         #[arg(long, allow_hyphen_values = true)]
         pose: Option<String>,
-        /// Inputs to lock, e.g. 'R1.1,R2.1,R3.1' (labels as in kinsyn modes).
+        /// Input values (forward kinematics), e.g. 'P1.3=0.05,P2.3=-0.02': joint values from
+        /// the reference configuration, lengths in the file's unit, angles in its angle unit.
+        /// Inputs not named keep their values at the start. With --pose too, both are met.
+        #[arg(long, allow_hyphen_values = true)]
+        inputs: Option<String>,
+        /// Start from the configuration at this pose (same forms as --pose) instead of the
+        /// reference: --pose and --inputs are reached by continuation from the start, so the
+        /// start chooses the assembly mode when there are several.
+        #[arg(long, allow_hyphen_values = true)]
+        from: Option<String>,
+        /// Inputs to lock, e.g. 'R1.1,R2.1,R3.1' (labels as in kinsyn modes); they are held at
+        /// their values at the start.
         #[arg(long)]
         lock: Option<String>,
         /// Seed of the random assemblies that give the generic ranks.
@@ -418,12 +431,18 @@ fn execute(command: Command) -> Result<String, CliError> {
         Command::Analyze {
             file,
             pose,
+            inputs,
+            from,
             lock,
             seed,
             json: as_json,
         } => manipulator::analyze(
             &file,
-            pose.as_deref(),
+            &manipulator::Placement {
+                pose: pose.as_deref(),
+                inputs: inputs.as_deref(),
+                from: from.as_deref(),
+            },
             lock.as_deref(),
             &kinsyn::mechanism::SampleSettings {
                 seed,
@@ -489,10 +508,32 @@ fn query(
         hits.iter().map(|h| h.entry.id.as_str()).collect();
     let _ = writeln!(
         s,
-        "{} verified chains give {q} with at most {max_locks} locked joints",
-        chains.len()
+        "{} verified chains give {q} with at most {max_locks} locked joints{}",
+        chains.len(),
+        pattern_note(&q)
     );
     Ok(s)
+}
+
+/// What an `nTmR` query means when groups have the same numbers: the group it always is, or
+/// the groups it leaves out (it matches non-group motions only).
+fn pattern_note(q: &PatternQuery) -> String {
+    if let Some(kind) = q.forced_group() {
+        return format!(" ({q} is always the group {})", kind.symbol());
+    }
+    let groups: Vec<&str> = q
+        .groups_of_the_same_type()
+        .iter()
+        .map(|k| k.symbol())
+        .collect();
+    if groups.is_empty() {
+        String::new()
+    } else {
+        format!(
+            " ({q} counts non-group motions only; the groups of this type are {}: query them by name)",
+            groups.join(", ")
+        )
+    }
 }
 
 fn json<T: serde::Serialize>(value: &T) -> String {

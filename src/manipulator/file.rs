@@ -59,6 +59,24 @@ impl AngleUnit {
             AngleUnit::Rad => a,
         }
     }
+
+    /// An angle in radians, in this unit.
+    #[must_use]
+    pub fn from_radians(self, a: f64) -> f64 {
+        match self {
+            AngleUnit::Deg => a.to_degrees(),
+            AngleUnit::Rad => a,
+        }
+    }
+
+    /// The unit's name in words: `degrees` or `radians`.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            AngleUnit::Deg => "degrees",
+            AngleUnit::Rad => "radians",
+        }
+    }
 }
 
 /// The platform at the reference configuration.

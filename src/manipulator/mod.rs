@@ -19,11 +19,13 @@ pub mod file;
 mod jacobian;
 pub mod leg;
 mod modes;
+mod position;
 mod singularity;
 
 pub use jacobian::{Jacobians, RowKind, WrenchRow};
 pub use leg::{LegCheck, LegWarning, LegWarningKind};
 pub use modes::{MAX_INPUTS, Mode, Modes, PatternModes};
+pub use position::{PlatformGoal, Position, PositionRequest};
 pub use singularity::{Analysis, GenericRanks, Singularity, SingularityKind, rank_text};
 
 use crate::catalogue::Catalogue;
@@ -364,24 +366,31 @@ impl Manipulator {
             .split([',', ' '])
             .filter(|s| !s.is_empty() && *s != "-")
         {
-            let Some(a) = self
-                .actuators
-                .iter()
-                .position(|a| a.label().eq_ignore_ascii_case(label))
-            else {
-                let all: Vec<String> = self.actuators.iter().map(Actuator::label).collect();
-                return Err(format!(
-                    "{label:?} is not an actuator of {} (actuators: {})",
-                    self.name,
-                    all.join(" ")
-                ));
-            };
+            let a = self.actuator_named(label)?;
             if !out.contains(&a) {
                 out.push(a);
             }
         }
         out.sort_unstable();
         Ok(out)
+    }
+
+    /// The actuator with this label (`P1.3`, any case).
+    ///
+    /// # Errors
+    /// A label that names no actuator; the message lists the actuators.
+    pub fn actuator_named(&self, label: &str) -> Result<usize, String> {
+        self.actuators
+            .iter()
+            .position(|a| a.label().eq_ignore_ascii_case(label))
+            .ok_or_else(|| {
+                let all: Vec<String> = self.actuators.iter().map(Actuator::label).collect();
+                format!(
+                    "{label:?} is not an actuator of {} (actuators: {})",
+                    self.name,
+                    all.join(" ")
+                )
+            })
     }
 
     /// Assembles the manipulator with its platform frame at `position` and `orientation`
@@ -396,16 +405,15 @@ impl Manipulator {
         orientation: Vector3<f64>,
         locked: &[usize],
     ) -> Result<Vec<f64>, ManipulatorError> {
-        let goal_frame: Displacement = (Rotation3::from_scaled_axis(orientation), position);
-        // The platform body's displacement that puts its frame there.
-        let goal = crate::mechanism::compose(&goal_frame, &crate::mechanism::inverse(&self.frame));
-        self.mechanism
-            .assemble(
-                &self.reference(),
-                &self.lock_mask(locked),
-                Some((self.platform, &goal)),
-            )
-            .map_err(|e| ManipulatorError::Pose(e.to_string()))
+        let request = PositionRequest {
+            platform: Some(PlatformGoal::Pose((
+                Rotation3::from_scaled_axis(orientation),
+                position,
+            ))),
+            held: locked.to_vec(),
+            ..PositionRequest::default()
+        };
+        Ok(self.solve_position(&self.reference(), &request)?.q)
     }
 }
 

@@ -278,7 +278,7 @@ impl Mechanism {
     /// The dimensionless equations at `q`: loop closure (6 rows per loop), then the goal's;
     /// their matrix over every joint (a joint step `Δ` changes the residual by `A Δ`) and the
     /// residual.
-    fn equations(&self, q: &[f64], goal: Option<&Goal>) -> (DMatrix<f64>, DVector<f64>) {
+    pub(crate) fn equations(&self, q: &[f64], goal: Option<&Goal>) -> (DMatrix<f64>, DVector<f64>) {
         let poses = self.poses(q);
         let screws = self.screws_at(&poses);
         let closure = self.residual_at(q, &poses);
@@ -303,5 +303,64 @@ impl Mechanism {
             residual.rows_mut(n, e.len()).copy_from(&e);
         }
         (rows, residual)
+    }
+
+    /// The degrees of freedom `body` keeps at `q` with the `locked` joints held and the
+    /// `goal`'s quantities fixed: the rank of its twists over the joint rates that keep the
+    /// loops closed and the goal met (dimensionless, default rank tolerance). Zero when the
+    /// locks and the goal determine the body's pose.
+    #[must_use]
+    pub fn freedom_left(
+        &self,
+        body: usize,
+        q: &[f64],
+        locked: &[bool],
+        goal: Option<&Goal>,
+    ) -> usize {
+        let free = self.free(locked);
+        let (rows, _) = self.equations(q, goal);
+        let a = DMatrix::from_fn(rows.nrows(), free.len(), |r, k| rows[(r, free[k])]);
+        let (rates, _) = screw::nullspace(&a, screw::DEFAULT_RANK_TOLERANCE);
+        let twists = self.dimensionless(&self.body_jacobian(body, &self.joint_screws(q)));
+        let twists = DMatrix::from_fn(6, free.len(), |r, k| twists[(r, free[k])]);
+        // Unit screws times an orthonormal basis: the scale is 1, whatever round-off is left.
+        screw::span_basis_scaled(&(twists * rates), screw::DEFAULT_RANK_TOLERANCE, Some(1.0))
+            .1
+            .rank
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::inverse_left_jacobian;
+    use crate::mechanism::rotation_log;
+    use nalgebra::{Rotation3, Vector3};
+
+    /// ṙ = J_l⁻¹(r) ω: turning R by a small spatial rotation ω h changes its rotation vector by
+    /// J_l⁻¹(r) ω h, checked by central differences (angles up to 3 rad and near zero).
+    #[test]
+    fn rotation_vector_rates_match_finite_differences() {
+        let h = 1e-6;
+        for r in [
+            Vector3::new(0.3, -0.2, 0.5),
+            Vector3::new(1e-6, 2e-6, -1e-6),
+            Vector3::new(2.0, 1.0, -1.5),
+        ] {
+            let j = inverse_left_jacobian(&r);
+            for k in 0..3 {
+                let w = Vector3::ith(k, 1.0);
+                let turned = |s: f64| {
+                    rotation_log(
+                        &(Rotation3::from_scaled_axis(w * s) * Rotation3::from_scaled_axis(r)),
+                    )
+                };
+                let fd = (turned(h) - turned(-h)) / (2.0 * h);
+                assert!(
+                    (fd - j.column(k)).norm() < 1e-6,
+                    "r {r}, ω e{k}: {fd} vs {}",
+                    j.column(k)
+                );
+            }
+        }
     }
 }

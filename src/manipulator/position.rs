@@ -1,0 +1,269 @@
+//! Position analysis: the configuration of a manipulator from what an analyst gives, input
+//! values (forward kinematics), platform coordinates (inverse kinematics, with the parasitic
+//! coordinates of a low-dof platform solved), or both.
+//!
+//! A manipulator generally has several assemblies for the same values. The one returned is the
+//! assembly **continuous with the start configuration**: the given values are approached from
+//! their values at the start along a straight path, and the loops are closed at each step by
+//! [`crate::mechanism::Mechanism::assemble_to`] from the previous step's configuration. No
+//! singularity is crossed on the way, so the result keeps the start's assembly mode; another
+//! start (e.g. `analyze --from POSE`) selects another assembly.
+
+use super::{Manipulator, ManipulatorError};
+use crate::chain::Displacement;
+use crate::mechanism::{Coordinate, Goal, compose, exp, inverse, log};
+use crate::screw::Twist;
+use nalgebra::{Rotation3, Vector3};
+
+/// What the platform and the inputs are asked to be.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct PositionRequest {
+    /// Input values (actuator index, joint value: radians or length, from the reference).
+    pub inputs: Vec<(usize, f64)>,
+    /// Where the platform frame is asked to be, if anywhere.
+    pub platform: Option<PlatformGoal>,
+    /// Inputs held at their values at the start (actuator indices).
+    pub held: Vec<usize>,
+}
+
+/// Where the platform frame is asked to be.
+#[derive(Debug, Clone, PartialEq)]
+pub enum PlatformGoal {
+    /// The whole pose: (orientation, origin) in the ground frame.
+    Pose(Displacement),
+    /// Some coordinates (radians for angles); the others, the parasitic motion of a low-dof
+    /// platform, are solved.
+    Coordinates(Vec<(Coordinate, f64)>),
+}
+
+impl PlatformGoal {
+    /// The goal for these coordinates: the whole pose when all six are given (each once).
+    #[must_use]
+    pub fn from_coordinates(mut values: Vec<(Coordinate, f64)>) -> Self {
+        if values.len() != 6 {
+            return PlatformGoal::Coordinates(values);
+        }
+        values.sort_by_key(|(c, _)| c.index());
+        let v: Vec<f64> = values.iter().map(|&(_, x)| x).collect();
+        PlatformGoal::Pose((
+            Rotation3::from_scaled_axis(Vector3::new(v[3], v[4], v[5])),
+            Vector3::new(v[0], v[1], v[2]),
+        ))
+    }
+}
+
+/// A configuration reached by [`Manipulator::solve_position`].
+#[derive(Debug, Clone, PartialEq)]
+pub struct Position {
+    /// The joint values.
+    pub q: Vec<f64>,
+    /// Continuation steps taken from the start.
+    pub steps: usize,
+    /// The platform's degrees of freedom left by the request at the configuration reached (0
+    /// when the request determines the platform's pose).
+    pub undetermined: usize,
+}
+
+/// The smallest continuation step (as a fraction of the path) before the path is given up.
+const SMALLEST_STEP: f64 = 1.0 / 4096.0;
+
+impl Manipulator {
+    /// The configuration that meets `request`, continuous with `start` (module documentation).
+    ///
+    /// # Errors
+    /// [`ManipulatorError::Pose`] when the continuation cannot go on: the values asked for lie
+    /// beyond the workspace, or a singularity lies on the way (the message gives how far it
+    /// got and the residual), or when the request leaves the platform free to move (fewer
+    /// values than degrees of freedom).
+    pub fn solve_position(
+        &self,
+        start: &[f64],
+        request: &PositionRequest,
+    ) -> Result<Position, ManipulatorError> {
+        let m = &self.mechanism;
+        let mut mask = self.lock_mask(&request.held);
+        for &(a, _) in &request.inputs {
+            mask[self.actuators[a].joint] = true;
+        }
+        let start_frame = self.platform_frame(start);
+        let at = |t: f64| -> (Vec<f64>, Option<Goal>) {
+            let mut q0 = start.to_vec();
+            for &(a, value) in &request.inputs {
+                let j = self.actuators[a].joint;
+                q0[j] = start[j] + t * (value - start[j]);
+            }
+            let goal = match &request.platform {
+                None => None,
+                Some(PlatformGoal::Pose(pose)) => {
+                    // The frame moves along the screw from its start pose to the goal.
+                    let screw = log(&compose(pose, &inverse(&start_frame))).to_vector() * t;
+                    let frame = compose(&exp(&Twist::from_vector(&screw)), &start_frame);
+                    Some(Goal::Pose {
+                        body: self.platform,
+                        displacement: compose(&frame, &inverse(&self.frame)),
+                    })
+                }
+                Some(PlatformGoal::Coordinates(values)) => Some(Goal::Coordinates {
+                    body: self.platform,
+                    frame: self.frame,
+                    values: values
+                        .iter()
+                        .map(|&(c, v)| {
+                            let from = c.of(&start_frame);
+                            (c, from + t * (v - from))
+                        })
+                        .collect(),
+                }),
+            };
+            (q0, goal)
+        };
+        let mut q = start.to_vec();
+        let (mut t, mut dt, mut steps) = (0.0_f64, 1.0_f64, 0);
+        while t < 1.0 {
+            let next = (t + dt).min(1.0);
+            let (values, goal) = at(next);
+            let mut trial = q.clone();
+            for (j, locked) in mask.iter().enumerate() {
+                if *locked {
+                    trial[j] = values[j];
+                }
+            }
+            match m.assemble_to(&trial, &mask, goal.as_ref()) {
+                Ok(solved) => {
+                    q = solved;
+                    t = next;
+                    steps += 1;
+                    dt = (dt * 2.0).min(1.0);
+                }
+                Err(e) => {
+                    dt /= 2.0;
+                    if dt < SMALLEST_STEP {
+                        return Err(ManipulatorError::Pose(format!(
+                            "no assembly reached: continuing from the start stopped {:.1}% of the way ({}); the values lie beyond the workspace, or a singularity lies between",
+                            100.0 * t,
+                            e
+                        )));
+                    }
+                }
+            }
+        }
+        let (_, goal) = at(1.0);
+        let undetermined = m.freedom_left(self.platform, &q, &mask, goal.as_ref());
+        if undetermined > 0 {
+            return Err(ManipulatorError::Pose(format!(
+                "the values given leave the platform {undetermined} degree{} of freedom: give {undetermined} more input{} or platform coordinate{}",
+                if undetermined == 1 { "" } else { "s" },
+                if undetermined == 1 { "" } else { "s" },
+                if undetermined == 1 { "" } else { "s" },
+            )));
+        }
+        Ok(Position {
+            q,
+            steps,
+            undetermined,
+        })
+    }
+}
+
+impl Manipulator {
+    /// Parses input values `P1.3=1.05,R2.1=10`: joint values from the reference configuration,
+    /// lengths in the file's length unit, angles in its angle unit (returned in radians).
+    ///
+    /// # Errors
+    /// An item without `=`, a label that names no input, an input given twice, or a value that
+    /// is not a finite number.
+    pub fn parse_inputs(&self, text: &str) -> Result<Vec<(usize, f64)>, String> {
+        let mut out: Vec<(usize, f64)> = Vec::new();
+        for item in text.split(',').map(str::trim).filter(|s| !s.is_empty()) {
+            let Some((label, value)) = item.split_once('=') else {
+                return Err(format!(
+                    "{item:?} is not LABEL=VALUE (e.g. {}=0.1)",
+                    self.actuators
+                        .first()
+                        .map_or_else(|| "P1.3".to_string(), super::Actuator::label)
+                ));
+            };
+            let a = self.actuator_named(label.trim())?;
+            let value = finite_number(value)?;
+            if out.iter().any(|&(b, _)| b == a) {
+                return Err(format!("input {} given twice", self.actuators[a].label()));
+            }
+            let value = match self.mechanism.joints()[self.actuators[a].joint].kind {
+                crate::notation::Primitive::R => self.units.angle.to_radians(value),
+                crate::notation::Primitive::P => value,
+            };
+            out.push((a, value));
+        }
+        if out.is_empty() {
+            return Err("no input value given (e.g. P1.3=0.1)".into());
+        }
+        Ok(out)
+    }
+
+    /// Parses a platform pose: six numbers `x,y,z,rx,ry,rz` (the platform frame's origin and
+    /// rotation vector, angles in the file's unit), or some of them by name, `z=1.1,rx=5`,
+    /// leaving the others to be solved.
+    ///
+    /// # Errors
+    /// Not six numbers and not `name=value` items, an unknown or repeated name, or a value that
+    /// is not a finite number.
+    pub fn parse_pose(&self, text: &str) -> Result<PlatformGoal, String> {
+        let items: Vec<&str> = text.split(',').map(str::trim).collect();
+        let angle = |c: Coordinate, v: f64| {
+            if c.is_angle() {
+                self.units.angle.to_radians(v)
+            } else {
+                v
+            }
+        };
+        if !items.iter().any(|i| i.contains('=')) {
+            let values = items
+                .iter()
+                .map(|v| finite_number(v))
+                .collect::<Result<Vec<f64>, String>>()?;
+            if values.len() != 6 {
+                return Err(format!(
+                    "{} number{}: a whole pose is six numbers x,y,z,rx,ry,rz (or name some of them: z=1.1,rx=5)",
+                    values.len(),
+                    if values.len() == 1 { "" } else { "s" }
+                ));
+            }
+            let named: Vec<(Coordinate, f64)> = Coordinate::ALL
+                .iter()
+                .zip(&values)
+                .map(|(&c, &x)| (c, angle(c, x)))
+                .collect();
+            return Ok(PlatformGoal::from_coordinates(named));
+        }
+        let mut values: Vec<(Coordinate, f64)> = Vec::new();
+        for item in items.iter().filter(|s| !s.is_empty()) {
+            let Some((name, value)) = item.split_once('=') else {
+                return Err(format!(
+                    "{item:?}: name every coordinate (x, y, z, rx, ry, rz), e.g. z=1.1"
+                ));
+            };
+            let name = name.trim().to_ascii_lowercase();
+            let c = Coordinate::ALL
+                .into_iter()
+                .find(|c| c.name() == name)
+                .ok_or_else(|| format!("{name:?} is not a coordinate: x, y, z, rx, ry or rz"))?;
+            if values.iter().any(|&(d, _)| d == c) {
+                return Err(format!("{} given twice", c.name()));
+            }
+            values.push((c, angle(c, finite_number(value)?)));
+        }
+        Ok(PlatformGoal::from_coordinates(values))
+    }
+}
+
+/// A finite number, or a one-line error naming the text.
+fn finite_number(text: &str) -> Result<f64, String> {
+    match text.trim().parse::<f64>() {
+        Ok(x) if x.is_finite() && x.abs() <= super::LARGEST_COORDINATE => Ok(x),
+        Ok(x) if x.is_finite() => Err(format!(
+            "{x:e} is beyond ±{:e} (docs/limits.md)",
+            super::LARGEST_COORDINATE
+        )),
+        _ => Err(format!("{:?} is not a finite number", text.trim())),
+    }
+}
