@@ -316,6 +316,14 @@ enum PrismaticsArg {
 }
 
 impl Reading {
+    /// The catalogue in this reading, enumerated and verified (about a second: a spinner
+    /// shows on a terminal).
+    fn catalogue(&self) -> Catalogue {
+        terminal::working("enumerating and verifying the catalogue", || {
+            Catalogue::generate(&self.options())
+        })
+    }
+
     fn options(&self) -> Options {
         Options {
             prismatics: match self.prismatics {
@@ -482,7 +490,7 @@ fn query(
             "--max-locks {max_locks}: a leg has six joints"
         )));
     }
-    let cat = Catalogue::generate(&reading.options());
+    let cat = reading.catalogue();
     let hits = cat.query(&q, max_locks, family);
     if as_json {
         let rows: Vec<serde_json::Value> = hits
@@ -615,7 +623,7 @@ fn list_or_none(items: &[String]) -> String {
 fn catalogue(command: CatalogueCommand) -> Result<String, CliError> {
     match command {
         CatalogueCommand::Generate { out, reading } => {
-            let cat = Catalogue::generate(&reading.options());
+            let cat = reading.catalogue();
             cat.write(&out)?;
             let (letters, marks) = cat.totals();
             Ok(format!(
@@ -628,7 +636,7 @@ fn catalogue(command: CatalogueCommand) -> Result<String, CliError> {
             json: as_json,
             reading,
         } => {
-            let cat = Catalogue::generate(&reading.options());
+            let cat = reading.catalogue();
             if as_json {
                 let diffs: Vec<serde_json::Value> = cat
                     .difference_counts()
@@ -677,7 +685,7 @@ fn catalogue(command: CatalogueCommand) -> Result<String, CliError> {
                     "no Appendix table {t}; the tables with chains are 1, 2, 3, 4, 7, 8"
                 )));
             }
-            let cat = Catalogue::generate(&reading.options());
+            let cat = reading.catalogue();
             let entries: Vec<&Entry> = cat
                 .entries
                 .iter()
@@ -706,7 +714,7 @@ fn catalogue(command: CatalogueCommand) -> Result<String, CliError> {
             Ok(s)
         }
         CatalogueCommand::Rejected { reading } => {
-            Ok(Catalogue::generate(&reading.options()).not_3t3r_markdown())
+            Ok(reading.catalogue().not_3t3r_markdown())
         }
         CatalogueCommand::Show {
             query,
@@ -714,7 +722,7 @@ fn catalogue(command: CatalogueCommand) -> Result<String, CliError> {
             json: as_json,
             reading,
         } => {
-            let cat = Catalogue::generate(&reading.options());
+            let cat = reading.catalogue();
             let entry = match cat.find(&query) {
                 Some(e) => e,
                 None if query
@@ -807,7 +815,7 @@ fn catalogue(command: CatalogueCommand) -> Result<String, CliError> {
             json: as_json,
             reading,
         } => {
-            let cat = Catalogue::generate(&reading.options());
+            let cat = reading.catalogue();
             if as_json {
                 return Ok(json(&cat.differences));
             }

@@ -46,6 +46,16 @@ pub fn print(text: &str) -> io::Result<()> {
     }
 }
 
+/// Runs `work` with a spinner and `message` on stderr, shown only when stderr is a terminal
+/// (so that scripts and tests see nothing) and cleared when the work is done.
+pub fn working<T>(message: &str, work: impl FnOnce() -> T) -> T {
+    let spinner = indicatif::ProgressBar::new_spinner().with_message(message.to_string());
+    spinner.enable_steady_tick(std::time::Duration::from_millis(120));
+    let result = work();
+    spinner.finish_and_clear();
+    result
+}
+
 /// Prints `kinsyn: error: MESSAGE` as one line on stderr.
 pub fn error(message: &str) {
     line(&format!("kinsyn: error: {}", one_line(message)));

@@ -84,13 +84,14 @@ impl AngleUnit {
 #[serde(deny_unknown_fields)]
 pub struct PlatformSpec {
     /// The platform frame's origin in the ground frame.
+    #[serde(deserialize_with = "point")]
     pub position: [f64; 3],
     /// The platform frame's orientation: a rotation vector (axis × angle, in the file's angle
     /// unit) from the ground frame.
-    #[serde(default)]
+    #[serde(default, deserialize_with = "point")]
     pub orientation: [f64; 3],
     /// The reference point P, in the platform frame (the paper's P; default the origin).
-    #[serde(default)]
+    #[serde(default, deserialize_with = "point")]
     pub point: [f64; 3],
 }
 
@@ -103,12 +104,18 @@ pub struct LegSpec {
     pub chain: String,
     /// The point of the first joint, in the ground frame (the centre of a U or S, a point of an
     /// R or C axis; unused for a P).
+    #[serde(deserialize_with = "point")]
     pub base: [f64; 3],
     /// The point of the last joint, in the platform frame.
+    #[serde(deserialize_with = "point")]
     pub platform: [f64; 3],
     /// The points of the joints between the first and the last, one per joint letter, in the
     /// ground frame at the reference configuration; default evenly spaced from base to platform.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[serde(
+        default,
+        skip_serializing_if = "Option::is_none",
+        deserialize_with = "optional_points"
+    )]
     pub points: Option<Vec<[f64; 3]>>,
     /// One axis per primitive joint (ground frame, reference configuration): a vector, or
     /// `"leg"` for the unit vector from the base point to the platform point. Default: the
@@ -125,9 +132,51 @@ pub struct LegSpec {
 #[serde(untagged, expecting = "an axis: a vector [x, y, z] or \"leg\"")]
 pub enum AxisSpec {
     /// A direction (normalised when read).
-    Vector([f64; 3]),
+    Vector(#[serde(deserialize_with = "point")] [f64; 3]),
     /// A named direction: `leg`.
     Named(String),
+}
+
+/// A point or vector `[x, y, z]`, read with an error that says how many coordinates it has
+/// when it does not have three (serde's fixed-size arrays say "trailing characters").
+struct Point([f64; 3]);
+
+impl<'de> Deserialize<'de> for Point {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        struct Coordinates;
+        impl<'de> serde::de::Visitor<'de> for Coordinates {
+            type Value = Point;
+            fn expecting(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+                f.write_str("3 coordinates [x, y, z]")
+            }
+            fn visit_seq<A: serde::de::SeqAccess<'de>>(self, mut seq: A) -> Result<Point, A::Error> {
+                let mut p = [0.0; 3];
+                let mut n = 0;
+                while let Some(x) = seq.next_element::<f64>()? {
+                    if let Some(slot) = p.get_mut(n) {
+                        *slot = x;
+                    }
+                    n += 1;
+                }
+                if n == 3 {
+                    Ok(Point(p))
+                } else {
+                    Err(serde::de::Error::invalid_length(n, &self))
+                }
+            }
+        }
+        d.deserialize_seq(Coordinates)
+    }
+}
+
+fn point<'de, D: serde::Deserializer<'de>>(d: D) -> Result<[f64; 3], D::Error> {
+    Point::deserialize(d).map(|p| p.0)
+}
+
+fn optional_points<'de, D: serde::Deserializer<'de>>(
+    d: D,
+) -> Result<Option<Vec<[f64; 3]>>, D::Error> {
+    Option::<Vec<Point>>::deserialize(d).map(|o| o.map(|v| v.into_iter().map(|p| p.0).collect()))
 }
 
 /// A description file that cannot be used, with the field at fault.

@@ -129,6 +129,16 @@ impl Manipulator {
                 DescriptionError::new("legs", "no leg: a manipulator needs at least one").into(),
             );
         }
+        if d.legs.len() > MAX_LEGS {
+            return Err(DescriptionError::new(
+                "legs",
+                format!(
+                    "{} legs: at most {MAX_LEGS} (docs/limits.md; the analysis grows with the cube of the number of joints)",
+                    d.legs.len()
+                ),
+            )
+            .into());
+        }
         let angle = d.units.angle;
         finite(&d.platform.position, "platform.position")?;
         finite(&d.platform.orientation, "platform.orientation")?;
@@ -150,6 +160,16 @@ impl Manipulator {
             let (chain, entry_axes) = leg_chain(&spec.chain, spec.axes.is_none(), &mut catalogue)
                 .map_err(|m| DescriptionError::new(field("chain"), m))?;
             let kinds: Vec<Primitive> = chain.primitives().map(|(p, _)| p).collect();
+            if kinds.len() > MAX_LEG_JOINTS {
+                return Err(DescriptionError::new(
+                    field("chain"),
+                    format!(
+                        "{chain} has {} primitive joints: at most {MAX_LEG_JOINTS} per leg (docs/limits.md)",
+                        kinds.len()
+                    ),
+                )
+                .into());
+            }
             let letters = chain.joints().len();
             let base = Vector3::from(spec.base);
             let end = to_ground(&spec.platform);
@@ -416,6 +436,15 @@ impl Manipulator {
         Ok(self.solve_position(&self.reference(), &request)?.q)
     }
 }
+
+/// The most legs a description may have (docs/limits.md): twice the six of a Gough–Stewart
+/// platform. Analysis time grows with the cube of the number of joints (one SVD of the
+/// loop-closure Jacobian per Newton step).
+pub const MAX_LEGS: usize = 12;
+
+/// The most primitive joints a leg may have (docs/limits.md): twice the six a leg needs for
+/// any motion.
+pub const MAX_LEG_JOINTS: usize = 12;
 
 /// The largest coordinate magnitude accepted (docs/limits.md): far enough from overflow that
 /// products and squares of lengths stay exact to round-off.
