@@ -713,9 +713,7 @@ fn catalogue(command: CatalogueCommand) -> Result<String, CliError> {
             }
             Ok(s)
         }
-        CatalogueCommand::Rejected { reading } => {
-            Ok(reading.catalogue().not_3t3r_markdown())
-        }
+        CatalogueCommand::Rejected { reading } => Ok(reading.catalogue().not_3t3r_markdown()),
         CatalogueCommand::Show {
             query,
             lock,

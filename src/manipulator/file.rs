@@ -149,7 +149,10 @@ impl<'de> Deserialize<'de> for Point {
             fn expecting(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
                 f.write_str("3 coordinates [x, y, z]")
             }
-            fn visit_seq<A: serde::de::SeqAccess<'de>>(self, mut seq: A) -> Result<Point, A::Error> {
+            fn visit_seq<A: serde::de::SeqAccess<'de>>(
+                self,
+                mut seq: A,
+            ) -> Result<Point, A::Error> {
                 let mut p = [0.0; 3];
                 let mut n = 0;
                 while let Some(x) = seq.next_element::<f64>()? {

@@ -160,16 +160,6 @@ impl Manipulator {
             let (chain, entry_axes) = leg_chain(&spec.chain, spec.axes.is_none(), &mut catalogue)
                 .map_err(|m| DescriptionError::new(field("chain"), m))?;
             let kinds: Vec<Primitive> = chain.primitives().map(|(p, _)| p).collect();
-            if kinds.len() > MAX_LEG_JOINTS {
-                return Err(DescriptionError::new(
-                    field("chain"),
-                    format!(
-                        "{chain} has {} primitive joints: at most {MAX_LEG_JOINTS} per leg (docs/limits.md)",
-                        kinds.len()
-                    ),
-                )
-                .into());
-            }
             let letters = chain.joints().len();
             let base = Vector3::from(spec.base);
             let end = to_ground(&spec.platform);
@@ -441,10 +431,6 @@ impl Manipulator {
 /// platform. Analysis time grows with the cube of the number of joints (one SVD of the
 /// loop-closure Jacobian per Newton step).
 pub const MAX_LEGS: usize = 12;
-
-/// The most primitive joints a leg may have (docs/limits.md): twice the six a leg needs for
-/// any motion.
-pub const MAX_LEG_JOINTS: usize = 12;
 
 /// The largest coordinate magnitude accepted (docs/limits.md): far enough from overflow that
 /// products and squares of lengths stay exact to round-off.

@@ -139,7 +139,7 @@ impl Manipulator {
                     dt /= 2.0;
                     if dt < SMALLEST_STEP {
                         return Err(ManipulatorError::Pose(format!(
-                            "no assembly reached: continuing from the start stopped {:.1}% of the way ({}); the values lie beyond the workspace, or a singularity lies between",
+                            "no assembly reached: the continuation from the start stopped {:.1}% of the way, where {}; the values lie beyond the workspace, or a singularity lies between",
                             100.0 * t,
                             e
                         )));

@@ -157,7 +157,7 @@ pub enum MechanismError {
     Disconnected(String),
     /// Newton's method did not close the loops (or reach the asked-for pose).
     #[error(
-        "the loops do not close: residual {residual:.3e} after {iterations} Newton steps (the pose is not reachable, or too far from the reference)"
+        "the loops do not close: residual {residual:.3e} after {iterations} damped Newton steps"
     )]
     NotAssembled {
         /// The final residual (rotation in rad, translation over the length scale).
