@@ -49,6 +49,42 @@ fn assert_input_error(o: &Output, what: &str, needles: &[&str]) {
     }
 }
 
+/// One section of `modes`' compact text: `dof K: N subsets, P patterns` and its pattern lines,
+/// each split into words.
+struct DofSection {
+    dof: usize,
+    subsets: usize,
+    lines: Vec<String>,
+}
+
+/// The `dof K` sections of `modes`' text output, from the most dof to none.
+fn dof_sections(out: &str) -> Vec<DofSection> {
+    let mut sections: Vec<DofSection> = Vec::new();
+    let mut inside = false;
+    for line in out.lines() {
+        if let Some(rest) = line.strip_prefix("dof ") {
+            let (dof, rest) = rest.split_once(": ").expect("dof K: N subsets");
+            let subsets = rest.split_whitespace().next().unwrap();
+            sections.push(DofSection {
+                dof: dof.parse().unwrap(),
+                subsets: subsets.parse().unwrap(),
+                lines: Vec::new(),
+            });
+            inside = true;
+        } else if inside && line.starts_with("  ") {
+            sections.last_mut().unwrap().lines.push(line.trim().into());
+        } else {
+            inside = false;
+        }
+    }
+    sections
+}
+
+/// Words of a line, for comparisons that ignore the column padding.
+fn words(line: &str) -> Vec<&str> {
+    line.split_whitespace().collect()
+}
+
 #[test]
 fn modes_of_the_three_ups_list_64_subsets_and_the_three_rps() {
     let out = succeed(&["modes", "mechanisms/3-ups.json"]);
@@ -56,32 +92,47 @@ fn modes_of_the_three_ups_list_64_subsets_and_the_three_rps() {
         out.starts_with("3-UPS: 6 inputs (R1.1 P1.3 R2.1 P2.3 R3.1 P3.3), 64 lock subsets;"),
         "{out}"
     );
-    // The table: a header, then one line per subset, ending at the first blank line.
-    let table: Vec<&str> = out
-        .lines()
-        .skip_while(|l| !l.starts_with("locked"))
-        .skip(1)
-        .take_while(|l| !l.is_empty())
-        .collect();
-    assert_eq!(table.len(), 64, "{out}");
+    // The patterns by dof account for every one of the 64 subsets: near the reference each
+    // locked input removes one dof (the legs are not singular there), so dof 6 − k is reached by
+    // the C(6, k) subsets of k locks.
+    let sections = dof_sections(&out);
+    assert_eq!(
+        sections.iter().map(|s| s.dof).collect::<Vec<_>>(),
+        [6, 5, 4, 3, 2, 1, 0],
+        "{out}"
+    );
+    let binomial = [1, 6, 15, 20, 15, 6, 1];
+    for s in &sections {
+        assert_eq!(s.subsets, binomial[6 - s.dof], "dof {}: {out}", s.dof);
+    }
     // Paper 000 §5–5.2: holding α̇ = 0 in every leg (the U's first revolute, R_i.1) turns the
     // 3-UPS into the 3-RPS, whose platform keeps three dof (§5, eqs. 20–22). Those three dof are
     // the 3-RPS's known 1T2R motion (one translation, two rotations, with parasitic motion of the
-    // other three coordinates), not one of the 12 displacement groups.
-    let rps: Vec<Vec<&str>> = table
-        .iter()
-        .map(|l| l.split_whitespace().collect::<Vec<_>>())
-        .filter(|t| t.len() >= 5 && t[..3] == ["R1.1", "R2.1", "R3.1"] && t[3] == "3")
-        .collect();
-    assert_eq!(rps.len(), 1, "{out}");
-    assert_eq!(rps[0][3..], ["3", "1T2R"], "{out}");
-    // Nothing locked: the full 6 dof, the displacement group D; everything locked: E.
+    // other three coordinates), not one of the 12 displacement groups; no other subset gives it.
+    let dof3 = &sections[3];
     assert!(
-        table[0].split_whitespace().collect::<Vec<_>>() == ["-", "6", "D", "group"],
-        "{}",
-        table[0]
+        dof3.lines
+            .iter()
+            .any(|l| words(l) == ["1T2R", "1", "subset", "lock", "R1.1", "R2.1", "R3.1"]),
+        "{out}"
     );
-    assert!(table[63].ends_with(" 0  E  group"), "{}", table[63]);
+    // Nothing locked: the full 6 dof, the displacement group D; everything locked: E.
+    assert_eq!(
+        sections[0]
+            .lines
+            .iter()
+            .map(|l| words(l))
+            .collect::<Vec<_>>(),
+        [["D", "group", "1", "subset", "lock", "-"]],
+        "{out}"
+    );
+    assert_eq!(
+        words(&sections[6].lines[0]),
+        [
+            "E", "group", "1", "subset", "lock", "R1.1", "P1.3", "R2.1", "P2.3", "R3.1", "P3.3"
+        ],
+        "{out}"
+    );
     assert!(
         out.lines()
             .any(|l| l.trim() == "1T2R     lock R1.1 R2.1 R3.1"),
@@ -688,10 +739,16 @@ fn modes_print_the_parameters_of_the_groups() {
     // G2 = (−0.25, 0.433, 1) and G3 = (−0.25, −0.433, 1), along y; its point nearest the origin
     // is (−0.25, 0, 1). The spherical 3-RRR's axes all pass through (0, 0, 0.5) (its source).
     let out = succeed(&["modes", "mechanisms/3-ups.json"]);
+    let dof1 = dof_sections(&out).into_iter().find(|s| s.dof == 1).unwrap();
+    assert!(
+        dof1.lines.iter().any(|l| l
+            == "R(y)     group     1 subset   lock R1.1 R2.1 P2.3 R3.1 P3.3 (axis through [-0.25, 0, 1] m)"),
+        "{out}"
+    );
     assert!(
         out.lines()
-            .any(|l| l.starts_with("R1.1 R2.1 P2.3 R3.1 P3.3 ")
-                && l.ends_with("R(y)  group, axis through [-0.25, 0, 1] m")),
+            .any(|l| l.trim()
+                == "R(y)     lock R1.1 R2.1 P2.3 R3.1 P3.3 (axis through [-0.25, 0, 1] m)"),
         "{out}"
     );
     let out = succeed(&["modes", "mechanisms/3-rrr-spherical.json"]);
