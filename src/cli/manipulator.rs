@@ -73,12 +73,13 @@ pub enum Selection {
     Lock(String),
 }
 
-/// The default of `modes --max-subsets`: 4096 sampled motions, about 15 s of CPU on a 6-UPS
-/// (3.5–4.5 ms per subset measured, docs/limits-modes.md), and every subset of up to 12 inputs.
+/// The default of `modes --max-subsets`: 4096 sampled motions, about 16–20 s of CPU for legs
+/// like the 6-UPS's (4–5 ms per subset measured, docs/limits-modes.md), and every subset of up
+/// to 12 inputs.
 pub const DEFAULT_MAX_SUBSETS: u32 = 4096;
 
 /// The largest `--max-subsets`: 2^16, every subset of 16 inputs (the old limit of 16 inputs),
-/// about 4 minutes at 3.5 ms per subset on two cores.
+/// about 4–6 minutes of CPU at 4–5 ms per subset.
 pub const MAX_SUBSETS_CEILING: u32 = 1 << 16;
 
 /// The lock sets printed per pattern in text; `--json` lists them all.
@@ -133,7 +134,7 @@ fn selected_subsets(
         .last()
         .unwrap_or(0);
     Err(CliError::Input(format!(
-        "{}: {n} inputs give {count} lock subsets {scope}, more than --max-subsets {max_subsets} (each is a sampled motion of about 1–5 ms, docs/limits.md); use --max-locks {fits} ({} subsets) or --lock SET, or raise --max-subsets (at most {MAX_SUBSETS_CEILING})",
+        "{}: {n} inputs give {count} lock subsets {scope}, more than --max-subsets {max_subsets} (each is a sampled motion of about 1–5 ms of CPU, docs/limits.md); use --max-locks {fits} ({} subsets) or --lock SET, or raise --max-subsets (at most {MAX_SUBSETS_CEILING})",
         path.display(),
         m.lock_subset_count(fits)
     )))

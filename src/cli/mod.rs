@@ -80,10 +80,10 @@ enum Command {
     /// displacement groups, or as nTmR when it is not a group (paper 000 §1, §5). Inputs are
     /// labelled by kind, leg and joint: P1.3 is leg 1's third joint.
     ///
-    /// The work is exponential in the number of inputs n: every lock subset is 2^n sampled
-    /// motions (64 for 6 inputs, 4096 for 12, 65536 for 16). One subset costs about 1 ms of CPU
-    /// (3-UPS) to 4.5 ms (6-UPS) with the default 3 samples, in proportion to --samples, on two
-    /// cores shared among the subsets. --max-locks N samples Σ_{k≤N} C(n,k) subsets, --lock one;
+    /// The work is exponential in the number of inputs n: all the lock subsets are 2^n sampled
+    /// motions (64 for 6 inputs, 4096 for 12, 65536 for 16). One subset costs about 0.8 ms of
+    /// CPU (3-UPS) to 4 ms (6-UPS) with the default 3 samples, in proportion to --samples; the
+    /// subsets share the cores. --max-locks N samples Σ_{k≤N} C(n,k) subsets, --lock one;
     /// more than --max-subsets are refused.
     #[command(
         after_help = "Examples:\n  kinsyn modes mechanisms/3-ups.json\n  kinsyn modes mechanisms/3-ups.json --lock R1.1,R2.1,R3.1\n  kinsyn modes mechanisms/6-ups.json --max-locks 2 --pose 0.05,0,1.1,0,5,10\n  kinsyn modes mechanisms/6-ups.json --json > modes.json"
@@ -103,7 +103,8 @@ enum Command {
         /// ('-' for none).
         #[arg(long, value_name = "SET", allow_hyphen_values = true)]
         lock: Option<String>,
-        /// Refuse more lock subsets than this (each is a sampled motion of about 1–5 ms).
+        /// Refuse more lock subsets than this (each is a sampled motion of about 1–5 ms of CPU;
+        /// 4096 take about 16–20 s on a 6-UPS).
         #[arg(long, value_name = "COUNT", default_value_t = manipulator::DEFAULT_MAX_SUBSETS,
               value_parser = clap::value_parser!(u32).range(1..=i64::from(manipulator::MAX_SUBSETS_CEILING)))]
         max_subsets: u32,
