@@ -49,6 +49,42 @@ fn assert_input_error(o: &Output, what: &str, needles: &[&str]) {
     }
 }
 
+/// One section of `modes`' compact text: `dof K: N subsets, P patterns` and its pattern lines,
+/// each split into words.
+struct DofSection {
+    dof: usize,
+    subsets: usize,
+    lines: Vec<String>,
+}
+
+/// The `dof K` sections of `modes`' text output, from the most dof to none.
+fn dof_sections(out: &str) -> Vec<DofSection> {
+    let mut sections: Vec<DofSection> = Vec::new();
+    let mut inside = false;
+    for line in out.lines() {
+        if let Some(rest) = line.strip_prefix("dof ") {
+            let (dof, rest) = rest.split_once(": ").expect("dof K: N subsets");
+            let subsets = rest.split_whitespace().next().unwrap();
+            sections.push(DofSection {
+                dof: dof.parse().unwrap(),
+                subsets: subsets.parse().unwrap(),
+                lines: Vec::new(),
+            });
+            inside = true;
+        } else if inside && line.starts_with("  ") {
+            sections.last_mut().unwrap().lines.push(line.trim().into());
+        } else {
+            inside = false;
+        }
+    }
+    sections
+}
+
+/// Words of a line, for comparisons that ignore the column padding.
+fn words(line: &str) -> Vec<&str> {
+    line.split_whitespace().collect()
+}
+
 #[test]
 fn modes_of_the_three_ups_list_64_subsets_and_the_three_rps() {
     let out = succeed(&["modes", "mechanisms/3-ups.json"]);
@@ -56,32 +92,47 @@ fn modes_of_the_three_ups_list_64_subsets_and_the_three_rps() {
         out.starts_with("3-UPS: 6 inputs (R1.1 P1.3 R2.1 P2.3 R3.1 P3.3), 64 lock subsets;"),
         "{out}"
     );
-    // The table: a header, then one line per subset, ending at the first blank line.
-    let table: Vec<&str> = out
-        .lines()
-        .skip_while(|l| !l.starts_with("locked"))
-        .skip(1)
-        .take_while(|l| !l.is_empty())
-        .collect();
-    assert_eq!(table.len(), 64, "{out}");
+    // The patterns by dof account for every one of the 64 subsets: near the reference each
+    // locked input removes one dof (the legs are not singular there), so dof 6 − k is reached by
+    // the C(6, k) subsets of k locks.
+    let sections = dof_sections(&out);
+    assert_eq!(
+        sections.iter().map(|s| s.dof).collect::<Vec<_>>(),
+        [6, 5, 4, 3, 2, 1, 0],
+        "{out}"
+    );
+    let binomial = [1, 6, 15, 20, 15, 6, 1];
+    for s in &sections {
+        assert_eq!(s.subsets, binomial[6 - s.dof], "dof {}: {out}", s.dof);
+    }
     // Paper 000 §5–5.2: holding α̇ = 0 in every leg (the U's first revolute, R_i.1) turns the
     // 3-UPS into the 3-RPS, whose platform keeps three dof (§5, eqs. 20–22). Those three dof are
     // the 3-RPS's known 1T2R motion (one translation, two rotations, with parasitic motion of the
-    // other three coordinates), not one of the 12 displacement groups.
-    let rps: Vec<Vec<&str>> = table
-        .iter()
-        .map(|l| l.split_whitespace().collect::<Vec<_>>())
-        .filter(|t| t.len() >= 5 && t[..3] == ["R1.1", "R2.1", "R3.1"] && t[3] == "3")
-        .collect();
-    assert_eq!(rps.len(), 1, "{out}");
-    assert_eq!(rps[0][3..], ["3", "1T2R"], "{out}");
-    // Nothing locked: the full 6 dof, the displacement group D; everything locked: E.
+    // other three coordinates), not one of the 12 displacement groups; no other subset gives it.
+    let dof3 = &sections[3];
     assert!(
-        table[0].split_whitespace().collect::<Vec<_>>() == ["-", "6", "D", "group"],
-        "{}",
-        table[0]
+        dof3.lines
+            .iter()
+            .any(|l| words(l) == ["1T2R", "1", "subset", "lock", "R1.1", "R2.1", "R3.1"]),
+        "{out}"
     );
-    assert!(table[63].ends_with(" 0  E  group"), "{}", table[63]);
+    // Nothing locked: the full 6 dof, the displacement group D; everything locked: E.
+    assert_eq!(
+        sections[0]
+            .lines
+            .iter()
+            .map(|l| words(l))
+            .collect::<Vec<_>>(),
+        [["D", "group", "1", "subset", "lock", "-"]],
+        "{out}"
+    );
+    assert_eq!(
+        words(&sections[6].lines[0]),
+        [
+            "E", "group", "1", "subset", "lock", "R1.1", "P1.3", "R2.1", "P2.3", "R3.1", "P3.3"
+        ],
+        "{out}"
+    );
     assert!(
         out.lines()
             .any(|l| l.trim() == "1T2R     lock R1.1 R2.1 R3.1"),
@@ -692,10 +743,16 @@ fn modes_print_the_parameters_of_the_groups() {
     // G2 = (−0.25, 0.433, 1) and G3 = (−0.25, −0.433, 1), along y; its point nearest the origin
     // is (−0.25, 0, 1). The spherical 3-RRR's axes all pass through (0, 0, 0.5) (its source).
     let out = succeed(&["modes", "mechanisms/3-ups.json"]);
+    let dof1 = dof_sections(&out).into_iter().find(|s| s.dof == 1).unwrap();
+    assert!(
+        dof1.lines.iter().any(|l| l
+            == "R(y)     group     1 subset   lock R1.1 R2.1 P2.3 R3.1 P3.3 (axis through [-0.25, 0, 1] m)"),
+        "{out}"
+    );
     assert!(
         out.lines()
-            .any(|l| l.starts_with("R1.1 R2.1 P2.3 R3.1 P3.3 ")
-                && l.ends_with("R(y)  group, axis through [-0.25, 0, 1] m")),
+            .any(|l| l.trim()
+                == "R(y)     lock R1.1 R2.1 P2.3 R3.1 P3.3 (axis through [-0.25, 0, 1] m)"),
         "{out}"
     );
     let out = succeed(&["modes", "mechanisms/3-rrr-spherical.json"]);
@@ -704,4 +761,342 @@ fn modes_print_the_parameters_of_the_groups() {
             .any(|l| l.trim() == "S        lock - (centre [0, 0, 0.5] m)"),
         "{out}"
     );
+}
+
+// ---- Issue 9: `kinsyn modes` for analysts (--lock, --max-locks, --pose, limits, compact text) ----
+
+/// `modes ARGS --json` as a JSON value (asserting success).
+fn modes_json(args: &[&str]) -> Value {
+    let mut all = vec!["modes"];
+    all.extend_from_slice(args);
+    all.push("--json");
+    serde_json::from_str(&succeed(&all)).expect("modes --json is JSON")
+}
+
+/// The value of a `key: value` line of `modes --lock`'s detail.
+fn detail<'a>(out: &'a str, key: &str) -> &'a str {
+    out.lines()
+        .find_map(|l| l.strip_prefix(&format!("{key}: ")))
+        .unwrap_or_else(|| panic!("no '{key}:' line in {out}"))
+}
+
+#[test]
+fn modes_lock_of_the_three_alphas_is_the_three_rps_in_detail() {
+    // Paper 000 §5.2: locking α in every leg of the 3-UPS gives the 3-RPS, three dof, the
+    // non-group 1T2R (as modes_of_the_three_ups_list_64_subsets_and_the_three_rps and
+    // tests/manipulator.rs locking_every_alpha_gives_three_dof_1t2r_and_the_constraints_of_eq_22
+    // find in the full run).
+    let out = succeed(&["modes", "mechanisms/3-ups.json", "--lock", "R1.1,R2.1,R3.1"]);
+    assert!(
+        out.starts_with(
+            "3-UPS: 6 inputs (R1.1 P1.3 R2.1 P2.3 R3.1 P3.3), 1 lock subset (R1.1 R2.1 R3.1);"
+        ),
+        "{out}"
+    );
+    assert_eq!(detail(&out, "locked"), "R1.1 R2.1 R3.1");
+    assert_eq!(detail(&out, "dof"), "3");
+    assert_eq!(detail(&out, "pattern"), "1T2R (not a displacement group)");
+    // The evidence behind it: a clear rank gap, and samples far enough apart to tell a group.
+    assert!(
+        detail(&out, "rank gap").starts_with("smallest kept singular value "),
+        "{out}"
+    );
+    let separation: f64 = detail(&out, "min separation")
+        .split_whitespace()
+        .next()
+        .unwrap()
+        .parse()
+        .unwrap();
+    assert!(separation >= 1e-3, "{out}");
+    // The same subset with the same seed in the full run: the same mode, field by field.
+    let one = modes_json(&["mechanisms/3-ups.json", "--lock", "R1.1,R2.1,R3.1"]);
+    assert_eq!(one["lock"], "R1.1 R2.1 R3.1");
+    assert_eq!(one["max_locks"], Value::Null);
+    assert_eq!(one["modes"].as_array().unwrap().len(), 1);
+    let all = modes_json(&["mechanisms/3-ups.json"]);
+    let same = all["modes"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|m| m["lock_text"] == "R1.1 R2.1 R3.1")
+        .unwrap();
+    assert_eq!(&one["modes"][0], same);
+    // A group in detail: with legs 2 and 3 locked and leg 1's α, R(y) about the line through
+    // the S centres of legs 2 and 3 (modes_print_the_parameters_of_the_groups).
+    let out = succeed(&[
+        "modes",
+        "mechanisms/3-ups.json",
+        "--lock",
+        "R1.1,R2.1,P2.3,R3.1,P3.3",
+    ]);
+    assert_eq!(detail(&out, "dof"), "1");
+    assert_eq!(
+        detail(&out, "pattern"),
+        "R(y) (one of the 12 displacement groups; axis through [-0.25, 0, 1] m)"
+    );
+}
+
+#[test]
+fn modes_max_locks_1_agrees_with_the_full_run_subset_by_subset() {
+    // Σ_{k≤1} C(n, k) = 1 + n subsets; each subset's walks are seeded from the subset alone, so
+    // the short run must give exactly the full run's mode for each of them.
+    for (file, n) in [("mechanisms/3-ups.json", 6), ("mechanisms/3-prrr.json", 3)] {
+        let short = modes_json(&[file, "--max-locks", "1"]);
+        assert_eq!(short["max_locks"], 1, "{file}");
+        let modes = short["modes"].as_array().unwrap();
+        assert_eq!(modes.len(), 1 + n, "{file}");
+        let full = modes_json(&[file]);
+        let full_modes = full["modes"].as_array().unwrap();
+        assert_eq!(full_modes.len(), 1 << n, "{file}");
+        for m in modes {
+            assert!(m["locked"].as_array().unwrap().len() <= 1, "{file}: {m}");
+            let same = full_modes
+                .iter()
+                .find(|f| f["lock_text"] == m["lock_text"])
+                .unwrap();
+            assert_eq!(m, same, "{file}");
+        }
+        // The text says how many subsets and how they were chosen.
+        let out = succeed(&["modes", file, "--max-locks", "1"]);
+        assert!(
+            out.lines()
+                .next()
+                .unwrap()
+                .contains(&format!(", {} lock subsets with at most 1 locked;", 1 + n)),
+            "{out}"
+        );
+    }
+}
+
+#[test]
+fn modes_at_a_displaced_pose_hold_the_locks_there() {
+    // The 6-UPS at the displaced pose of analyze_at_a_pose_and_with_locks: the platform frame
+    // at (0.1, 0.05, 1.1) m turned by (5°, −3°, 10°). Locking all six legs there leaves nothing
+    // (dof 0, E); locking none leaves the whole of D (dof 6): a Gough–Stewart platform away
+    // from singularities.
+    let pose = "0.1,0.05,1.1,5,-3,10";
+    let file = "mechanisms/6-ups.json";
+    let all = modes_json(&[
+        file,
+        "--pose",
+        pose,
+        "--lock",
+        "P1.3,P2.3,P3.3,P4.3,P5.3,P6.3",
+    ]);
+    assert_eq!(all["pose"], pose);
+    for (got, want) in all["start_position"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .zip([0.1, 0.05, 1.1])
+    {
+        assert!((got.as_f64().unwrap() - want).abs() < 1e-9, "{all}");
+    }
+    for (got, want) in all["start_rotation_vector_rad"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .zip([5.0_f64, -3.0, 10.0])
+    {
+        assert!(
+            (got.as_f64().unwrap() - want.to_radians()).abs() < 1e-9,
+            "{all}"
+        );
+    }
+    assert_eq!(all["modes"][0]["dof"], 0);
+    assert_eq!(all["modes"][0]["pattern"], "E");
+    let none = modes_json(&[file, "--pose", pose, "--lock", "-"]);
+    assert_eq!(none["modes"][0]["dof"], 6);
+    assert_eq!(none["modes"][0]["pattern"], "D");
+    // The same start configuration in both runs (assembled with every input free).
+    assert_eq!(all["start_joint_values"], none["start_joint_values"]);
+
+    // The 3-UPS raised to z = 1.1 m without turning: every leg stays in its radial plane, so the
+    // α (R_i.1) keep their reference values and `analyze --pose --lock`, which holds the locked
+    // inputs at their reference values, reaches the same configuration. Its platform dof (six
+    // minus the rank of the constraint wrenches) must be the dof of the motion `modes` samples
+    // with the locks held there (loop closure: a second method).
+    let pose = "0,0,1.1,0,0,0";
+    let file = "mechanisms/3-ups.json";
+    for (lock, pattern) in [
+        ("-", "D"),
+        ("R1.1", "2T3R"),
+        ("R1.1,R2.1", "1T3R"),
+        ("R1.1,R2.1,R3.1", "1T2R"),
+    ] {
+        let modes = modes_json(&[file, "--pose", pose, "--lock", lock]);
+        let analysis: Value = serde_json::from_str(&succeed(&[
+            "analyze", file, "--pose", pose, "--lock", lock, "--json",
+        ]))
+        .unwrap();
+        let q_modes = modes["start_joint_values"].as_array().unwrap();
+        let q_analyze = analysis["joint_values"].as_array().unwrap();
+        assert_eq!(q_modes.len(), q_analyze.len());
+        for (a, b) in q_modes.iter().zip(q_analyze) {
+            assert!(
+                (a.as_f64().unwrap() - b.as_f64().unwrap()).abs() < 1e-9,
+                "{lock}: {q_modes:?} vs {q_analyze:?}"
+            );
+        }
+        let mode = &modes["modes"][0];
+        assert_eq!(mode["dof"], analysis["platform_dof"], "{lock}");
+        assert_eq!(mode["pattern"], pattern, "{lock}");
+    }
+}
+
+#[test]
+fn modes_limits_are_one_line_and_exit_2() {
+    // 64 subsets of the 3-UPS against a limit of 10: refused before any sampling, naming the
+    // ways out (--max-locks 1 gives 1 + 6 = 7 subsets, within 10).
+    let o = kinsyn(&["modes", "mechanisms/3-ups.json", "--max-subsets", "10"]);
+    assert_input_error(
+        &o,
+        "more subsets than --max-subsets",
+        &[
+            "mechanisms/3-ups.json: 6 inputs give 64 lock subsets (all 2^6), more than --max-subsets 10",
+            "--max-locks 1 (7 subsets)",
+            "--lock SET",
+        ],
+    );
+    let o = kinsyn(&[
+        "modes",
+        "mechanisms/3-ups.json",
+        "--max-locks",
+        "2",
+        "--max-subsets",
+        "21",
+    ]);
+    assert_input_error(
+        &o,
+        "--max-locks over the limit",
+        &["22 lock subsets with at most 2 locked", "--max-locks 1"],
+    );
+    // Eighteen inputs (every joint of a UPS leg but the S, six legs): 2^18 = 262144 subsets
+    // against the default 4096; Σ_{k≤4} C(18, k) = 1 + 18 + 153 + 816 + 3060 = 4048 fit.
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("18.json");
+    let file = file.to_str().unwrap();
+    succeed(&[
+        "build",
+        "--legs",
+        "6",
+        "--chain",
+        "U(!,!)P!S",
+        "--twist",
+        "20",
+        "--alternate",
+        "-o",
+        file,
+    ]);
+    let o = kinsyn(&["modes", file]);
+    assert_input_error(
+        &o,
+        "2^18 subsets",
+        &[
+            "18 inputs give 262144 lock subsets (all 2^18), more than --max-subsets 4096",
+            "--max-locks 4 (4048 subsets)",
+        ],
+    );
+    for (args, needles) in [
+        (vec!["--samples", "65"], vec!["'65'", "--samples", "2..=64"]),
+        (vec!["--max-subsets", "65537"], vec!["'65537'", "1..=65536"]),
+        (vec!["--max-subsets", "0"], vec!["'0'", "--max-subsets"]),
+        (
+            vec!["--lock", "R1.1", "--max-locks", "1"],
+            vec!["--lock", "cannot be used with", "--max-locks"],
+        ),
+        (
+            vec!["--lock", "P9.9"],
+            vec!["--lock \"P9.9\"", "\"P9.9\" is not an actuator of 3-UPS"],
+        ),
+        (
+            vec!["--pose", "0,0,1"],
+            vec!["--pose \"0,0,1\"", "six numbers"],
+        ),
+    ] {
+        let mut all = vec!["modes", "mechanisms/3-ups.json"];
+        all.extend(args.iter().copied());
+        assert_input_error(&kinsyn(&all), &format!("{args:?}"), &needles);
+    }
+}
+
+#[test]
+fn modes_text_is_bounded_whatever_the_number_of_subsets() {
+    // The compact text has a header (2 lines), at most seven dof sections (dof 6 to 0: a blank,
+    // a heading, at most 12 pattern lines and one "… more" line), one line for the subsets that
+    // could not be sampled (and its blank), and the summary (blank, heading, at most 12 + 1
+    // group lines, the non-group heading and at most 12 + 1 lines): at most
+    // 2 + 7 · 15 + 2 + 2 + 13 + 1 + 13 = 138 lines, however many subsets. Each pattern line shows
+    // at most six lock sets and says how many more --json lists.
+    const BOUND: usize = 138;
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("18.json");
+    let file = file.to_str().unwrap();
+    succeed(&[
+        "build",
+        "--legs",
+        "6",
+        "--chain",
+        "U(!,!)P!S",
+        "--twist",
+        "20",
+        "--alternate",
+        "-o",
+        file,
+    ]);
+    // 1 + 18 + 153 = 172 subsets.
+    let out = succeed(&["modes", file, "--max-locks", "2"]);
+    assert!(
+        out.contains(", 172 lock subsets with at most 2 locked;"),
+        "{out}"
+    );
+    let lines = out.lines().count();
+    assert!(lines <= BOUND, "{lines} lines: {out}");
+    let v = modes_json(&[file, "--max-locks", "2"]);
+    assert_eq!(v["modes"].as_array().unwrap().len(), 172);
+    // Every pattern line against --json: its subset count, and its lock sets shown or counted.
+    let sections = dof_sections(&out);
+    let patterns: Vec<&Value> = v["groups"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .chain(v["non_groups"].as_array().unwrap())
+        .collect();
+    for s in &sections {
+        for line in &s.lines {
+            if line.starts_with('…') {
+                continue;
+            }
+            let w = words(line);
+            let shown: Vec<&str> = line
+                .split(" lock ")
+                .nth(1)
+                .unwrap()
+                .split(" … ")
+                .next()
+                .unwrap()
+                .split(" (")
+                .next()
+                .unwrap()
+                .split(" | ")
+                .collect();
+            let p = patterns
+                .iter()
+                .find(|p| {
+                    p["pattern"] == w[0] && p["dof"] == s.dof && p["lock_sets"][0] == shown[0]
+                })
+                .unwrap_or_else(|| panic!("{line}"));
+            let sets = p["lock_sets"].as_array().unwrap().len();
+            assert_eq!(shown.len(), sets.min(6), "{line}");
+            if sets > 6 {
+                assert!(
+                    line.contains(&format!(" … and {} more (see --json)", sets - 6)),
+                    "{line}"
+                );
+            }
+            assert!(w.contains(&p["subsets"].to_string().as_str()), "{line}");
+        }
+    }
+    // The sections account for every subset.
+    assert_eq!(sections.iter().map(|s| s.subsets).sum::<usize>(), 172);
 }

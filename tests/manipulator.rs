@@ -1046,3 +1046,98 @@ fn the_platform_twists_from_the_wrenches_are_those_of_the_loop_closure() {
         }
     }
 }
+
+// ---- Issue 9: modes from any start, of chosen lock subsets, with progress ----
+
+#[test]
+fn lock_subsets_are_the_binomial_sums_in_order() {
+    // Σ_{k≤K} C(6, k) for the six inputs of the 3-UPS: 1, 7, 22, 42, 57, 63, 64; K ≥ n is all
+    // 2^6 subsets.
+    let m = load("3-ups");
+    let sums = [1, 7, 22, 42, 57, 63, 64];
+    for (k, &sum) in sums.iter().enumerate() {
+        assert_eq!(m.lock_subset_count(k), sum, "k = {k}");
+        let subsets = m.lock_subsets(k);
+        assert_eq!(subsets.len() as u128, sum, "k = {k}");
+        // By number of locks, then lexicographically; each sorted, all distinct.
+        for pair in subsets.windows(2) {
+            assert!(
+                (pair[0].len(), &pair[0]) < (pair[1].len(), &pair[1]),
+                "{pair:?}"
+            );
+        }
+        assert!(subsets.iter().all(|s| s.windows(2).all(|w| w[0] < w[1])));
+    }
+    assert_eq!(m.lock_subset_count(100), 64);
+}
+
+#[test]
+fn modes_from_the_reference_agree_with_modes_subset_by_subset() {
+    // The subsets of at most one lock, sampled on their own, give exactly the modes of the full
+    // run (each subset's seed comes from the subset alone), and progress is told once per subset.
+    use std::sync::atomic::{AtomicUsize, Ordering};
+    let m = load("3-ups");
+    let settings = SampleSettings::default();
+    let full = m.modes(&settings).unwrap();
+    let finished = AtomicUsize::new(0);
+    let short = m.modes_from(&m.reference(), &m.lock_subsets(1), &settings, &|| {
+        finished.fetch_add(1, Ordering::Relaxed);
+    });
+    assert_eq!(finished.into_inner(), 7);
+    assert_eq!(short.modes.len(), 7);
+    for mode in &short.modes {
+        let same = full.modes.iter().find(|f| f.locked == mode.locked).unwrap();
+        assert_eq!(mode, same);
+    }
+    // The patterns among them: D by no lock, 2T3R by any one lock (6 subsets, all minimal).
+    assert_eq!(short.groups.len(), 1);
+    assert_eq!(
+        (short.groups[0].pattern.as_str(), short.groups[0].subsets),
+        ("D", 1)
+    );
+    assert_eq!(short.non_groups.len(), 1);
+    let one = &short.non_groups[0];
+    assert_eq!((one.pattern.as_str(), one.dof, one.subsets), ("2T3R", 5, 6));
+    assert_eq!(one.lock_sets.len(), 6);
+}
+
+#[test]
+fn modes_from_a_displaced_pose_hold_the_locks_at_their_values_there() {
+    // The 6-UPS with its platform frame at (0.1, 0.05, 1.1) m, turned by (5°, −3°, 10°): every
+    // slider has another length than at the reference. Locking all six there leaves no motion
+    // (E), locking none the whole of D, locking one a 5-dof motion; and the sampled
+    // configurations keep each locked slider at its value at that pose, not at the reference.
+    let m = load("6-ups");
+    let position = Vector3::new(0.1, 0.05, 1.1);
+    let orientation = Vector3::new(5.0_f64, -3.0, 10.0).map(f64::to_radians);
+    let start = m.assemble_at(position, orientation, &[]).unwrap();
+    let all: Vec<usize> = (0..6).collect();
+    let settings = SampleSettings::default();
+    let modes = m.modes_from(&start, &[vec![], vec![0], all.clone()], &settings, &|| {});
+    let summary: Vec<(usize, &str)> = modes
+        .modes
+        .iter()
+        .map(|md| (md.dof, md.pattern.as_str()))
+        .collect();
+    assert_eq!(summary, [(6, "D"), (5, "2T3R"), (0, "E")]);
+    for (got, want) in modes.start_position.iter().zip(position.iter()) {
+        assert!((got - want).abs() < 1e-9, "{:?}", modes.start_position);
+    }
+    for (got, want) in modes
+        .start_rotation_vector_rad
+        .iter()
+        .zip(orientation.iter())
+    {
+        assert!((got - want).abs() < 1e-9);
+    }
+    let slider = m.actuators()[0].joint;
+    assert!((start[slider] - m.reference()[slider]).abs() > 1e-3);
+    let samples = m
+        .mechanism()
+        .sample_motion(m.platform(), &start, &m.lock_mask(&[0]), &settings)
+        .unwrap()
+        .samples;
+    for s in &samples {
+        assert!((s.q[slider] - start[slider]).abs() < 1e-12);
+    }
+}

@@ -78,19 +78,47 @@ enum Command {
         #[arg(long)]
         json: bool,
     },
-    /// Multioperation capacity: the platform's dof and motion pattern for every subset of
-    /// locked inputs, then the displacement groups reached with their minimal lock sets.
+    /// Multioperation capacity: the platform's dof and motion pattern for subsets of locked
+    /// inputs, then the displacement groups reached with their minimal lock sets.
     ///
-    /// Each locked input is held at its reference value; the platform's finite motion is
-    /// sampled by loop closure (Newton steps along random compatible joint rates, seeded) and
-    /// classified among the 12 displacement groups, or as nTmR when it is not a group (paper
-    /// 000 §1, §5). Inputs are labelled by kind, leg and joint: P1.3 is leg 1's third joint.
+    /// Each locked input is held at its value at the start configuration (the file's reference,
+    /// or --pose); the platform's finite motion is sampled from there by loop closure (Newton
+    /// steps along random compatible joint rates, seeded) and classified among the 12
+    /// displacement groups, or as nTmR when it is not a group (paper 000 §1, §5). Inputs are
+    /// labelled by kind, leg and joint: P1.3 is leg 1's third joint.
+    ///
+    /// The work is exponential in the number of inputs n: all the lock subsets are 2^n sampled
+    /// motions (64 for 6 inputs, 4096 for 12, 65536 for 16). One subset costs about 0.8 ms of
+    /// CPU (3-UPS) to 4 ms (6-UPS) with the default 3 samples, in proportion to --samples; the
+    /// subsets share the cores. --max-locks N samples Σ_{k≤N} C(n,k) subsets, --lock one;
+    /// more than --max-subsets are refused.
+    #[command(
+        after_help = "Examples:\n  kinsyn modes mechanisms/3-ups.json\n  kinsyn modes mechanisms/3-ups.json --lock R1.1,R2.1,R3.1\n  kinsyn modes mechanisms/6-ups.json --max-locks 2 --pose 0.05,0,1.1,0,5,10\n  kinsyn modes mechanisms/6-ups.json --json > modes.json"
+    )]
     Modes {
         /// A manipulator file (docs/mechanism-format.md), e.g. mechanisms/3-ups.json.
         file: PathBuf,
+        /// The start configuration: x,y,z,rx,ry,rz as for analyze --pose (the platform frame's
+        /// origin and rotation vector, angles in the file's unit), assembled with every input
+        /// free; the locked inputs are held at their values there. Default: the reference.
+        #[arg(long, allow_hyphen_values = true)]
+        pose: Option<String>,
+        /// Only the subsets with at most N inputs locked: Σ_{k≤N} C(n,k) of them.
+        #[arg(long, value_name = "N", conflicts_with = "lock")]
+        max_locks: Option<usize>,
+        /// Only this subset, printed in detail: labels as in analyze, e.g. 'R1.1,R2.1,R3.1'
+        /// ('-' for none).
+        #[arg(long, value_name = "SET", allow_hyphen_values = true)]
+        lock: Option<String>,
+        /// Refuse more lock subsets than this (each is a sampled motion of about 1–5 ms of CPU;
+        /// 4096 take about 16–20 s on a 6-UPS).
+        #[arg(long, value_name = "COUNT", default_value_t = manipulator::DEFAULT_MAX_SUBSETS,
+              value_parser = clap::value_parser!(u32).range(1..=i64::from(manipulator::MAX_SUBSETS_CEILING)))]
+        max_subsets: u32,
         #[command(flatten)]
         sampling: Sampling,
-        /// Print JSON instead of text.
+        /// Print JSON instead of text: every subset, its classification and the patterns with
+        /// all their minimal lock sets.
         #[arg(long)]
         json: bool,
     },
@@ -205,15 +233,20 @@ impl From<BuildArgs> for kinsyn::manipulator::build::BuildSpec {
     }
 }
 
+/// The most `--samples` per motion: 64 walks, about 20 times the default cost of a subset,
+/// far more evidence than a group claim needs (two samples 1e-3 apart, docs/verification.md).
+const MAX_SAMPLES: i64 = 64;
+
 /// How finite motion is sampled (seeded, reproducible).
 #[derive(Debug, Args)]
 struct Sampling {
     /// Seed of the random walks (continuous random step lengths and directions).
     #[arg(long, default_value_t = 2026)]
     seed: u64,
-    /// Configurations sampled per motion (at least 2: a group is recognised by its twist space
-    /// staying the same at samples at least 1e-3 apart).
-    #[arg(long, default_value_t = 3, value_parser = clap::value_parser!(u16).range(2..))]
+    /// Configurations sampled per motion, 2 to 64: a group is recognised by its twist space
+    /// staying the same at samples at least 1e-3 apart; each sample is a random walk, so a
+    /// subset's cost grows in proportion.
+    #[arg(long, default_value_t = 3, value_parser = clap::value_parser!(u16).range(2..=MAX_SAMPLES))]
     samples: u16,
 }
 
@@ -433,9 +466,27 @@ fn execute(command: Command) -> Result<String, CliError> {
         } => query(&pattern, max_locks, family.as_deref(), as_json, &reading),
         Command::Modes {
             file,
+            pose,
+            max_locks,
+            lock,
+            max_subsets,
             sampling,
             json: as_json,
-        } => manipulator::modes(&file, &sampling.settings(), as_json),
+        } => {
+            let selection = match (lock, max_locks) {
+                (Some(set), _) => manipulator::Selection::Lock(set),
+                (None, Some(k)) => manipulator::Selection::MaxLocks(k),
+                (None, None) => manipulator::Selection::All,
+            };
+            manipulator::modes(
+                &file,
+                pose.as_deref(),
+                &selection,
+                max_subsets,
+                &sampling.settings(),
+                as_json,
+            )
+        }
         Command::Analyze {
             file,
             pose,

@@ -1,14 +1,22 @@
 //! Multioperation capacity (paper 000 §1, §5): the motion patterns a manipulator's platform
 //! produces when subsets of its inputs are locked.
 //!
-//! For every subset of the inputs, the locked joints are held at their reference values and the
-//! platform's finite motion is sampled by loop closure and classified
+//! For every subset of the inputs asked for, the locked joints are held at their values at a
+//! start configuration (the reference, or any assembled configuration) and the platform's finite
+//! motion is sampled from there by loop closure and classified
 //! ([`crate::mechanism::Mechanism::motion_pattern`]). The distinct displacement groups reached
 //! are the paper's measure of a manipulator's practical effectiveness.
+//!
+//! The work is exponential in the number of inputs n: all subsets are 2^n, those of at most k
+//! locks Σ_{j≤k} C(n, j) ([`Manipulator::lock_subset_count`]). Each subset is one sampled motion
+//! (three random walks of three Newton-corrected steps by default), so callers choose the subsets
+//! ([`Manipulator::lock_subsets`]) and are told of each one finished (the `progress` callback of
+//! [`Manipulator::modes_from`]).
 
 use super::Manipulator;
-use crate::mechanism::SampleSettings;
+use crate::mechanism::{SampleSettings, rotation_log};
 use crate::motion::{Classification, Group, GroupKind, Pattern};
+use itertools::Itertools;
 use nalgebra::Vector3;
 use rayon::prelude::*;
 use serde::Serialize;
@@ -41,7 +49,8 @@ pub struct Mode {
     pub error: Option<String>,
 }
 
-/// A group pattern reached, with the minimal lock sets that reach it.
+/// A pattern reached (a displacement subgroup with its parameters, or an `nTmR` pattern), with
+/// the minimal lock sets that reach it.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct PatternModes {
     /// The pattern's text form.
@@ -49,11 +58,15 @@ pub struct PatternModes {
     /// The group's parameters in words (see [`Mode::parameters`]).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub parameters: Option<String>,
+    /// The platform's degrees of freedom in this pattern.
+    pub dof: usize,
+    /// How many of the sampled lock subsets give it.
+    pub subsets: usize,
     /// The minimal lock sets (no proper subset gives the same pattern), as label lists.
     pub lock_sets: Vec<String>,
 }
 
-/// Every lock subset and the group patterns reached.
+/// The lock subsets sampled and the patterns reached.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Modes {
     /// The manipulator's name.
@@ -62,7 +75,14 @@ pub struct Modes {
     pub actuators: Vec<String>,
     /// How the motions were sampled (the seed included).
     pub settings: SampleSettings,
-    /// One mode per subset of the inputs, by number of locks then lexicographically.
+    /// The configuration the motions are sampled from (joint values, assembled); each subset's
+    /// locked inputs are held at their values there.
+    pub start_joint_values: Vec<f64>,
+    /// The platform frame's origin at the start configuration, in the file's length unit.
+    pub start_position: [f64; 3],
+    /// The platform frame's rotation vector at the start configuration, in radians.
+    pub start_rotation_vector_rad: [f64; 3],
+    /// One mode per lock subset sampled, by number of locks then lexicographically.
     pub modes: Vec<Mode>,
     /// The distinct displacement subgroups reached (a group with its direction or plane), with
     /// their minimal lock sets.
@@ -73,19 +93,64 @@ pub struct Modes {
     pub non_groups: Vec<PatternModes>,
 }
 
-/// The largest number of inputs whose lock subsets are all enumerated (2^16 subsets).
+/// The largest number of inputs whose lock subsets [`Manipulator::modes`] enumerates all of
+/// (2^16 subsets); [`Manipulator::modes_from`] takes any list of subsets.
 pub const MAX_INPUTS: usize = 16;
+
+/// The number of subsets of `n` inputs with at most `max_locks` locked, Σ_{k≤max_locks} C(n, k)
+/// (2^n when `max_locks ≥ n`), saturating at `u128::MAX`.
+#[must_use]
+pub fn lock_subset_count(n: usize, max_locks: usize) -> u128 {
+    let mut total: u128 = 0;
+    let mut binomial: u128 = 1; // C(n, k)
+    for k in 0..=max_locks.min(n) {
+        total = total.saturating_add(binomial);
+        // C(n, k + 1) = C(n, k) (n − k) / (k + 1); exact because C(n, k)(n − k) is a multiple
+        // of k + 1.
+        binomial = match binomial.checked_mul((n - k) as u128) {
+            Some(b) => b / (k as u128 + 1),
+            None => return u128::MAX,
+        };
+    }
+    total
+}
+
+/// Whether the sorted index set `a` is a subset of the sorted index set `b`.
+fn is_subset(a: &[usize], b: &[usize]) -> bool {
+    let mut rest = b.iter();
+    a.iter().all(|x| rest.any(|y| y == x))
+}
+
+/// The lock sets among `sets` (sorted by size) that contain no other one of them: the minimal
+/// ways to reach a pattern. Each set is compared only with the minimal ones found before it,
+/// since any set of `sets` inside it contains one of those.
+fn minimal_sets<'a>(sets: impl Iterator<Item = &'a Mode>) -> Vec<&'a Mode> {
+    let mut minimal: Vec<&Mode> = Vec::new();
+    for m in sets {
+        if !minimal.iter().any(|o| is_subset(&o.locked, &m.locked)) {
+            minimal.push(m);
+        }
+    }
+    minimal
+}
 
 impl Manipulator {
     /// The platform's motion with the `locked` inputs held, sampled from the reference
-    /// configuration.
+    /// configuration with the seed of `settings` as given.
     #[must_use]
     pub fn mode(&self, locked: &[usize], settings: &SampleSettings) -> Mode {
+        self.mode_from(&self.reference(), locked, settings)
+    }
+
+    /// The platform's motion with the `locked` inputs held at their values in the configuration
+    /// `start` (joint values; assembled first if it does not quite close), sampled from there.
+    #[must_use]
+    pub fn mode_from(&self, start: &[f64], locked: &[usize], settings: &SampleSettings) -> Mode {
         let mask = self.lock_mask(locked);
         let lock_text = self.lock_text(locked);
         match self
             .mechanism
-            .motion_pattern(self.platform, &self.reference(), &mask, settings)
+            .motion_pattern(self.platform, start, &mask, settings)
         {
             Ok(c) => Mode {
                 locked: locked.to_vec(),
@@ -189,9 +254,40 @@ impl Manipulator {
             .join(" ")
     }
 
-    /// The motion of every lock subset of the inputs, and the patterns reached (in parallel
-    /// over the subsets; each subset's walk has its own seed derived from `settings.seed`, so the
-    /// result does not depend on the thread count).
+    /// The number of lock subsets with at most `max_locks` of the inputs locked,
+    /// Σ_{k≤max_locks} C(n, k) for n inputs (2^n when `max_locks ≥ n`), saturating at
+    /// `u128::MAX`: the number of sampled motions [`Manipulator::modes_from`] costs.
+    #[must_use]
+    pub fn lock_subset_count(&self, max_locks: usize) -> u128 {
+        lock_subset_count(self.actuators.len(), max_locks)
+    }
+
+    /// The lock subsets with at most `max_locks` inputs locked (indices into the actuators), by
+    /// number of locks then lexicographically; as many as
+    /// [`Manipulator::lock_subset_count`] says, so check that first.
+    #[must_use]
+    pub fn lock_subsets(&self, max_locks: usize) -> Vec<Vec<usize>> {
+        let n = self.actuators.len();
+        (0..=max_locks.min(n))
+            .flat_map(|k| (0..n).combinations(k))
+            .collect()
+    }
+
+    /// The seed of one subset's walks: `settings.seed` mixed with the subset, so that a subset's
+    /// motion is the same whichever other subsets are sampled with it, and whatever the thread
+    /// count.
+    fn subset_settings(locked: &[usize], settings: &SampleSettings) -> SampleSettings {
+        let mask: u64 = locked
+            .iter()
+            .fold(0, |m, &a| m | 1u64.rotate_left(a as u32));
+        SampleSettings {
+            seed: settings.seed ^ mask.wrapping_mul(0x9e37_79b9_7f4a_7c15),
+            ..*settings
+        }
+    }
+
+    /// The motion of every lock subset of the inputs from the reference configuration, and the
+    /// patterns reached ([`Manipulator::modes_from`] with every subset).
     ///
     /// # Errors
     /// More than [`MAX_INPUTS`] inputs.
@@ -203,21 +299,64 @@ impl Manipulator {
                 self.name
             ));
         }
-        let mut subsets: Vec<Vec<usize>> = (0u32..(1 << n))
-            .map(|mask| (0..n).filter(|a| mask & (1 << a) != 0).collect())
+        Ok(self.modes_from(&self.reference(), &self.lock_subsets(n), settings, &|| {}))
+    }
+
+    /// The motion of each of the lock `subsets` (indices into the actuators), with the locked
+    /// inputs held at their values in the configuration `start` and the motion sampled from
+    /// there, and the patterns reached with their minimal lock sets among these subsets.
+    ///
+    /// The subsets are sampled in parallel (rayon); each has its own seed derived from
+    /// `settings.seed` and the subset, so a subset's mode does not depend on the other subsets
+    /// or the thread count. `progress` is called once per subset finished (from any thread):
+    /// the hook for a progress bar. The cost is one sampled motion per subset.
+    #[must_use]
+    pub fn modes_from(
+        &self,
+        start: &[f64],
+        subsets: &[Vec<usize>],
+        settings: &SampleSettings,
+        progress: &(dyn Fn() + Sync),
+    ) -> Modes {
+        let mut subsets: Vec<Vec<usize>> = subsets
+            .iter()
+            .map(|s| {
+                let mut s = s.clone();
+                s.sort_unstable();
+                s.dedup();
+                s
+            })
             .collect();
         subsets.sort_by(|a, b| a.len().cmp(&b.len()).then(a.cmp(b)));
+        subsets.dedup();
         let modes: Vec<Mode> = subsets
             .par_iter()
             .map(|locked| {
-                let mask: u64 = locked.iter().map(|a| 1u64 << a).sum();
-                let own = SampleSettings {
-                    seed: settings.seed ^ mask.wrapping_mul(0x9e37_79b9_7f4a_7c15),
-                    ..*settings
-                };
-                self.mode(locked, &own)
+                let mode = self.mode_from(start, locked, &Self::subset_settings(locked, settings));
+                progress();
+                mode
             })
             .collect();
+        let (groups, non_groups) = self.patterns_reached(&modes);
+        let (r, p) = self.platform_frame(start);
+        Modes {
+            manipulator: self.name.clone(),
+            group_kinds: group_kinds(&modes),
+            actuators: self.actuators.iter().map(super::Actuator::label).collect(),
+            settings: *settings,
+            start_joint_values: start.to_vec(),
+            start_position: p.into(),
+            start_rotation_vector_rad: rotation_log(&r).into(),
+            modes,
+            groups,
+            non_groups,
+        }
+    }
+
+    /// The distinct subgroups and the distinct non-group patterns among the sampled `modes`
+    /// (sorted by number of locks), each with how many subsets give it and its minimal lock
+    /// sets. Subsets whose motion could not be sampled are left out.
+    fn patterns_reached(&self, modes: &[Mode]) -> (Vec<PatternModes>, Vec<PatternModes>) {
         let mut by_pattern: BTreeMap<(bool, String), Vec<&Mode>> = BTreeMap::new();
         for m in modes.iter().filter(|m| m.error.is_none()) {
             by_pattern
@@ -228,22 +367,15 @@ impl Manipulator {
         let mut groups = Vec::new();
         let mut non_groups = Vec::new();
         for ((non_group, _), ms) in by_pattern {
-            let pattern = ms[0].pattern.clone();
-            let parameters = ms[0].parameters.clone();
-            let minimal: Vec<String> = ms
-                .iter()
-                .filter(|m| {
-                    !ms.iter().any(|o| {
-                        o.locked.len() < m.locked.len()
-                            && o.locked.iter().all(|a| m.locked.contains(a))
-                    })
-                })
-                .map(|m| m.lock_text.clone())
-                .collect();
             let entry = PatternModes {
-                pattern,
-                parameters,
-                lock_sets: minimal,
+                pattern: ms[0].pattern.clone(),
+                parameters: ms[0].parameters.clone(),
+                dof: ms[0].dof,
+                subsets: ms.len(),
+                lock_sets: minimal_sets(ms.iter().copied())
+                    .iter()
+                    .map(|m| m.lock_text.clone())
+                    .collect(),
             };
             if non_group {
                 non_groups.push(entry);
@@ -251,30 +383,22 @@ impl Manipulator {
                 groups.push(entry);
             }
         }
-        let mut group_kinds: Vec<String> = modes
-            .iter()
-            .filter_map(|m| match m.classification.as_ref().map(|c| c.pattern) {
-                Some(crate::motion::Pattern::Group(g)) => Some(g.kind.symbol().to_string()),
-                _ => None,
-            })
-            .collect();
-        group_kinds.sort_by_key(|k| {
-            crate::motion::GroupKind::ALL
-                .iter()
-                .position(|g| g.symbol() == k)
-                .unwrap_or(usize::MAX)
-        });
-        group_kinds.dedup();
-        Ok(Modes {
-            manipulator: self.name.clone(),
-            group_kinds,
-            actuators: self.actuators.iter().map(super::Actuator::label).collect(),
-            settings: *settings,
-            modes,
-            groups,
-            non_groups,
-        })
+        (groups, non_groups)
     }
+}
+
+/// The kinds of displacement group among `modes`, each once, in the order of the 12.
+fn group_kinds(modes: &[Mode]) -> Vec<String> {
+    let mut kinds: Vec<GroupKind> = modes
+        .iter()
+        .filter_map(|m| match m.classification.as_ref().map(|c| c.pattern) {
+            Some(Pattern::Group(g)) => Some(g.kind),
+            _ => None,
+        })
+        .collect();
+    kinds.sort_by_key(|k| GroupKind::ALL.iter().position(|g| g == k));
+    kinds.dedup();
+    kinds.iter().map(|k| k.symbol().to_string()).collect()
 }
 
 /// A length printed with six significant digits relative to the mechanism's scale: values below
