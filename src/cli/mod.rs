@@ -1,7 +1,10 @@
 //! Command-line interface: parses arguments, runs the library, prints results.
 //!
-//! Exit codes: 0 success, 2 bad input (arguments, chain strings, unknown ids or families),
-//! 1 anything else (I/O). Errors are one line on stderr, prefixed `kinsyn: error:`.
+//! Exit codes (docs/limits.md): 0 success (also `--help`, `--version`, and a reader that went
+//! away); 2 bad input (arguments, chain strings, patterns, poses, input values, files that are
+//! missing or not descriptions, faulty fields, limits); 1 an environment failure (an output that
+//! cannot be written). Errors are one line on stderr, prefixed `kinsyn: error:`, with echoed
+//! input escaped ([`terminal::one_line`]).
 
 mod manipulator;
 mod terminal;
