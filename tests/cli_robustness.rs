@@ -314,3 +314,88 @@ fn help_and_version_are_results() {
     assert_eq!(out.status.code(), Some(0));
     assert!(stdout(&out).contains("--inputs"), "{}", stdout(&out));
 }
+
+/// `analyze --inputs` (forward kinematics) on the 6-UPS: from a displaced start (`--from`), the
+/// reference's own leg lengths (all input values 0) bring the platform back to the file's
+/// reference pose; and the input values printed at a pose lead back to that pose from the
+/// reference (tests/position.rs checks them against the closed-form leg lengths).
+#[test]
+fn analyze_inputs_is_forward_kinematics() {
+    let json = |args: &[&str]| -> serde_json::Value {
+        let out = kinsyn(args);
+        assert!(out.status.success(), "{args:?}: {}", stderr(&out));
+        serde_json::from_str(&stdout(&out)).unwrap()
+    };
+    let zeros = "P1.3=0,P2.3=0,P3.3=0,P4.3=0,P5.3=0,P6.3=0";
+    let home = json(&[
+        "analyze",
+        "mechanisms/6-ups.json",
+        "--from",
+        "0.05,0,1.1,0,5,10",
+        "--inputs",
+        zeros,
+        "--json",
+    ]);
+    let p = &home["platform_position"];
+    for (k, expected) in [0.0, 0.0, 1.0].iter().enumerate() {
+        assert!((p[k].as_f64().unwrap() - expected).abs() < 1e-9, "{p}");
+    }
+    let displaced = json(&[
+        "analyze",
+        "mechanisms/6-ups.json",
+        "--pose",
+        "0.05,0,1.1,0,5,10",
+        "--json",
+    ]);
+    let inputs: Vec<String> = displaced["input_values"]
+        .as_object()
+        .unwrap()
+        .iter()
+        .map(|(label, v)| format!("{label}={:.15}", v.as_f64().unwrap()))
+        .collect();
+    let reached = json(&[
+        "analyze",
+        "mechanisms/6-ups.json",
+        "--inputs",
+        &inputs.join(","),
+        "--json",
+    ]);
+    for k in 0..3 {
+        let a = reached["platform_position"][k].as_f64().unwrap();
+        let b = displaced["platform_position"][k].as_f64().unwrap();
+        assert!((a - b).abs() < 1e-9, "{a} vs {b}");
+        let a = reached["platform_rotation_vector_rad"][k].as_f64().unwrap();
+        let b = displaced["platform_rotation_vector_rad"][k]
+            .as_f64()
+            .unwrap();
+        assert!((a - b).abs() < 1e-9, "{a} vs {b}");
+    }
+    assert!(reached["continuation_steps"].as_u64().unwrap() >= 1);
+}
+
+/// `analyze --pose z=…,rx=…,ry=…` on the 3-RPS solves its parasitic motion: the given
+/// coordinates are kept and the torsion is zero (tests/position.rs checks the leg planes).
+#[test]
+fn analyze_a_partial_pose_of_the_three_rps() {
+    let out = kinsyn(&[
+        "analyze",
+        "mechanisms/3-rps.json",
+        "--pose",
+        "z=1.1,rx=5,ry=-3",
+        "--json",
+    ]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    let v: serde_json::Value = serde_json::from_str(&stdout(&out)).unwrap();
+    let r = &v["platform_rotation_vector_rad"];
+    assert!((v["platform_position"][2].as_f64().unwrap() - 1.1).abs() < 1e-9);
+    assert!(
+        (r[0].as_f64().unwrap() - 5f64.to_radians()).abs() < 1e-9,
+        "{r}"
+    );
+    assert!(
+        (r[1].as_f64().unwrap() + 3f64.to_radians()).abs() < 1e-9,
+        "{r}"
+    );
+    assert!(r[2].as_f64().unwrap().abs() < 1e-9, "{r}");
+    assert_eq!(v["platform_dof"], 3);
+}
