@@ -59,9 +59,6 @@ pub struct Position {
     pub q: Vec<f64>,
     /// Continuation steps taken from the start.
     pub steps: usize,
-    /// The platform's degrees of freedom left by the request at the configuration reached (0
-    /// when the request determines the platform's pose).
-    pub undetermined: usize,
 }
 
 /// The smallest continuation step (as a fraction of the path) before the path is given up.
@@ -157,11 +154,7 @@ impl Manipulator {
                 if undetermined == 1 { "" } else { "s" },
             )));
         }
-        Ok(Position {
-            q,
-            steps,
-            undetermined,
-        })
+        Ok(Position { q, steps })
     }
 }
 
