@@ -363,7 +363,7 @@ fn bad_poses_locks_and_builds_are_one_line_and_exit_2() {
     assert_input_error(
         &o,
         "unreachable pose",
-        &["--pose \"0.3,0,1,0,0,0\"", "the pose does not assemble"],
+        &["--pose \"0.3,0,1,0,0,0\"", "no assembly reached"],
     );
     let o = kinsyn(&["analyze", "mechanisms/3-rps.json", "--pose", "0,0,1"]);
     assert_input_error(&o, "short pose", &["--pose \"0,0,1\"", "six numbers"]);

@@ -962,7 +962,7 @@ fn build_refuses_a_singular_leg_instead_of_claiming_turned_axes() {
     let e = build(&spec("CRR", "zzzz")).unwrap_err();
     assert_eq!(
         e,
-        "--chain 'CRR' --axes zzzz: leg 1 (CRR) is singular at the reference configuration: its 4 joint twists have rank 3 there, 4 at generic joint values; joints 2 and 4 dependent; turning its revolutes leaves these axis directions unchanged, so no file is written"
+        "--chain \"CRR\" --axes zzzz: leg 1 (CRR) is singular at the reference configuration: its 4 joint twists have rank 3 there, 4 at generic joint values; joints 2 and 4 dependent; turning its revolutes leaves these axis directions unchanged, so no file is written"
     );
     // Four parallel revolutes span at most ω_z and two translations: dependent everywhere.
     let e = build(&spec("RRRR", "zzzz")).unwrap_err();

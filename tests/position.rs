@@ -187,3 +187,41 @@ fn inputs_at_a_pose_are_the_closed_form_leg_length_changes() {
         assert!((q[a.joint] - expected).abs() < 1e-9, "leg {}", i + 1);
     }
 }
+
+/// A pose of the 3-RPS turned half a turn about the vertical exists (every leg turned over) but
+/// no path of poses from the reference reaches it: turning about z is not one of the 3-RPS's
+/// motions. It is reached by damped Newton steps from the start and flagged as not continuous
+/// with it; the sliders are then the closed-form leg-length changes of that pose.
+#[test]
+fn a_pose_off_the_start_path_is_reached_and_flagged() {
+    let (m, d) = load("3-rps");
+    let request = PositionRequest {
+        platform: Some(m.parse_pose("0,0,1,0,0,180").unwrap()),
+        ..PositionRequest::default()
+    };
+    let reached = m.solve_position(&m.reference(), &request).unwrap();
+    assert!(!reached.continuous);
+    let r = Rotation3::from_scaled_axis(Vector3::z() * std::f64::consts::PI);
+    let p = Vector3::new(0.0, 0.0, 1.0);
+    for i in 0..3 {
+        let a = &m.actuators()[m.actuator_named(&format!("P{}.2", i + 1)).unwrap()];
+        let expected = leg_length(&d, i, &r, &p)
+            - leg_length(
+                &d,
+                i,
+                &Rotation3::identity(),
+                &Vector3::from(d.platform.position),
+            );
+        assert!(
+            (reached.q[a.joint] - expected).abs() < 1e-9,
+            "leg {}",
+            i + 1
+        );
+    }
+    // Every pose of the earlier tests is reached by continuation.
+    let near = PositionRequest {
+        platform: Some(m.parse_pose("z=1.1,rx=5,ry=-3").unwrap()),
+        ..PositionRequest::default()
+    };
+    assert!(m.solve_position(&m.reference(), &near).unwrap().continuous);
+}

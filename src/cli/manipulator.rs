@@ -14,7 +14,7 @@ use std::io::Read as _;
 use std::path::Path;
 
 /// The largest manipulator file read, in bytes: the largest description within the limits of
-/// docs/limits.md (12 legs of 12 joints, written out with every optional field) is under
+/// docs/limits.md (12 legs of 6 joints, written out with every optional field) is under
 /// 64 KiB; anything much larger is not a description.
 pub const MAX_FILE_BYTES: u64 = 1 << 20;
 
@@ -417,8 +417,9 @@ fn capacity_text(modes: &Modes) -> String {
     let mut s = String::new();
     let _ = writeln!(
         s,
-        "\nmultioperation capacity: {} displacement subgroups reached, of {} of the 12 kinds ({}):",
+        "\nmultioperation capacity: {} displacement subgroup{} reached, of {} of the 12 kinds ({}):",
         modes.groups.len(),
+        if modes.groups.len() == 1 { "" } else { "s" },
         modes.group_kinds.len(),
         if modes.group_kinds.is_empty() {
             "none".to_string()
@@ -520,12 +521,17 @@ pub struct Placement<'a> {
     pub from: Option<&'a str>,
 }
 
+/// The start of `analyze` without `--from`.
+const START_AT_REFERENCE: &str = "the reference configuration";
+
 /// How the configuration analysed was reached, for the report.
 struct Reached {
     /// "the reference configuration" or "--from …".
     start: String,
     /// Continuation steps from the start (0 when nothing was asked).
     steps: usize,
+    /// Whether the configuration is the one continuous with the start.
+    continuous: bool,
 }
 
 /// `kinsyn analyze`.
@@ -548,7 +554,7 @@ pub fn analyze(
             configuration_at_pose(&m, "--from", text, &[])?,
             format!("--from {text}"),
         ),
-        None => (m.reference(), "the reference configuration".to_string()),
+        None => (m.reference(), START_AT_REFERENCE.to_string()),
     };
     let mut request = PositionRequest {
         held: locked.clone(),
@@ -558,10 +564,13 @@ pub fn analyze(
         request.inputs = m
             .parse_inputs(text)
             .map_err(|e| CliError::Input(format!("--inputs {text:?}: {e}")))?;
-        // Inputs not named keep their values at the start.
-        request.held.extend(
-            (0..m.actuators().len()).filter(|a| !request.inputs.iter().any(|&(b, _)| b == *a)),
-        );
+        // Without a pose, inputs not named keep their values at the start; with one, they
+        // are free, and the pose and the named inputs are met together.
+        if placement.pose.is_none() {
+            request.held.extend(
+                (0..m.actuators().len()).filter(|a| !request.inputs.iter().any(|&(b, _)| b == *a)),
+            );
+        }
     }
     if let Some(text) = placement.pose {
         request.platform = Some(
@@ -569,8 +578,8 @@ pub fn analyze(
                 .map_err(|e| CliError::Input(format!("--pose {text:?}: {e}")))?,
         );
     }
-    let (q, steps) = if request.inputs.is_empty() && request.platform.is_none() {
-        (start, 0)
+    let (q, steps, continuous) = if request.inputs.is_empty() && request.platform.is_none() {
+        (start, 0, true)
     } else {
         let asked: Vec<String> = [("--inputs", placement.inputs), ("--pose", placement.pose)]
             .iter()
@@ -579,11 +588,12 @@ pub fn analyze(
         let p = m
             .solve_position(&start, &request)
             .map_err(|e| CliError::Input(format!("{}: {e}", asked.join(" "))))?;
-        (p.q, p.steps)
+        (p.q, p.steps, p.continuous)
     };
     let reached = Reached {
         start: start_text,
         steps,
+        continuous,
     };
     let a = m
         .analyse(&q, &locked, settings)
@@ -645,6 +655,7 @@ fn analysis_json(
         "input_values": input_values(m, &a.q).into_iter().map(|(k, v)| (k, serde_json::json!(v))).collect::<serde_json::Map<String, serde_json::Value>>(),
         "reached_from": reached.start,
         "continuation_steps": reached.steps,
+        "continuous_with_start": reached.continuous,
         "mobility": a.mobility,
         "closure_rank": rank_json(&a.closure_rank, None),
         "platform_dof": a.platform_dof,
@@ -689,7 +700,13 @@ fn analysis_text(m: &Manipulator, a: &Analysis, reached: &Reached) -> String {
         clean(rv.z),
         m.lock_text(&a.locked)
     );
-    if reached.steps > 0 {
+    if !reached.continuous {
+        let _ = writeln!(
+            s,
+            "reached from {} by damped Newton steps, not by continuation: the path of the values from the start leaves the workspace or meets a singularity, so this may be another assembly mode than the start's",
+            reached.start
+        );
+    } else if reached.steps > 0 || reached.start != START_AT_REFERENCE {
         let _ = writeln!(
             s,
             "reached from {} in {} continuation step{}: the assembly continuous with it (another start, --from POSE, may give another assembly)",

@@ -311,7 +311,7 @@ pub fn build(spec: &BuildSpec) -> Result<Description, String> {
                 .unwrap_or_default();
             let refused = |why: &str| {
                 format!(
-                    "--chain '{}' --axes {axes}: {warning}; {why}, so no file is written",
+                    "--chain {:?} --axes {axes}: {warning}; {why}, so no file is written",
                     spec.chain.trim()
                 )
             };

@@ -47,7 +47,7 @@ pub enum ManipulatorError {
     #[error("{0}")]
     Mechanism(#[from] MechanismError),
     /// A pose that the manipulator cannot reach.
-    #[error("the pose does not assemble: {0}")]
+    #[error("{0}")]
     Pose(String),
 }
 

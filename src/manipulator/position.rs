@@ -5,9 +5,13 @@
 //! A manipulator generally has several assemblies for the same values. The one returned is the
 //! assembly **continuous with the start configuration**: the given values are approached from
 //! their values at the start along a straight path, and the loops are closed at each step by
-//! [`crate::mechanism::Mechanism::assemble_to`] from the previous step's configuration. No
-//! singularity is crossed on the way, so the result keeps the start's assembly mode; another
-//! start (e.g. `analyze --from POSE`) selects another assembly.
+//! [`crate::mechanism::Mechanism::assemble_to`] from the previous step's configuration. A step
+//! in which a joint moves by more than [`LARGEST_JOINT_STEP`] is taken again in halves, so the
+//! path does not jump between assemblies, and the result keeps the start's assembly mode;
+//! another start (e.g. `analyze --from POSE`) selects another assembly. When the path cannot be
+//! followed (it leaves the workspace or meets a singularity), a configuration that damped Newton
+//! steps reach straight from the start is returned and flagged as not continuous with it
+//! ([`Position::continuous`]).
 
 use super::{Manipulator, ManipulatorError};
 use crate::chain::Displacement;
@@ -59,7 +63,18 @@ pub struct Position {
     pub q: Vec<f64>,
     /// Continuation steps taken from the start.
     pub steps: usize,
+    /// Whether the configuration was reached by continuation from the start (the start's
+    /// assembly mode). When the path of the values from the start cannot be followed (it
+    /// leaves the workspace or meets a singularity) but damped Newton steps straight from the
+    /// start reach a configuration, that one is returned with `continuous` false: it may be
+    /// another assembly mode.
+    pub continuous: bool,
 }
+
+/// The most a joint may move in one continuation step (radians, or lengths over the
+/// mechanism's characteristic length): small enough that a step stays on the branch it starts
+/// from, since two assemblies for nearby values differ by finite joint motions.
+const LARGEST_JOINT_STEP: f64 = 0.25;
 
 /// The smallest continuation step (as a fraction of the path) before the path is given up.
 const SMALLEST_STEP: f64 = 1.0 / 4096.0;
@@ -125,7 +140,24 @@ impl Manipulator {
                     trial[j] = values[j];
                 }
             }
-            match m.assemble_to(&trial, &mask, goal.as_ref()) {
+            // A step that moves a joint by more than [`LARGEST_JOINT_STEP`] may have jumped
+            // to another assembly: it is taken again in halves.
+            let solved = match m.assemble_to(&trial, &mask, goal.as_ref()) {
+                Err(e) => Err(e.to_string()),
+                Ok(solved) => {
+                    let change = (0..q.len())
+                        .map(|j| (solved[j] - q[j]).abs() / m.unit(j))
+                        .fold(0.0, f64::max);
+                    if change > LARGEST_JOINT_STEP {
+                        Err(format!(
+                            "a joint moves by {change:.3} (dimensionless) within {dt:.1e} of the path, a jump between assemblies"
+                        ))
+                    } else {
+                        Ok(solved)
+                    }
+                }
+            };
+            match solved {
                 Ok(solved) => {
                     q = solved;
                     t = next;
@@ -135,6 +167,21 @@ impl Manipulator {
                 Err(e) => {
                     dt /= 2.0;
                     if dt < SMALLEST_STEP {
+                        let (values, goal) = at(1.0);
+                        let mut direct = start.to_vec();
+                        for (j, locked) in mask.iter().enumerate() {
+                            if *locked {
+                                direct[j] = values[j];
+                            }
+                        }
+                        if let Ok(q) = m.assemble_to(&direct, &mask, goal.as_ref()) {
+                            self.determined(&q, &mask, goal.as_ref())?;
+                            return Ok(Position {
+                                q,
+                                steps: 0,
+                                continuous: false,
+                            });
+                        }
                         return Err(ManipulatorError::Pose(format!(
                             "no assembly reached: the continuation from the start stopped {:.1}% of the way, where {}; the values lie beyond the workspace, or a singularity lies between",
                             100.0 * t,
@@ -145,7 +192,22 @@ impl Manipulator {
             }
         }
         let (_, goal) = at(1.0);
-        let undetermined = m.freedom_left(self.platform, &q, &mask, goal.as_ref());
+        self.determined(&q, &mask, goal.as_ref())?;
+        Ok(Position {
+            q,
+            steps,
+            continuous: true,
+        })
+    }
+
+    /// Checks that the locks and the goal leave the platform no freedom at `q`.
+    fn determined(
+        &self,
+        q: &[f64],
+        mask: &[bool],
+        goal: Option<&Goal>,
+    ) -> Result<(), ManipulatorError> {
+        let undetermined = self.mechanism.freedom_left(self.platform, q, mask, goal);
         if undetermined > 0 {
             return Err(ManipulatorError::Pose(format!(
                 "the values given leave the platform {undetermined} degree{} of freedom: give {undetermined} more input{} or platform coordinate{}",
@@ -154,7 +216,7 @@ impl Manipulator {
                 if undetermined == 1 { "" } else { "s" },
             )));
         }
-        Ok(Position { q, steps })
+        Ok(())
     }
 }
 
