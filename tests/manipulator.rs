@@ -1141,3 +1141,32 @@ fn modes_from_a_displaced_pose_hold_the_locks_at_their_values_there() {
         assert!((s.q[slider] - start[slider]).abs() < 1e-12);
     }
 }
+
+/// Found by fuzzing (fuzz target `description`, reproducer
+/// `fuzz/corpus/description/repro-float-roundtrip.json`): a point written
+/// `-0.103333355607461616` was read one unit in the last place away from the nearest double
+/// (serde_json's default, best-effort float parsing), and so was the shortest text of some
+/// doubles (`-0.10333333333333336`): a description written by `Description::to_json` did not
+/// read back to itself. Numbers must be read correctly rounded.
+#[test]
+fn a_description_reads_its_numbers_exactly_and_its_own_json_back() {
+    use kinsyn::manipulator::file::Description;
+    let committed = std::fs::read_to_string("mechanisms/3-rps.json").unwrap();
+    for text in [
+        "-0.103333355607461616",
+        "-0.10333333333333336",
+        "1.2345678901234567e-300",
+    ] {
+        let edited = committed.replacen(
+            "\"point\": [0.0, 0.0, 0.0]",
+            &format!("\"point\": [{text}, 0.0, 0.0]"),
+            1,
+        );
+        assert_ne!(edited, committed);
+        let d = Description::from_json(&edited).unwrap();
+        assert_eq!(d.platform.point[0], text.parse::<f64>().unwrap(), "{text}");
+        let again = Description::from_json(&d.to_json()).unwrap();
+        assert_eq!(again, d, "{text}");
+        assert_eq!(again.to_json(), d.to_json(), "{text}");
+    }
+}

@@ -1,0 +1,199 @@
+//! The invariants the fuzz targets check, shared with the stable replay test
+//! (`tests/fuzz_corpus.rs`). Each check takes the raw input; it returns quietly when the input is
+//! rejected (an error is a fine answer) and panics when an invariant is broken. docs/fuzzing.md
+//! says what each one asserts.
+
+// Each fuzz target uses one of these, the replay test all of them.
+#![allow(dead_code)]
+
+use kinsyn::manipulator::Manipulator;
+use kinsyn::mechanism::SampleSettings;
+use kinsyn::motion::PatternQuery;
+use kinsyn::notation::Chain;
+use kinsyn::verification;
+use std::sync::OnceLock;
+
+/// A chain that parses prints a text that parses to the same chain, prints the same text, and
+/// has the same primitive word, letters and parallel groups.
+pub fn check_notation(data: &[u8]) {
+    let Ok(text) = std::str::from_utf8(data) else {
+        return;
+    };
+    let Ok(chain) = text.parse::<Chain>() else {
+        return;
+    };
+    let printed = chain.to_string();
+    let again: Chain = printed
+        .parse()
+        .unwrap_or_else(|e| panic!("{text:?} parses but its text {printed:?} does not: {e}"));
+    assert_eq!(
+        again.to_string(),
+        printed,
+        "{text:?}: printing is not stable"
+    );
+    assert_eq!(
+        again, chain,
+        "{text:?}: the printed text {printed:?} reads differently"
+    );
+    assert_eq!(again.primitive_word(), chain.primitive_word(), "{text:?}");
+    assert_eq!(again.letters(), chain.letters(), "{text:?}");
+    assert_eq!(again.parallel_groups(), chain.parallel_groups(), "{text:?}");
+    // The word has one letter per primitive, and a group holds at least two of its positions.
+    let word = chain.primitive_word();
+    assert_eq!(word.len(), chain.primitives().count(), "{text:?}");
+    for group in chain.parallel_groups() {
+        assert!(group.len() >= 2, "{text:?}: a group of one: {group:?}");
+        for &p in &group {
+            assert_eq!(
+                word.as_bytes().get(p - 1),
+                Some(&b'R'),
+                "{text:?}: group position {p} is not a revolute of {word}"
+            );
+        }
+    }
+    // Without actuation marks the chain still round-trips.
+    let plain = chain.without_actuation();
+    assert_eq!(
+        plain.to_string().parse::<Chain>().as_ref(),
+        Ok(&plain),
+        "{text:?}: the unactuated chain {plain} does not read back"
+    );
+}
+
+/// A pattern query that parses prints a text that parses to the same query.
+pub fn check_pattern(data: &[u8]) {
+    let Ok(text) = std::str::from_utf8(data) else {
+        return;
+    };
+    let Ok(query) = text.parse::<PatternQuery>() else {
+        return;
+    };
+    let printed = query.to_string();
+    let again: PatternQuery = printed
+        .parse()
+        .unwrap_or_else(|e| panic!("{text:?} parses but its text {printed:?} does not: {e}"));
+    assert_eq!(
+        again, query,
+        "{text:?}: the printed text {printed:?} reads differently"
+    );
+    assert_eq!(
+        again.to_string(),
+        printed,
+        "{text:?}: printing is not stable"
+    );
+}
+
+/// The 3-UPS of paper 000 §5.1, built once.
+fn three_ups() -> &'static Manipulator {
+    static M: OnceLock<Manipulator> = OnceLock::new();
+    M.get_or_init(|| {
+        Manipulator::from_json(include_str!("../mechanisms/3-ups.json"))
+            .expect("mechanisms/3-ups.json is a valid description")
+    })
+}
+
+/// Lock sets of a chain of 1 to 8 joints, and actuator labels of the 3-UPS: an accepted set
+/// names joints that exist, and its text reads back to the same set.
+pub fn check_locks(data: &[u8]) {
+    let Ok(text) = std::str::from_utf8(data) else {
+        return;
+    };
+    for n in 1..=8usize {
+        let Ok(mask) = verification::parse_lock_set(text, n) else {
+            continue;
+        };
+        assert_eq!(
+            mask >> n,
+            0,
+            "{text:?}: joints beyond {n} in mask {mask:#b}"
+        );
+        let printed = verification::lock_text(mask, n);
+        let again = verification::parse_lock_set(&printed, n)
+            .unwrap_or_else(|e| panic!("{text:?} (n = {n}) reads but {printed:?} does not: {e}"));
+        assert_eq!(
+            again, mask,
+            "{text:?} (n = {n}): {printed:?} reads differently"
+        );
+    }
+    let m = three_ups();
+    let Ok(locked) = m.parse_locks(text) else {
+        return;
+    };
+    assert!(
+        locked.windows(2).all(|w| w[0] < w[1]),
+        "{text:?}: {locked:?} not sorted and distinct"
+    );
+    assert!(
+        locked.iter().all(|&a| a < m.actuators().len()),
+        "{text:?}: {locked:?} names an input the manipulator does not have"
+    );
+    let printed = m.lock_text(&locked);
+    let again = m
+        .parse_locks(&printed)
+        .unwrap_or_else(|e| panic!("{text:?} reads but {printed:?} does not: {e}"));
+    assert_eq!(again, locked, "{text:?}: {printed:?} reads differently");
+}
+
+/// A description that builds: its JSON text reads back to the same description, its leg checks
+/// run, and its analysis at the reference configuration (when it assembles) has consistent
+/// degrees of freedom.
+pub fn check_description(data: &[u8]) {
+    let Ok(text) = std::str::from_utf8(data) else {
+        return;
+    };
+    if let Ok(d) = kinsyn::manipulator::file::Description::from_json(text) {
+        let json = d.to_json();
+        let again = kinsyn::manipulator::file::Description::from_json(&json)
+            .unwrap_or_else(|e| panic!("a description's own JSON does not read: {e}\n{json}"));
+        assert_eq!(
+            again, d,
+            "a description's own JSON reads differently:\n{json}"
+        );
+    }
+    let Ok(m) = Manipulator::from_json(text) else {
+        return;
+    };
+    let warnings = m.leg_warnings();
+    assert!(warnings.iter().all(|w| w.leg < m.legs().len()));
+    let settings = SampleSettings {
+        samples: 2,
+        ..Default::default()
+    };
+    let Ok(a) = m.analyse(&m.reference(), &[], &settings) else {
+        return;
+    };
+    // Nothing locked: every input is free and has its column in J_I.
+    assert!(a.locked.is_empty());
+    assert_eq!(a.jacobians.free.len(), m.actuators().len());
+    assert_eq!(a.jacobians.jd.ncols(), 6);
+    assert_eq!(a.jacobians.jd.nrows(), a.jacobians.rows.len());
+    assert_eq!(a.jacobians.ji.nrows(), a.jacobians.rows.len());
+    assert_eq!(a.jacobians.ji.ncols(), a.jacobians.free.len());
+    assert_eq!(a.leg_ranks.len(), m.legs().len());
+    assert_eq!(a.generic.legs.len(), m.legs().len());
+    assert!(a.generic.assemblies >= 1);
+    // The platform's dof: six minus the rank of the constraint wrenches, one twist each.
+    assert!(a.constraint_rank.rank <= 6);
+    assert_eq!(a.platform_dof, 6 - a.constraint_rank.rank);
+    let (twists, rank) = m.platform_twists(&a.q, &[]);
+    assert_eq!(twists.nrows(), 6);
+    assert_eq!(
+        twists.ncols(),
+        a.platform_dof,
+        "platform twists {} but platform dof {}",
+        twists.ncols(),
+        a.platform_dof
+    );
+    assert_eq!(rank.rank, a.constraint_rank.rank);
+    // Mobility counts the platform's dof plus the legs' internal motions.
+    assert!(
+        a.mobility >= a.platform_dof,
+        "mobility {} below the platform dof {} ({})",
+        a.mobility,
+        a.platform_dof,
+        m.name()
+    );
+    for (r, leg) in a.leg_ranks.iter().zip(m.legs()) {
+        assert!(r.rank <= leg.joints.len().min(6));
+    }
+}
