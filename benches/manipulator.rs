@@ -1,11 +1,13 @@
 //! Speed of the manipulator analysis: the multioperation capacity of the 3-UPS (finite motion of
 //! the platform for all 64 lock subsets of its six inputs, paper 000 §5), one evaluation of the
 //! Jacobians J_D, J_I from reciprocal screws (eqs. 11, 18–21) on the 3-UPS, the 6-UPS and the
-//! 3-PRRR (legs whose constraints are couples), a whole `analyse` of the 3-UPS, and the Newton
-//! assembly of the 6-UPS at a displaced platform pose.
+//! 3-PRRR (legs whose constraints are couples), a whole `analyse` of the 3-UPS, and position
+//! analysis: the 6-UPS assembled at a displaced platform pose, its forward kinematics from the
+//! leg lengths of that pose (`analyze --inputs`), and the 3-RPS at a partial pose with its
+//! parasitic motion solved (`analyze --pose z=…,rx=…,ry=…`).
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use kinsyn::manipulator::Manipulator;
+use kinsyn::manipulator::{Manipulator, PositionRequest};
 use kinsyn::mechanism::SampleSettings;
 use nalgebra::Vector3;
 use std::hint::black_box;
@@ -53,8 +55,32 @@ fn manipulator(c: &mut Criterion) {
     ups6.assemble_at(position, orientation, &[])
         .expect("the displaced 6-UPS pose assembles");
     group.sample_size(20);
-    group.bench_function("assemble 6-UPS at a displaced pose (Newton)", |b| {
+    group.bench_function("assemble 6-UPS at a displaced pose (damped Newton)", |b| {
         b.iter(|| ups6.assemble_at(black_box(position), black_box(orientation), &[]))
+    });
+    // Forward kinematics: the input values of that pose, from the reference.
+    let displaced = ups6.assemble_at(position, orientation, &[]).unwrap();
+    let inputs = PositionRequest {
+        inputs: ups6
+            .actuators()
+            .iter()
+            .enumerate()
+            .map(|(a, act)| (a, displaced[act.joint]))
+            .collect(),
+        ..PositionRequest::default()
+    };
+    group.bench_function(
+        "forward kinematics 6-UPS from the leg lengths of that pose",
+        |b| b.iter(|| ups6.solve_position(black_box(&q6), black_box(&inputs))),
+    );
+    let rps = load("3-rps");
+    let partial = PositionRequest {
+        platform: Some(rps.parse_pose("z=1.1,rx=5,ry=-3").unwrap()),
+        ..PositionRequest::default()
+    };
+    let qr = rps.reference();
+    group.bench_function("3-RPS at z, rx, ry (parasitic x, y, rz solved)", |b| {
+        b.iter(|| rps.solve_position(black_box(&qr), black_box(&partial)))
     });
 
     group.sample_size(10);

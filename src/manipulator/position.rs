@@ -74,7 +74,7 @@ pub struct Position {
 /// The most a joint may move in one continuation step (radians, or lengths over the
 /// mechanism's characteristic length): small enough that a step stays on the branch it starts
 /// from, since two assemblies for nearby values differ by finite joint motions.
-const LARGEST_JOINT_STEP: f64 = 0.25;
+const LARGEST_JOINT_STEP: f64 = 0.5;
 
 /// The smallest continuation step (as a fraction of the path) before the path is given up.
 const SMALLEST_STEP: f64 = 1.0 / 4096.0;
@@ -207,6 +207,10 @@ impl Manipulator {
         mask: &[bool],
         goal: Option<&Goal>,
     ) -> Result<(), ManipulatorError> {
+        if matches!(goal, Some(Goal::Pose { body, .. }) if *body == self.platform) {
+            // The whole pose of the platform is asked for: nothing is left to it.
+            return Ok(());
+        }
         let undetermined = self.mechanism.freedom_left(self.platform, q, mask, goal);
         if undetermined > 0 {
             return Err(ManipulatorError::Pose(format!(

@@ -28,6 +28,9 @@ pub const ASSEMBLY_STEPS: usize = 100;
 /// The steps taken after the tolerance is met, while they still reduce the residual.
 const POLISHING_STEPS: usize = 2;
 
+/// A residual at the round-off of dimensionless coordinates of order one: no step can improve it.
+const ROUND_OFF: f64 = 1e-14;
+
 /// A coordinate of a frame's pose: its origin's position components, or its rotation vector's.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Coordinate {
@@ -211,9 +214,10 @@ impl Mechanism {
         // is kept only if it helps): derivatives by finite differences of assemblies need it.
         let mut polish = 0;
         for iteration in 0..ASSEMBLY_STEPS {
-            if residual.amax() < ASSEMBLY_TOLERANCE {
+            let polishing = residual.amax() < ASSEMBLY_TOLERANCE;
+            if polishing {
                 polish += 1;
-                if polish > POLISHING_STEPS {
+                if polish > POLISHING_STEPS || residual.amax() < ROUND_OFF {
                     return Ok(q);
                 }
             }
@@ -252,6 +256,10 @@ impl Mechanism {
                     (q, rows, residual, norm) = (trial, trial_rows, trial_residual, trial_norm);
                     damping = (damping / 10.0).max(1e-20);
                     improved = true;
+                    break;
+                }
+                if polishing {
+                    // Polishing takes only steps that help at once.
                     break;
                 }
                 damping *= 10.0;
