@@ -92,6 +92,73 @@ fn three_ups() -> &'static Manipulator {
     })
 }
 
+/// The 3-RPS (mechanisms/3-rps.json): three dof with a parasitic motion, built once.
+fn three_rps() -> &'static Manipulator {
+    static M: OnceLock<Manipulator> = OnceLock::new();
+    M.get_or_init(|| {
+        Manipulator::from_json(include_str!("../mechanisms/3-rps.json"))
+            .expect("mechanisms/3-rps.json is a valid description")
+    })
+}
+
+/// Poses and input values as `analyze --pose` and `--inputs` read them, on the 3-RPS: the
+/// input is split at the first `|` into a pose text and an inputs text. What parses and
+/// assembles is a configuration whose loops close, whose inputs have the values asked for, and
+/// whose platform has the coordinates asked for.
+pub fn check_position(data: &[u8]) {
+    use kinsyn::manipulator::{PlatformGoal, PositionRequest};
+    let Ok(text) = std::str::from_utf8(data) else {
+        return;
+    };
+    let (pose, inputs) = text.split_once('|').unwrap_or((text, ""));
+    let m = three_rps();
+    let mut request = PositionRequest::default();
+    if !pose.is_empty() {
+        let Ok(goal) = m.parse_pose(pose) else {
+            return;
+        };
+        request.platform = Some(goal);
+    }
+    if !inputs.is_empty() {
+        let Ok(values) = m.parse_inputs(inputs) else {
+            return;
+        };
+        request.inputs = values;
+    }
+    let Ok(reached) = m.solve_position(&m.reference(), &request) else {
+        return;
+    };
+    let q = &reached.q;
+    assert!(q.iter().all(|x| x.is_finite()), "{text:?}: {q:?}");
+    let residual = m.mechanism().closure_residual(q).amax();
+    assert!(residual < 1e-8, "{text:?}: loops open by {residual:e}");
+    for &(a, value) in &request.inputs {
+        let joint = m.actuators()[a].joint;
+        assert_eq!(q[joint], value, "{text:?}: input {a} not at its value");
+    }
+    let frame = m.platform_frame(q);
+    match &request.platform {
+        Some(PlatformGoal::Coordinates(values)) => {
+            for &(c, v) in values {
+                let got = c.of(&frame);
+                // Rotation-vector components are compared as the rotation they give.
+                let off = if c.is_angle() {
+                    (got - v).abs().min((got.abs() + v.abs() - 2.0 * std::f64::consts::PI).abs())
+                } else {
+                    (got - v).abs() / (1.0 + v.abs())
+                };
+                assert!(off < 1e-7, "{text:?}: {} is {got}, asked {v}", c.name());
+            }
+        }
+        Some(PlatformGoal::Pose(goal)) => {
+            let off = (frame.1 - goal.1).norm() / (1.0 + goal.1.norm())
+                + kinsyn::mechanism::rotation_log(&(frame.0.inverse() * goal.0)).norm();
+            assert!(off < 1e-7, "{text:?}: pose off by {off:e}");
+        }
+        None => {}
+    }
+}
+
 /// Lock sets of a chain of 1 to 8 joints, and actuator labels of the 3-UPS: an accepted set
 /// names joints that exist, and its text reads back to the same set.
 pub fn check_locks(data: &[u8]) {

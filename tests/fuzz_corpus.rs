@@ -57,3 +57,8 @@ fn locks_corpus() {
 fn description_corpus() {
     replay("description", checks::check_description);
 }
+
+#[test]
+fn position_corpus() {
+    replay("position", checks::check_position);
+}
