@@ -101,9 +101,10 @@ enum Command {
     Modes {
         /// A manipulator file (docs/mechanism-format.md), e.g. mechanisms/3-ups.json.
         file: PathBuf,
-        /// The start configuration: x,y,z,rx,ry,rz as for analyze --pose (the platform frame's
-        /// origin and rotation vector, angles in the file's unit), assembled with every input
-        /// free; the locked inputs are held at their values there. Default: the reference.
+        /// The start configuration, in the forms of analyze --pose: x,y,z,rx,ry,rz (the platform
+        /// frame's origin and rotation vector, angles in the file's unit) or some coordinates by
+        /// name (z=1.1,rx=5), assembled with every input free; the locked inputs are held at
+        /// their values there. Default: the reference.
         #[arg(long, allow_hyphen_values = true)]
         pose: Option<String>,
         /// Only the subsets with at most N inputs locked: Σ_{k≤N} C(n,k) of them.
