@@ -225,3 +225,20 @@ fn a_pose_off_the_start_path_is_reached_and_flagged() {
     };
     assert!(m.solve_position(&m.reference(), &near).unwrap().continuous);
 }
+
+/// Found by fuzzing (target `position`, reproducers `fuzz/corpus/position/repro-far-*`):
+/// `--pose rx=.05 --inputs P2.2=0980` on the 3-RPS (a slider extended by 980 m on a platform of
+/// 0.5 m) took thousands of continuation steps of at most half a characteristic length each,
+/// 22 s in the fuzz build. The continuation now gives up after a bounded number of steps and
+/// says why.
+#[test]
+fn values_far_from_the_start_are_refused_after_bounded_steps() {
+    let (m, _) = load("3-rps");
+    let request = PositionRequest {
+        platform: Some(m.parse_pose("rx=.05").unwrap()),
+        inputs: m.parse_inputs("P2.2=0980").unwrap(),
+        ..PositionRequest::default()
+    };
+    let e = m.solve_position(&m.reference(), &request).unwrap_err();
+    assert!(e.to_string().contains("needs more than"), "{e}");
+}

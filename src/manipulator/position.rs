@@ -76,6 +76,10 @@ pub struct Position {
 /// from, since two assemblies for nearby values differ by finite joint motions.
 const LARGEST_JOINT_STEP: f64 = 0.5;
 
+/// The most continuation steps tried (kept or halved) before the path is given up: values far
+/// from the start (a slider extended a thousand lengths) would otherwise take thousands.
+const CONTINUATION_TRIES: usize = 400;
+
 /// The smallest continuation step (as a fraction of the path) before the path is given up.
 const SMALLEST_STEP: f64 = 1.0 / 4096.0;
 
@@ -131,15 +135,22 @@ impl Manipulator {
         };
         let mut q = start.to_vec();
         let (mut t, mut dt, mut steps) = (0.0_f64, 1.0_f64, 0);
-        while t < 1.0 {
-            let next = (t + dt).min(1.0);
-            let (values, goal) = at(next);
-            let mut trial = q.clone();
+        let with_inputs = |t: f64, q: &[f64]| {
+            let (values, goal) = at(t);
+            let mut trial = q.to_vec();
             for (j, locked) in mask.iter().enumerate() {
                 if *locked {
                     trial[j] = values[j];
                 }
             }
+            (trial, goal)
+        };
+        for tries in 1.. {
+            if t >= 1.0 {
+                break;
+            }
+            let next = (t + dt).min(1.0);
+            let (trial, goal) = with_inputs(next, &q);
             // A step that moves a joint by more than [`LARGEST_JOINT_STEP`] may have jumped
             // to another assembly: it is taken again in halves.
             let solved = match m.assemble_to(&trial, &mask, goal.as_ref()) {
@@ -157,39 +168,42 @@ impl Manipulator {
                     }
                 }
             };
-            match solved {
+            let failure = match solved {
                 Ok(solved) => {
                     q = solved;
                     t = next;
                     steps += 1;
                     dt = (dt * 2.0).min(1.0);
+                    continue;
                 }
+                Err(_) if tries >= CONTINUATION_TRIES => format!(
+                    "the continuation from the start needs more than {CONTINUATION_TRIES} steps ({:.1}% of the way done): the values are far from the start; start nearer them (analyze --from)",
+                    100.0 * t
+                ),
                 Err(e) => {
                     dt /= 2.0;
-                    if dt < SMALLEST_STEP {
-                        let (values, goal) = at(1.0);
-                        let mut direct = start.to_vec();
-                        for (j, locked) in mask.iter().enumerate() {
-                            if *locked {
-                                direct[j] = values[j];
-                            }
-                        }
-                        if let Ok(q) = m.assemble_to(&direct, &mask, goal.as_ref()) {
-                            self.determined(&q, &mask, goal.as_ref())?;
-                            return Ok(Position {
-                                q,
-                                steps: 0,
-                                continuous: false,
-                            });
-                        }
-                        return Err(ManipulatorError::Pose(format!(
-                            "no assembly reached: the continuation from the start stopped {:.1}% of the way, where {}; the values lie beyond the workspace, or a singularity lies between",
-                            100.0 * t,
-                            e
-                        )));
+                    if dt >= SMALLEST_STEP {
+                        continue;
                     }
+                    format!(
+                        "the continuation from the start stopped {:.1}% of the way, where {e}; the values lie beyond the workspace, or a singularity lies between",
+                        100.0 * t
+                    )
                 }
+            };
+            // The path cannot be followed: damped Newton steps straight from the start.
+            let (direct, goal) = with_inputs(1.0, start);
+            if let Ok(q) = m.assemble_to(&direct, &mask, goal.as_ref()) {
+                self.determined(&q, &mask, goal.as_ref())?;
+                return Ok(Position {
+                    q,
+                    steps: 0,
+                    continuous: false,
+                });
             }
+            return Err(ManipulatorError::Pose(format!(
+                "no assembly reached: {failure}"
+            )));
         }
         let (_, goal) = at(1.0);
         self.determined(&q, &mask, goal.as_ref())?;
