@@ -143,7 +143,9 @@ pub fn check_position(data: &[u8]) {
                 let got = c.of(&frame);
                 // Rotation-vector components are compared as the rotation they give.
                 let off = if c.is_angle() {
-                    (got - v).abs().min((got.abs() + v.abs() - 2.0 * std::f64::consts::PI).abs())
+                    (got - v)
+                        .abs()
+                        .min((got.abs() + v.abs() - 2.0 * std::f64::consts::PI).abs())
                 } else {
                     (got - v).abs() / (1.0 + v.abs())
                 };
