@@ -1,5 +1,6 @@
 //! Rigid displacements: the group SE(3), its Lie algebra se(3) of twists, and the maps between
-//! them — composition, inverse, exponential and logarithm, the adjoint action on twists.
+//! them — composition, inverse, exponential and logarithm, the adjoint action on twists — and
+//! the Study parameters (dual quaternions) of paper 004 in [`study`].
 //!
 //! This is the bottom layer of kinsyn: it knows nalgebra and nothing else of the crate. The
 //! screw theory of [`crate::screw`] (joint screws, wrenches, lines, reciprocity, ranks), the serial
@@ -37,6 +38,7 @@
 //! ```
 
 mod explog;
+pub mod study;
 
 pub use explog::{exp, inverse_left_jacobian, log, rotation_log};
 
