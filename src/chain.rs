@@ -24,6 +24,7 @@
 
 use crate::notation::Primitive;
 use crate::screw::{Twist, transform_twist};
+pub use crate::spatial::{Displacement, compose};
 use nalgebra::{Matrix6xX, Rotation3, Unit, Vector3};
 use rand::Rng;
 
@@ -86,15 +87,6 @@ pub enum ChainError {
 #[derive(Debug, Clone, PartialEq)]
 pub struct SerialChain {
     joints: Vec<JointAxis>,
-}
-
-/// A rigid displacement `(R, p)`: rotation, then translation.
-pub type Displacement = (Rotation3<f64>, Vector3<f64>);
-
-/// `a` then `b`: the displacement `a · b`.
-#[must_use]
-pub fn compose(a: &Displacement, b: &Displacement) -> Displacement {
-    (a.0 * b.0, a.0 * b.1 + a.1)
 }
 
 impl SerialChain {

@@ -1,6 +1,8 @@
 //! kinsyn: structural synthesis and kinematic analysis of parallel manipulators.
 //!
-//! The crate follows the data flow of `ARCHITECTURE.md`: [`notation`] reads and prints chains
+//! The crate follows the data flow of `ARCHITECTURE.md`. At the bottom, [`spatial`] holds the
+//! rigid displacements SE(3) and their twists: composition, inverse, exponential and logarithm,
+//! the adjoint, and Study parameters (paper 004 eqs. 4–7). [`notation`] reads and prints chains
 //! in paper 000's letters with their parallel-axis marks; [`synthesis`] enumerates the 6-dof
 //! P/R chains of paper 000 §2 with their provenance; [`paper`] holds the printed Appendix and
 //! compares it row by row with the enumeration; [`catalogue`] deduplicates the candidates into
@@ -19,5 +21,6 @@ pub mod motion;
 pub mod notation;
 pub mod paper;
 pub mod screw;
+pub mod spatial;
 pub mod synthesis;
 pub mod verification;

@@ -17,21 +17,12 @@
 //! assert!(reciprocal_product(&f, &r).abs() < 1e-12);
 //! ```
 
-use nalgebra::{DMatrix, Matrix3, Matrix6, Rotation3, Vector3, Vector6};
+pub use crate::spatial::{Twist, adjoint, skew, transform_twist};
+use nalgebra::{DMatrix, Matrix6, Vector3, Vector6};
 
 /// The default relative tolerance of ranks: singular values below this fraction of the largest
 /// one count as zero (DESIGN.md).
 pub const DEFAULT_RANK_TOLERANCE: f64 = 1e-9;
-
-/// A twist `(ω; v)`: the instantaneous motion of a rigid body, `v` the velocity of the body
-/// point at the frame origin.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Twist {
-    /// Angular velocity.
-    pub w: Vector3<f64>,
-    /// Velocity of the body point at the origin.
-    pub v: Vector3<f64>,
-}
 
 /// A wrench `(f; m)`: a force and its moment about the frame origin.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -42,6 +33,8 @@ pub struct Wrench {
     pub m: Vector3<f64>,
 }
 
+/// The joint screws of screw theory and the geometry of a twist (its pitch and axis); the
+/// type and its coordinates are defined with the displacements in [`crate::spatial`].
 impl Twist {
     /// The unit twist of a revolute joint: rotation about the line through `point` along the
     /// unit vector `axis`, `(u; p × u)`.
@@ -68,21 +61,6 @@ impl Twist {
         Twist {
             w: axis,
             v: point.cross(&axis) + axis * pitch,
-        }
-    }
-
-    /// The six coordinates `(ω; v)`.
-    #[must_use]
-    pub fn to_vector(&self) -> Vector6<f64> {
-        Vector6::new(self.w.x, self.w.y, self.w.z, self.v.x, self.v.y, self.v.z)
-    }
-
-    /// From six coordinates `(ω; v)`.
-    #[must_use]
-    pub fn from_vector(x: &Vector6<f64>) -> Self {
-        Twist {
-            w: Vector3::new(x[0], x[1], x[2]),
-            v: Vector3::new(x[3], x[4], x[5]),
         }
     }
 
@@ -168,37 +146,6 @@ pub fn lie_bracket(a: &Twist, b: &Twist) -> Twist {
     Twist {
         w: a.w.cross(&b.w),
         v: a.w.cross(&b.v) - b.w.cross(&a.v),
-    }
-}
-
-/// The skew-symmetric matrix of `x`: `[x] y = x × y`.
-#[must_use]
-pub fn skew(x: &Vector3<f64>) -> Matrix3<f64> {
-    Matrix3::new(0.0, -x.z, x.y, x.z, 0.0, -x.x, -x.y, x.x, 0.0)
-}
-
-/// The adjoint matrix of the rigid displacement `(R, p)` acting on twists `(ω; v)`:
-/// `(ω; v) ↦ (R ω; R v + p × R ω)`. It carries a twist expressed in a moved frame back to the
-/// fixed frame (change of frame and of reference point together).
-#[must_use]
-pub fn adjoint(rotation: &Rotation3<f64>, translation: &Vector3<f64>) -> Matrix6<f64> {
-    let r = rotation.matrix();
-    let mut m = Matrix6::zeros();
-    m.fixed_view_mut::<3, 3>(0, 0).copy_from(r);
-    m.fixed_view_mut::<3, 3>(3, 3).copy_from(r);
-    m.fixed_view_mut::<3, 3>(3, 0)
-        .copy_from(&(skew(translation) * r));
-    m
-}
-
-/// Applies the rigid displacement `(R, p)` to a twist: the same motion seen after the body
-/// frame has been displaced (see [`adjoint`]).
-#[must_use]
-pub fn transform_twist(rotation: &Rotation3<f64>, translation: &Vector3<f64>, t: &Twist) -> Twist {
-    let w = rotation * t.w;
-    Twist {
-        w,
-        v: rotation * t.v + translation.cross(&w),
     }
 }
 

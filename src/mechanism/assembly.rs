@@ -14,7 +14,8 @@
 use super::{Mechanism, MechanismError, compose, inverse, log};
 use crate::chain::Displacement;
 use crate::screw;
-use nalgebra::{DMatrix, DVector, Matrix3, Vector3};
+use crate::spatial::inverse_left_jacobian;
+use nalgebra::{DMatrix, DVector};
 
 /// The residual below which the loops count as closed and a goal as met: the largest
 /// dimensionless component (radians, or lengths over the mechanism's characteristic length).
@@ -172,20 +173,6 @@ impl Goal {
             }
         }
     }
-}
-
-/// The inverse of the left Jacobian of SO(3) at the rotation vector `r`: the map from the
-/// spatial angular velocity to the rate of the rotation vector.
-fn inverse_left_jacobian(r: &Vector3<f64>) -> Matrix3<f64> {
-    let theta = r.norm();
-    let k = r.cross_matrix();
-    // Coefficient of [r]²: (1 − θ/2 · cot(θ/2)) / θ², with its series at small θ.
-    let c = if theta < 1e-4 {
-        1.0 / 12.0 + theta * theta / 720.0
-    } else {
-        (1.0 - 0.5 * theta / (0.5 * theta).tan()) / (theta * theta)
-    };
-    Matrix3::identity() - 0.5 * k + c * k * k
 }
 
 impl Mechanism {

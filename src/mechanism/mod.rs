@@ -56,11 +56,11 @@ mod motion;
 pub use assembly::{ASSEMBLY_STEPS, ASSEMBLY_TOLERANCE, Coordinate, Goal};
 pub use motion::{MotionSample, SampleSettings};
 
-pub use crate::chain::compose;
 use crate::chain::{Displacement, JointAxis};
 use crate::notation::Primitive;
 use crate::screw::{self, Twist, transform_twist};
-use nalgebra::{DMatrix, DVector, Matrix3, Rotation3, Vector3};
+pub use crate::spatial::{compose, exp, inverse, log, rotation_log};
+use nalgebra::{DMatrix, DVector, Rotation3, Vector3};
 use petgraph::graph::{NodeIndex, UnGraph};
 use petgraph::visit::{Bfs, EdgeRef};
 
@@ -661,88 +661,4 @@ pub(crate) fn characteristic_of(points: &[Vector3<f64>]) -> (Vector3<f64>, f64) 
     } else {
         (centroid, 1.0)
     }
-}
-
-/// The inverse displacement.
-#[must_use]
-pub fn inverse(g: &Displacement) -> Displacement {
-    let r = g.0.inverse();
-    (r, -(r * g.1))
-}
-
-/// The screw `ε` (a spatial twist) with `exp(ε) = g`: the logarithm of a rigid displacement.
-#[must_use]
-pub fn log(g: &Displacement) -> Twist {
-    let w = rotation_log(&g.0);
-    let v = translation_map(&w)
-        .try_inverse()
-        .map_or(g.1, |inverse| inverse * g.1);
-    Twist { w, v }
-}
-
-/// The map `V` that gives the translation `p = V v` of `exp((ω; v))` for a rotation `ω` of
-/// angle θ: `V = I + (1 − cos θ)/θ² [ω] + (θ − sin θ)/θ³ [ω]²`. The coefficients are
-/// evaluated without cancellation: `(1 − cos θ)/θ² = 2 sin²(θ/2)/θ²`, and `(θ − sin θ)/θ³` by
-/// its Taylor series below 0.01 rad (the direct form loses every digit near θ = 1e-8).
-fn translation_map(w: &Vector3<f64>) -> Matrix3<f64> {
-    let theta = w.norm();
-    let k = screw::skew(w);
-    let (a, b) = if theta < 1e-2 {
-        let t2 = theta * theta;
-        (
-            0.5 - t2 / 24.0 + t2 * t2 / 720.0,
-            1.0 / 6.0 - t2 / 120.0 + t2 * t2 / 5040.0,
-        )
-    } else {
-        let half = (theta / 2.0).sin() / theta;
-        (
-            2.0 * half * half,
-            (theta - theta.sin()) / (theta * theta * theta),
-        )
-    };
-    Matrix3::identity() + k * a + k * k * b
-}
-
-/// The rotation vector (axis × angle, angle in [0, π]) of a rotation, accurate for small angles:
-/// the angle from `atan2(sin θ, cos θ)` with `sin θ` read from the skew part.
-#[must_use]
-pub fn rotation_log(r: &Rotation3<f64>) -> Vector3<f64> {
-    let m = r.matrix();
-    let skew = Vector3::new(
-        m[(2, 1)] - m[(1, 2)],
-        m[(0, 2)] - m[(2, 0)],
-        m[(1, 0)] - m[(0, 1)],
-    ) / 2.0;
-    let sin = skew.norm();
-    let cos = ((m.trace() - 1.0) / 2.0).clamp(-1.0, 1.0);
-    let theta = sin.atan2(cos);
-    if cos > -0.5 {
-        // Away from a half turn the skew part carries the axis accurately.
-        return if sin > 0.0 {
-            skew * (theta / sin)
-        } else {
-            Vector3::zeros()
-        };
-    }
-    // Near a half turn: (R + Rᵀ)/2 = cos θ I + (1 − cos θ) n nᵀ; read n from its largest
-    // diagonal entry's column, and its sense from the skew part (sin θ · n).
-    let sym = (m + m.transpose()) / 2.0 - Matrix3::identity() * cos;
-    let k = (0..3)
-        .max_by(|&a, &b| sym[(a, a)].total_cmp(&sym[(b, b)]))
-        .unwrap_or(0);
-    let mut n = Vector3::new(sym[(0, k)], sym[(1, k)], sym[(2, k)]);
-    n /= n.norm().max(f64::MIN_POSITIVE);
-    if n.dot(&skew) < 0.0 {
-        n = -n;
-    }
-    n * theta
-}
-
-/// The rigid displacement `exp(ε)` of a twist held for unit time (the inverse of [`log`]).
-#[must_use]
-pub fn exp(t: &Twist) -> Displacement {
-    (
-        Rotation3::from_scaled_axis(t.w),
-        translation_map(&t.w) * t.v,
-    )
 }
