@@ -2,7 +2,9 @@
 //!
 //! The crate follows the data flow of `ARCHITECTURE.md`. At the bottom, [`spatial`] holds the
 //! rigid displacements SE(3) and their twists: composition, inverse, exponential and logarithm,
-//! the adjoint, and Study parameters (paper 004 eqs. 4–7). [`notation`] reads and prints chains
+//! the adjoint, and Study parameters (paper 004 eqs. 4–7); beside it a private `linalg` layer
+//! holds the checked SVD, ranks, span and null-space bases and least squares, re-exported from
+//! [`screw`]. [`notation`] reads and prints chains
 //! in paper 000's letters with their parallel-axis marks; [`synthesis`] enumerates the 6-dof
 //! P/R chains of paper 000 §2 with their provenance; [`paper`] holds the printed Appendix and
 //! compares it row by row with the enumeration; [`catalogue`] deduplicates the candidates into
@@ -15,6 +17,7 @@
 
 pub mod catalogue;
 pub mod chain;
+mod linalg;
 pub mod manipulator;
 pub mod mechanism;
 pub mod motion;

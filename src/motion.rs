@@ -30,6 +30,7 @@
 //! assert!("Q(z)".parse::<PatternQuery>().is_err());
 //! ```
 
+use crate::linalg;
 use crate::screw::{self, Twist, lie_bracket};
 use nalgebra::{DMatrix, Vector3};
 use serde::Serialize;
@@ -483,6 +484,10 @@ fn twist_of(col: nalgebra::DVectorView<'_, f64>) -> Twist {
     }
 }
 
+/// The singular values at or below which the small least-squares problems of
+/// [`classify_subalgebra`] (with unit-size blocks of an orthonormal basis) drop a direction.
+const SOLVE_CUTOFF: f64 = 1e-12;
+
 /// Whether the span of the orthonormal twists `basis` is closed under the Lie bracket, i.e. the
 /// Lie algebra of a displacement subgroup.
 #[must_use]
@@ -508,10 +513,10 @@ pub fn classify_subalgebra(basis: &DMatrix<f64>, tolerance: f64) -> Option<Group
     let k = basis.ncols();
     let omega = basis.rows(0, 3).into_owned();
     // The basis is orthonormal, so the blocks are judged against 1, not their own largest value.
-    let (rot_basis, rot_rank) = screw::span_basis_scaled(&omega, tolerance, Some(1.0));
+    let (rot_basis, rot_rank) = linalg::span_basis_scaled(&omega, tolerance, Some(1.0));
     let r = rot_rank.rank;
     // Pure translations in the span: combinations x with ω-part zero.
-    let (null, _) = screw::nullspace_scaled(&omega, tolerance, Some(1.0));
+    let (null, _) = linalg::nullspace_scaled(&omega, tolerance, Some(1.0));
     let translations = basis * &null; // 6 × (k − r)
     let t_dirs = translations.rows(3, 3).into_owned();
     let group = |kind,
@@ -539,13 +544,14 @@ pub fn classify_subalgebra(basis: &DMatrix<f64>, tolerance: f64) -> Option<Group
         },
         (_, 1) => {
             let w: Vector3<f64> = v3(rot_basis.column(0)).normalize();
-            // A twist of the span whose rotation is exactly w: solve basis·c with ω-part = w.
+            // A twist of the span whose rotation is exactly w: solve basis·c with ω-part = w
+            // (the smallest such c).
             let w_dyn = nalgebra::DVector::from_column_slice(w.as_slice());
-            let c = omega.clone().pseudo_inverse(1e-12).ok()? * w_dyn;
+            let c = linalg::least_squares(&omega, &w_dyn, SOLVE_CUTOFF).x;
             let mut t = twist_of((basis * c).column(0));
             // Remove pure translations from v, then read axis and pitch.
             if translations.ncols() > 0 {
-                let (tb, _) = screw::span_basis_scaled(&t_dirs, tolerance, Some(1.0));
+                let (tb, _) = linalg::span_basis_scaled(&t_dirs, tolerance, Some(1.0));
                 for j in 0..tb.ncols() {
                     let d = v3(tb.column(j));
                     t.v -= d * d.dot(&t.v);
@@ -581,7 +587,7 @@ pub fn classify_subalgebra(basis: &DMatrix<f64>, tolerance: f64) -> Option<Group
                 a.view_mut((3 * j, 0), (3, 3)).copy_from(&m);
                 b.rows_mut(3 * j, 3).copy_from(&t.v);
             }
-            let n = a.svd(true, true).solve(&b, 1e-12).ok()?;
+            let n = linalg::least_squares(&a, &b, SOLVE_CUTOFF).x;
             Some(group(
                 GroupKind::S,
                 None,
@@ -633,9 +639,9 @@ pub struct RankGap {
 /// rank.
 #[must_use]
 pub fn classify(samples: &[DMatrix<f64>], min_separation: f64, tolerance: f64) -> Classification {
-    let spans: Vec<(DMatrix<f64>, screw::Rank)> = samples
+    let spans: Vec<(DMatrix<f64>, linalg::Rank)> = samples
         .iter()
-        .map(|m| screw::span_basis(m, screw::DEFAULT_RANK_TOLERANCE))
+        .map(|m| linalg::span_basis(m, linalg::DEFAULT_RANK_TOLERANCE))
         .collect();
     let dof = spans.iter().map(|(_, r)| r.rank).max().unwrap_or(0);
     let generic: Vec<&DMatrix<f64>> = spans
@@ -665,7 +671,7 @@ pub fn classify(samples: &[DMatrix<f64>], min_separation: f64, tolerance: f64) -
     let rotations = generic
         .iter()
         .map(|b| {
-            screw::span_basis_scaled(&b.rows(0, 3).into_owned(), tolerance, Some(1.0))
+            linalg::span_basis_scaled(&b.rows(0, 3).into_owned(), tolerance, Some(1.0))
                 .1
                 .rank
         })
@@ -685,7 +691,7 @@ pub fn classify(samples: &[DMatrix<f64>], min_separation: f64, tolerance: f64) -
 
 /// The worst gap over several rank decisions ([`RankGap`]).
 #[must_use]
-pub fn gap_over<'a>(ranks: impl Iterator<Item = &'a screw::Rank>) -> RankGap {
+pub fn gap_over<'a>(ranks: impl Iterator<Item = &'a linalg::Rank>) -> RankGap {
     ranks.fold(
         RankGap {
             smallest_kept: None,

@@ -23,9 +23,9 @@
 //! ```
 
 use crate::chain::SerialChain;
+use crate::linalg::{self, DEFAULT_RANK_TOLERANCE};
 use crate::motion::{self, Classification};
 use crate::notation::Primitive;
-use crate::screw::{self, DEFAULT_RANK_TOLERANCE};
 use nalgebra::DMatrix;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -228,16 +228,16 @@ pub fn verify(chain: &SerialChain, settings: &Settings, seed: u64) -> Verificati
         .iter()
         .map(|q| DMatrix::from_column_slice(6, n, chain.jacobian(q).as_slice()))
         .collect();
-    let ranks: Vec<screw::Rank> = jacobians
+    let ranks: Vec<linalg::Rank> = jacobians
         .iter()
-        .map(|j| screw::rank(j, settings.rank_tolerance))
+        .map(|j| linalg::rank(j, settings.rank_tolerance))
         .collect();
     let rank = ranks.iter().map(|r| r.rank).max().unwrap_or(0);
     let worst = ranks
         .iter()
         .min_by(|a, b| a.gap().0.total_cmp(&b.gap().0))
         .cloned()
-        .unwrap_or(screw::Rank {
+        .unwrap_or(linalg::Rank {
             rank: 0,
             singular_values: vec![],
             tolerance: settings.rank_tolerance,
@@ -247,7 +247,7 @@ pub fn verify(chain: &SerialChain, settings: &Settings, seed: u64) -> Verificati
         .filter(|&i| {
             jacobians.iter().all(|j| {
                 let without = j.clone().remove_column(i);
-                screw::rank(&without, settings.rank_tolerance).rank == rank
+                linalg::rank(&without, settings.rank_tolerance).rank == rank
             })
         })
         .map(|i| i + 1)

@@ -31,8 +31,9 @@
 //! (dimensionless) positive.
 
 use super::Manipulator;
+use crate::linalg::{self, DEFAULT_RANK_TOLERANCE, Rank};
 use crate::notation::Primitive;
-use crate::screw::{self, DEFAULT_RANK_TOLERANCE, Rank, Wrench};
+use crate::screw::{self, Wrench};
 use nalgebra::{DMatrix, DVector, Vector3};
 use serde::Serialize;
 
@@ -138,7 +139,7 @@ fn joint_wrench(b: &DMatrix<f64>, s: &DMatrix<f64>, offset: &Vector3<f64>) -> Op
     // The part of b orthogonal to the constraints: its largest direction has unit size when the
     // joint is independent of the others, round-off when it is not.
     let projected = b - s * (s.transpose() * b);
-    let d = screw::svd(&projected);
+    let d = linalg::svd(&projected);
     if d.singular_values.first().copied().unwrap_or(0.0) < 0.5 {
         return None;
     }
@@ -149,9 +150,14 @@ fn joint_wrench(b: &DMatrix<f64>, s: &DMatrix<f64>, offset: &Vector3<f64>) -> Op
     // Smallest force: remove the constraint forces' share of the force. The basis is
     // orthonormal, so a constraint direction whose force is below the tolerance (relative to 1,
     // not to the other forces) is a couple.
-    let (c, couples) =
-        truncated_least_squares(&s.rows(0, 3).into_owned(), &w0.rows(0, 3).into_owned());
-    let w1 = &w0 - s * &c;
+    let forces = linalg::least_squares(
+        &s.rows(0, 3).into_owned(),
+        &w0.rows(0, 3).into_owned(),
+        COUPLE_TOLERANCE,
+    );
+    let w1 = &w0 - s * &forces.x;
+    // The constraint directions along which the force is round-off: the couples.
+    let couples = forces.dropped;
     if couples.ncols() == 0 {
         return Some(w1);
     }
@@ -160,30 +166,12 @@ fn joint_wrench(b: &DMatrix<f64>, s: &DMatrix<f64>, offset: &Vector3<f64>) -> Op
     let moments = DMatrix::from_fn(3, sn.ncols(), |r, k| {
         moment_at(&sn.column(k).into_owned(), offset)[r + 3]
     });
-    let (z, _) = truncated_least_squares(&moments, &moment_at(&w1, offset).rows(3, 3).into_owned());
-    Some(w1 - sn * z)
-}
-
-/// The least-squares solution `x` of `a x ≈ b` over the directions of `a` whose singular values
-/// exceed [`COUPLE_TOLERANCE`] (absolute: `a` is a block of an orthonormal basis), and the other
-/// directions (columns), along which `a` is round-off.
-fn truncated_least_squares(a: &DMatrix<f64>, b: &DVector<f64>) -> (DVector<f64>, DMatrix<f64>) {
-    let d = screw::svd(a);
-    let mut x = DVector::zeros(a.ncols());
-    let mut rest = Vec::new();
-    for (k, &sigma) in d.singular_values.iter().enumerate() {
-        if sigma > COUPLE_TOLERANCE && k < d.u.ncols() {
-            x += d.v.column(k) * (d.u.column(k).dot(b) / sigma);
-        } else {
-            rest.push(d.v.column(k).into_owned());
-        }
-    }
-    let rest = if rest.is_empty() {
-        DMatrix::zeros(a.ncols(), 0)
-    } else {
-        DMatrix::from_columns(&rest)
-    };
-    (x, rest)
+    let z = linalg::least_squares(
+        &moments,
+        &moment_at(&w1, offset).rows(3, 3).into_owned(),
+        COUPLE_TOLERANCE,
+    );
+    Some(w1 - sn * z.x)
 }
 
 impl Manipulator {
@@ -229,7 +217,7 @@ impl Manipulator {
             // joints at once, the rows of (Δ T)⁻¹ (w_j · $_k = δ_jk). Otherwise reciprocal
             // complements, joint by joint.
             let dual = (t.ncols() == 6
-                && screw::rank6(
+                && linalg::rank6(
                     &nalgebra::Matrix6xX::from_column_slice(t.as_slice()),
                     DEFAULT_RANK_TOLERANCE,
                 ) == 6)
@@ -372,7 +360,7 @@ impl Manipulator {
 
     /// The rank of rows `(f; m_P)` in the dimensionless form, with its singular values.
     pub(super) fn wrench_rank(&self, rows: &DMatrix<f64>, point: &Vector3<f64>) -> Rank {
-        screw::rank(&self.unitless_rows(rows, point), DEFAULT_RANK_TOLERANCE)
+        linalg::rank(&self.unitless_rows(rows, point), DEFAULT_RANK_TOLERANCE)
     }
 
     /// The twists `(v_P; ω)` the platform can have at `q` with the `locked` inputs held: the
@@ -393,10 +381,10 @@ impl Manipulator {
         let (basis, rank) = if rows.ncols() == 0 {
             (
                 DMatrix::identity(6, 6),
-                screw::rank(&rows, DEFAULT_RANK_TOLERANCE),
+                linalg::rank(&rows, DEFAULT_RANK_TOLERANCE),
             )
         } else {
-            screw::nullspace(&rows.transpose(), DEFAULT_RANK_TOLERANCE)
+            linalg::nullspace(&rows.transpose(), DEFAULT_RANK_TOLERANCE)
         };
         let twists = swap_blocks(&basis);
         // Dimensionless (ω; v_c/L) to physical (v_P; ω).

@@ -24,8 +24,8 @@
 
 use super::{AXIS_TOLERANCE, Manipulator};
 use crate::chain::SerialChain;
+use crate::linalg::{self, Rank};
 use crate::notation::{Chain, Primitive};
-use crate::screw::{self, Rank};
 use crate::verification::random_configuration;
 use nalgebra::{DMatrix, Vector3};
 use rand::SeedableRng;
@@ -102,12 +102,12 @@ impl LegCheck {
             DMatrix::from_column_slice(6, unitless.len(), j.as_slice())
         };
         let at_reference = twists(&vec![0.0; unitless.len()]);
-        let reference = screw::rank(&at_reference, screw::DEFAULT_RANK_TOLERANCE);
+        let reference = linalg::rank(&at_reference, linalg::DEFAULT_RANK_TOLERANCE);
         let mut rng = ChaCha8Rng::seed_from_u64(GENERIC_SEED);
         let mut generic: Option<(Rank, DMatrix<f64>)> = None;
         for _ in 0..GENERIC_SAMPLES {
             let m = twists(&random_configuration(&unitless, &mut rng));
-            let r = screw::rank(&m, screw::DEFAULT_RANK_TOLERANCE);
+            let r = linalg::rank(&m, linalg::DEFAULT_RANK_TOLERANCE);
             if generic.as_ref().is_none_or(|(g, _)| r.rank > g.rank) {
                 generic = Some((r, m));
             }
@@ -285,11 +285,11 @@ impl fmt::Display for LegWarning {
 fn first_dependency(m: &DMatrix<f64>) -> Vec<usize> {
     for k in 1..=m.ncols() {
         let head = m.columns(0, k).into_owned();
-        let r = screw::rank(&head, screw::DEFAULT_RANK_TOLERANCE);
+        let r = linalg::rank(&head, linalg::DEFAULT_RANK_TOLERANCE);
         if r.rank < k {
             // Columns 0..k−1 are independent, so the null space of the first k is one vector:
             // the right singular vector of the smallest singular value.
-            let v = screw::svd(&head).v.column(k - 1).into_owned();
+            let v = linalg::svd(&head).v.column(k - 1).into_owned();
             let top = v.amax();
             return (0..k)
                 .filter(|&i| v[i].abs() > DEPENDENCY_TOLERANCE * top)

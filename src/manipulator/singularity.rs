@@ -9,8 +9,8 @@
 
 use super::Manipulator;
 use super::jacobian::Jacobians;
+use crate::linalg::{self, DEFAULT_RANK_TOLERANCE, Rank};
 use crate::mechanism::SampleSettings;
-use crate::screw::{self, DEFAULT_RANK_TOLERANCE, Rank};
 use serde::Serialize;
 
 /// Which kind of singularity (Gosselin–Angeles, and Zlatanov's constraint singularity).
@@ -117,7 +117,7 @@ impl Manipulator {
             .iter()
             .map(|leg| {
                 let joints: Vec<usize> = leg.joints.clone().collect();
-                screw::rank(
+                linalg::rank(
                     &self.unitless_leg_twists(&screws, &joints),
                     DEFAULT_RANK_TOLERANCE,
                 )

@@ -13,7 +13,7 @@
 
 use super::{Mechanism, MechanismError, compose, inverse, log};
 use crate::chain::Displacement;
-use crate::screw;
+use crate::linalg;
 use crate::spatial::inverse_left_jacobian;
 use nalgebra::{DMatrix, DVector};
 
@@ -209,7 +209,7 @@ impl Mechanism {
                 }
             }
             let af = DMatrix::from_fn(rows.nrows(), free.len(), |r, k| rows[(r, free[k])]);
-            let d = screw::svd(&af);
+            let d = linalg::svd(&af);
             let top = d.singular_values.first().copied().unwrap_or(0.0);
             if top == 0.0 {
                 break;
@@ -315,11 +315,11 @@ impl Mechanism {
         let free = self.free(locked);
         let (rows, _) = self.equations(q, goal);
         let a = DMatrix::from_fn(rows.nrows(), free.len(), |r, k| rows[(r, free[k])]);
-        let (rates, _) = screw::nullspace(&a, screw::DEFAULT_RANK_TOLERANCE);
+        let (rates, _) = linalg::nullspace(&a, linalg::DEFAULT_RANK_TOLERANCE);
         let twists = self.dimensionless(&self.body_jacobian(body, &self.joint_screws(q)));
         let twists = DMatrix::from_fn(6, free.len(), |r, k| twists[(r, free[k])]);
         // Unit screws times an orthonormal basis: the scale is 1, whatever round-off is left.
-        screw::span_basis_scaled(&(twists * rates), screw::DEFAULT_RANK_TOLERANCE, Some(1.0))
+        linalg::span_basis_scaled(&(twists * rates), linalg::DEFAULT_RANK_TOLERANCE, Some(1.0))
             .1
             .rank
     }

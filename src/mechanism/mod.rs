@@ -57,6 +57,7 @@ pub use assembly::{ASSEMBLY_STEPS, ASSEMBLY_TOLERANCE, Coordinate, Goal};
 pub use motion::{MotionSample, SampleSettings};
 
 use crate::chain::{Displacement, JointAxis};
+use crate::linalg;
 use crate::notation::Primitive;
 use crate::screw::{self, Twist, transform_twist};
 pub use crate::spatial::{compose, exp, inverse, log, rotation_log};
@@ -193,7 +194,7 @@ pub struct Mobility {
     /// Dimension of the joint-rate null space of the loop-closure Jacobian (free joints only).
     pub dof: usize,
     /// Rank report of the (dimensionless) loop-closure Jacobian.
-    pub closure_rank: screw::Rank,
+    pub closure_rank: linalg::Rank,
     /// A basis of compatible rates of the free joints (columns, one entry per free joint, in
     /// joint order; prismatic rates in length units).
     pub rates: DMatrix<f64>,
@@ -537,13 +538,13 @@ impl Mechanism {
     /// over the length scale) that keep every loop closed, with the rank decision of the
     /// dimensionless loop-closure Jacobian (unit-screw columns, so its largest singular value
     /// is not round-off).
-    fn unitless_rates(&self, screws: &[Twist], free: &[usize]) -> (DMatrix<f64>, screw::Rank) {
+    fn unitless_rates(&self, screws: &[Twist], free: &[usize]) -> (DMatrix<f64>, linalg::Rank) {
         let c = self.dimensionless(&self.closure_jacobian(screws));
         let cf = DMatrix::from_fn(c.nrows(), free.len(), |r, k| c[(r, free[k])]);
         if cf.nrows() == 0 {
             return (
                 DMatrix::identity(free.len(), free.len()),
-                screw::Rank {
+                linalg::Rank {
                     rank: 0,
                     singular_values: Vec::new(),
                     tolerance: MOBILITY_TOLERANCE,
@@ -551,7 +552,7 @@ impl Mechanism {
                 },
             );
         }
-        screw::nullspace(&cf, MOBILITY_TOLERANCE)
+        linalg::nullspace(&cf, MOBILITY_TOLERANCE)
     }
 
     /// The twist space of `body` at `q` with the `locked` joints held: a basis (columns) of the
@@ -573,13 +574,13 @@ impl Mechanism {
         body: usize,
         screws: &[Twist],
         locked: &[bool],
-    ) -> (DMatrix<f64>, screw::Rank) {
+    ) -> (DMatrix<f64>, linalg::Rank) {
         let free = self.free(locked);
         let (rates, _) = self.unitless_rates(screws, &free);
         let j = self.dimensionless(&self.body_jacobian(body, screws));
         let jf = DMatrix::from_fn(6, free.len(), |r, k| j[(r, free[k])]);
         let norm = jf.norm();
-        screw::span_basis_scaled(&(jf * rates), MOBILITY_TOLERANCE, Some(norm.max(1.0)))
+        linalg::span_basis_scaled(&(jf * rates), MOBILITY_TOLERANCE, Some(norm.max(1.0)))
     }
 
     /// Closes the loops from `q` with the `locked` joints held, and when `target` is given also

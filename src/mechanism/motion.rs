@@ -67,7 +67,7 @@ pub struct MotionSample {
     /// ([`Mechanism::unitless_twists`]: at the centre, translations over the length scale).
     pub twists: DMatrix<f64>,
     /// The rank decision behind it (relative to the norm of the body's dimensionless Jacobian).
-    pub rank: crate::screw::Rank,
+    pub rank: crate::linalg::Rank,
 }
 
 /// The sampled finite motion of a body.
