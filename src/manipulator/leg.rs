@@ -19,8 +19,8 @@
 //! `(ω; ((p − c)/L) × ω)`, a prismatic joint of unit direction `a` becomes `(0; a)` (its column
 //! multiplied by `L`, translational rows divided by it), and slider values are drawn in units of
 //! `L`. The rank is then [`screw::rank`](crate::screw::rank) with the relative tolerance
-//! [`screw::DEFAULT_RANK_TOLERANCE`](crate::screw::DEFAULT_RANK_TOLERANCE); scaling every length of a file, or moving it, changes
-//! nothing.
+//! [`screw::DEFAULT_RANK_TOLERANCE`](crate::screw::DEFAULT_RANK_TOLERANCE); scaling every
+//! length of a file, or moving it, changes nothing.
 
 use super::{AXIS_TOLERANCE, Manipulator};
 use crate::chain::SerialChain;
