@@ -15,13 +15,13 @@ use crate::verification::{self, Settings, Verification};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 use rayon::prelude::*;
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 use std::collections::{BTreeMap, BTreeSet};
 use std::fmt::Write as _;
 use std::path::Path;
 
 /// How many joints of each letter a chain has.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
 pub struct Composition {
     /// Prismatic joints.
     pub p: u8,
@@ -54,7 +54,7 @@ impl Composition {
 }
 
 /// Where an entry was first found.
-#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize)]
 pub struct Provenance {
     /// Appendix table.
     pub table: u8,
@@ -70,8 +70,39 @@ pub struct Provenance {
 /// entry derives its own from it and its notation ([`Entry::seed`]).
 pub const VERIFICATION_SEED: u64 = 2026;
 
+/// The version of `chains.json` that [`Catalogue::to_json`] writes and [`Catalogue::from_json`]
+/// reads (the file's `format` field). Raise it when the file's shape or meaning changes, so
+/// that a binary never reads a file it would misunderstand.
+pub const FORMAT: &str = "kinsyn-catalogue/2";
+
+/// The committed `catalogue/chains.json`, compiled in.
+///
+/// The committed catalogue is part of the source: it is what [`Catalogue::generate`] gives with
+/// the default reading (`tests/catalogue.rs` checks it entry by entry, and byte for byte against
+/// a fresh `kinsyn catalogue generate`). Compiling it in lets the binary read it from any
+/// working directory, installed or not, with no path to find and no file that can go missing
+/// or be swapped for another version after the build; its cost is 1.3 MB of read-only data.
+pub const COMMITTED_JSON: &str = include_str!("../catalogue/chains.json");
+
+/// Why a catalogue file cannot be read ([`Catalogue::from_json`]).
+#[derive(Debug, thiserror::Error)]
+pub enum LoadError {
+    /// The text is not a catalogue of this format: not JSON, or a field missing or of the wrong
+    /// type (the path names it, e.g. `entries[3].verification.rank`). Regenerate the file with
+    /// `kinsyn catalogue generate`.
+    #[error("not a {FORMAT} catalogue: {0}")]
+    Parse(#[from] serde_path_to_error::Error<serde_json::Error>),
+    /// The file says it is another version of the format (written by another kinsyn).
+    /// Regenerate it with this kinsyn's `kinsyn catalogue generate`.
+    #[error("catalogue format {found:?}, this kinsyn reads {FORMAT:?}")]
+    Format {
+        /// The file's `format` field.
+        found: String,
+    },
+}
+
 /// One chain of the catalogue.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Entry {
     /// Stable identifier: table and running number, e.g. `T2-017`.
     pub id: String,
@@ -164,7 +195,7 @@ pub struct QueryHit<'a> {
 }
 
 /// The counts of one table, each "new": not already found in an earlier table.
-#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize)]
 pub struct TableCount {
     /// Table number.
     pub table: u8,
@@ -253,6 +284,68 @@ impl Catalogue {
     pub fn synthesise(options: &Options) -> Self {
         let candidates = synthesis::enumerate(options);
         Self::from_candidates(*options, &candidates)
+    }
+
+    /// The committed catalogue ([`COMMITTED_JSON`]): the entries, counts and verification
+    /// results of `catalogue/chains.json`, without re-running the numerical check.
+    ///
+    /// # Errors
+    /// If the compiled-in file does not parse or has another [`FORMAT`] (a build from a broken
+    /// tree: the test `embedded_catalogue_equals_the_generated_one` guards against it).
+    pub fn committed() -> Result<Self, LoadError> {
+        Self::from_json(COMMITTED_JSON)
+    }
+
+    /// Reads a catalogue written by [`Catalogue::to_json`]: options, counts and entries with
+    /// their verification come from the text; the row-by-row comparison with the printed
+    /// Appendix (`rows`, `differences`), which the file does not hold, is recomputed from the
+    /// enumeration (no numerical check: about 15 ms).
+    ///
+    /// # Errors
+    /// [`LoadError::Format`] if the text's `format` is not [`FORMAT`], [`LoadError::Parse`] if it
+    /// is not a catalogue.
+    pub fn from_json(text: &str) -> Result<Self, LoadError> {
+        /// The parts of `chains.json` that a catalogue is rebuilt from; the prose fields
+        /// (`source`, `identity`, the verification's `geometry` and `locks`) are ignored.
+        #[derive(Deserialize)]
+        struct File {
+            format: String,
+            options: Options,
+            verification: Option<VerificationMeta>,
+            counts: Vec<TableCount>,
+            entries: Vec<Entry>,
+        }
+        #[derive(Deserialize)]
+        struct VerificationMeta {
+            seed: u64,
+            settings: Settings,
+        }
+        /// Only the version, to tell another format from a damaged file.
+        #[derive(Deserialize)]
+        struct Header {
+            format: String,
+        }
+        let wrong_format = |found: String| (found != FORMAT).then_some(LoadError::Format { found });
+        let file: File =
+            serde_path_to_error::deserialize(&mut serde_json::Deserializer::from_str(text))
+                .map_err(|e| {
+                    serde_json::from_str::<Header>(text)
+                        .ok()
+                        .and_then(|h| wrong_format(h.format))
+                        .unwrap_or(LoadError::Parse(e))
+                })?;
+        if let Some(e) = wrong_format(file.format) {
+            return Err(e);
+        }
+        let (rows, differences) = paper::compare(&synthesis::enumerate(&file.options));
+        Ok(Catalogue {
+            options: file.options,
+            entries: file.entries,
+            counts: file.counts,
+            rows,
+            differences,
+            verification: file.verification.map(|v| (v.settings, v.seed)),
+        })
     }
 
     /// Verifies every entry numerically (in parallel): rank, idle joints and the patterns of
@@ -472,7 +565,7 @@ impl Catalogue {
                 geometry: "axes along the entry's directions; joints of one C/U/S share a point; other consecutive joints offset by seeded generic vectors (length 0.5-1.5)",
                 locks: "locked joints held at their reference values; lock sets are 1-based joint positions in the entry's word, '-' for none",
             }),
-            format: "kinsyn-catalogue/2",
+            format: FORMAT,
             source: "paper 000 §2 and Appendix (Ibarreche et al., Multioperation capacity of parallel manipulators basing on generic kinematic chain approach)",
             identity: "letters + parallel marks, first occurrence in table order",
             options: &self.options,

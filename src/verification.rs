@@ -29,11 +29,11 @@ use crate::notation::Primitive;
 use nalgebra::DMatrix;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 
 /// How a chain is verified.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct Settings {
     /// Random configurations sampled.
     pub samples: usize,
@@ -54,7 +54,7 @@ impl Default for Settings {
 }
 
 /// What the numerical check found for one chain.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Verification {
     /// The seed of the random configurations (the geometry's seed is the caller's).
     pub seed: u64,

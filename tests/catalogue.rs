@@ -1,8 +1,9 @@
 //! The catalogue files (src/catalogue.rs) and the invariants of their entries.
 
-use kinsyn::catalogue::Catalogue;
+use kinsyn::catalogue::{COMMITTED_JSON, Catalogue, FORMAT, LoadError};
 use kinsyn::notation::{Chain, letters_fit_word};
 use kinsyn::synthesis::Options;
+use kinsyn::synthesis::PrismaticReading;
 use std::collections::BTreeSet;
 use std::path::Path;
 
@@ -107,4 +108,73 @@ fn find_by_id_and_by_notation() {
     assert_eq!(cat.find("PPU(-,b)U(b,-)").unwrap().id, marked.id);
     assert!(cat.find("T9-999").is_none());
     assert!(cat.find("SS").is_none());
+}
+
+/// The catalogue the binary reads ([`Catalogue::committed`], `catalogue/chains.json` compiled
+/// in) is the one the code generates with the default reading, entry by entry, verification
+/// results included; so the CLI's answers never drift from the code.
+#[test]
+fn embedded_catalogue_equals_the_generated_one() {
+    let loaded = Catalogue::committed().expect("the compiled-in catalogue reads");
+    let fresh = Catalogue::generate(&Options::default());
+    assert_eq!(loaded.options, fresh.options);
+    assert_eq!(loaded.verification, fresh.verification);
+    assert_eq!(loaded.counts, fresh.counts);
+    assert_eq!(loaded.entries.len(), fresh.entries.len());
+    for (l, f) in loaded.entries.iter().zip(&fresh.entries) {
+        assert_eq!(l, f, "entry {} of the committed catalogue", f.id);
+    }
+    assert_eq!(loaded.rows, fresh.rows);
+    assert_eq!(loaded.differences, fresh.differences);
+    // What the files are made of agrees too.
+    assert_eq!(loaded.to_json(), COMMITTED_JSON);
+    assert_eq!(loaded.readme(), fresh.readme());
+}
+
+/// A catalogue without the numerical check (another reading, §2's perpendicular guides) reads
+/// back as written: entries without verification, counts without verified numbers.
+#[test]
+fn an_unverified_catalogue_round_trips_through_json() {
+    let options = Options {
+        prismatics: PrismaticReading::Perpendicular,
+        ..Options::default()
+    };
+    let cat = Catalogue::synthesise(&options);
+    let back = Catalogue::from_json(&cat.to_json()).unwrap();
+    assert_eq!(back.options, options);
+    assert_eq!(back.entries, cat.entries);
+    assert_eq!(back.counts, cat.counts);
+    assert_eq!(back.differences, cat.differences);
+    assert!(back.verification.is_none());
+    assert!(back.entries.iter().all(|e| e.verification.is_none()));
+}
+
+/// Another format version is refused by name; a damaged file is refused with the place of the
+/// fault.
+#[test]
+fn from_json_checks_the_format_version() {
+    let old = COMMITTED_JSON.replacen(FORMAT, "kinsyn-catalogue/1", 1);
+    match Catalogue::from_json(&old) {
+        Err(LoadError::Format { found }) => assert_eq!(found, "kinsyn-catalogue/1"),
+        other => panic!("expected a format error, got {:?}", other.err()),
+    }
+    // Another version whose shape differs is still named as another version.
+    let future = r#"{"format": "kinsyn-catalogue/3", "chains": []}"#;
+    assert!(matches!(
+        Catalogue::from_json(future),
+        Err(LoadError::Format { .. })
+    ));
+    // No version at all, or a damaged entry: a parse error naming the field.
+    let err = Catalogue::from_json(r#"{"entries": []}"#).unwrap_err();
+    assert!(matches!(err, LoadError::Parse(_)), "{err}");
+    let damaged = COMMITTED_JSON.replacen("\"rank\": 6", "\"rank\": \"six\"", 1);
+    let err = Catalogue::from_json(&damaged).unwrap_err();
+    assert!(matches!(err, LoadError::Parse(_)), "{err}");
+    assert!(
+        err.to_string().contains("entries[0].verification.rank"),
+        "{err}"
+    );
+    let err = Catalogue::from_json(&COMMITTED_JSON[..1000]).unwrap_err();
+    assert!(matches!(err, LoadError::Parse(_)), "{err}");
+    assert_eq!(err.to_string().lines().count(), 1, "{err}");
 }

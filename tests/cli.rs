@@ -20,6 +20,33 @@ fn summary_reports_table_1_at_63() {
     assert_eq!(v["published_total"], 347);
 }
 
+/// The default reading is the committed catalogue compiled into the binary, found from any
+/// working directory; another reading is enumerated afresh (§2's perpendicular guides: Table 1
+/// falls below 63, docs/synthesis.md).
+#[test]
+fn summary_reads_the_compiled_in_catalogue_from_anywhere() {
+    let dir = tempfile::tempdir().unwrap();
+    let o = std::process::Command::new(env!("CARGO_BIN_EXE_kinsyn"))
+        .current_dir(dir.path())
+        .args(["catalogue", "summary", "--json"])
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", stderr(&o));
+    let v: serde_json::Value = serde_json::from_str(&stdout(&o)).unwrap();
+    assert_eq!(v["tables"][0]["letters_only"], 63);
+    assert_eq!(v["tables"][0]["verified_3t3r"], 54);
+    let o = kinsyn(&[
+        "catalogue",
+        "summary",
+        "--json",
+        "--prismatics",
+        "perpendicular",
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let v: serde_json::Value = serde_json::from_str(&stdout(&o)).unwrap();
+    assert!(v["tables"][0]["letters_only"].as_u64().unwrap() < 63, "{v}");
+}
+
 #[test]
 fn show_list_and_notation() {
     let o = kinsyn(&["catalogue", "show", "T1-001"]);

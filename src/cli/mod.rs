@@ -3,7 +3,7 @@
 //! Exit codes (docs/limits.md): 0 success (also `--help`, `--version`, and a reader that went
 //! away); 2 bad input (arguments, chain strings, patterns, poses, input values, files that are
 //! missing or not descriptions, faulty fields, limits); 1 an environment failure (an output that
-//! cannot be written). Errors are one line on stderr, prefixed `kinsyn: error:`, with echoed
+//! cannot be written) or a damaged build (a compiled-in catalogue that does not read). Errors are one line on stderr, prefixed `kinsyn: error:`, with echoed
 //! input escaped ([`terminal::one_line`]).
 
 mod manipulator;
@@ -353,9 +353,24 @@ enum PrismaticsArg {
 }
 
 impl Reading {
+    /// The catalogue in this reading. The default reading is the committed catalogue, compiled
+    /// into the binary ([`Catalogue::committed`]: read, not re-verified, in milliseconds); any
+    /// other reading is enumerated and verified ([`Reading::generated`]).
+    fn catalogue(&self) -> Result<Catalogue, CliError> {
+        let options = self.options();
+        if options != Options::default() {
+            return Ok(self.generated());
+        }
+        Catalogue::committed().map_err(|e| {
+            CliError::Internal(format!(
+                "the catalogue compiled into kinsyn cannot be read: {e} (a damaged build: regenerate catalogue/chains.json with `kinsyn catalogue generate` and rebuild)"
+            ))
+        })
+    }
+
     /// The catalogue in this reading, enumerated and verified (about a second: a spinner
     /// shows on a terminal).
-    fn catalogue(&self) -> Catalogue {
+    fn generated(&self) -> Catalogue {
         terminal::working("enumerating and verifying the catalogue", || {
             Catalogue::generate(&self.options())
         })
@@ -379,6 +394,9 @@ enum CliError {
     Input(String),
     #[error("{0}")]
     Io(#[from] std::io::Error),
+    /// A fault of the build, not of the input or the environment (exit 1).
+    #[error("{0}")]
+    Internal(String),
 }
 
 /// Runs the command line and returns the process exit code.
@@ -408,7 +426,7 @@ pub fn run() -> i32 {
             terminal::error(&e.to_string());
             match e {
                 CliError::Input(_) => 2,
-                CliError::Io(_) => 1,
+                CliError::Io(_) | CliError::Internal(_) => 1,
             }
         }
     }
@@ -545,7 +563,7 @@ fn query(
             "--max-locks {max_locks}: a leg has six joints"
         )));
     }
-    let cat = reading.catalogue();
+    let cat = reading.catalogue()?;
     let hits = cat.query(&q, max_locks, family);
     if as_json {
         let rows: Vec<serde_json::Value> = hits
@@ -678,7 +696,7 @@ fn list_or_none(items: &[String]) -> String {
 fn catalogue(command: CatalogueCommand) -> Result<String, CliError> {
     match command {
         CatalogueCommand::Generate { out, reading } => {
-            let cat = reading.catalogue();
+            let cat = reading.generated();
             cat.write(&out)?;
             let (letters, marks) = cat.totals();
             Ok(format!(
@@ -691,7 +709,7 @@ fn catalogue(command: CatalogueCommand) -> Result<String, CliError> {
             json: as_json,
             reading,
         } => {
-            let cat = reading.catalogue();
+            let cat = reading.catalogue()?;
             if as_json {
                 let diffs: Vec<serde_json::Value> = cat
                     .difference_counts()
@@ -740,7 +758,7 @@ fn catalogue(command: CatalogueCommand) -> Result<String, CliError> {
                     "no Appendix table {t}; the tables with chains are 1, 2, 3, 4, 7, 8"
                 )));
             }
-            let cat = reading.catalogue();
+            let cat = reading.catalogue()?;
             let entries: Vec<&Entry> = cat
                 .entries
                 .iter()
@@ -768,14 +786,14 @@ fn catalogue(command: CatalogueCommand) -> Result<String, CliError> {
             }
             Ok(s)
         }
-        CatalogueCommand::Rejected { reading } => Ok(reading.catalogue().not_3t3r_markdown()),
+        CatalogueCommand::Rejected { reading } => Ok(reading.catalogue()?.not_3t3r_markdown()),
         CatalogueCommand::Show {
             query,
             lock,
             json: as_json,
             reading,
         } => {
-            let cat = reading.catalogue();
+            let cat = reading.catalogue()?;
             let entry = match cat.find(&query) {
                 Some(e) => e,
                 None if query
@@ -868,7 +886,7 @@ fn catalogue(command: CatalogueCommand) -> Result<String, CliError> {
             json: as_json,
             reading,
         } => {
-            let cat = reading.catalogue();
+            let cat = reading.catalogue()?;
             if as_json {
                 return Ok(json(&cat.differences));
             }

@@ -130,7 +130,7 @@ pub fn parallel_guides(
 }
 
 /// How far apart two prismatic guides of one chain may be (§2 admits two readings).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Serialize, serde::Deserialize)]
 pub enum PrismaticReading {
     /// Default. Parallel guides are allowed when a revolute not parallel to them lies between
     /// them, so that they do not stay parallel in motion. Table 1 needs this reading: it prints
@@ -162,7 +162,7 @@ pub fn triple_group_without_guide(word: &[Primitive], axes: &[Axis]) -> bool {
 }
 
 /// The options of the paper reading: where the text of §2 admits two readings.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub struct Options {
     /// Whether non-consecutive prismatic guides may be parallel.
     pub prismatics: PrismaticReading,
