@@ -292,6 +292,24 @@ impl Catalogue {
     /// # Errors
     /// If the compiled-in file does not parse or has another [`FORMAT`] (a build from a broken
     /// tree: the test `embedded_catalogue_equals_the_generated_one` guards against it).
+    ///
+    /// # Example
+    /// Table 1 of paper 000's Appendix prints 63 PPPRRR chains, which the catalogue reproduces
+    /// exactly; and PPPS (`T1-001`) translates (T3) with its spherical joint's three revolutes
+    /// (joints 4, 5, 6) locked, since what is left is three prismatic joints.
+    ///
+    /// ```
+    /// use kinsyn::catalogue::Catalogue;
+    ///
+    /// let catalogue = Catalogue::committed()?;
+    /// let table_1 = catalogue.entries.iter().filter(|e| e.provenance.table == 1);
+    /// assert_eq!(table_1.count(), 63);
+    ///
+    /// let hits = catalogue.query(&"T3".parse()?, 3, None);
+    /// let ppps = hits.iter().find(|h| h.entry.notation == "PPPS").unwrap();
+    /// assert_eq!(ppps.lock_sets, ["456"]);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
     pub fn committed() -> Result<Self, LoadError> {
         Self::from_json(COMMITTED_JSON)
     }

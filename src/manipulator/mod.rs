@@ -111,6 +111,27 @@ impl Manipulator {
     ///
     /// # Errors
     /// See [`Description::from_json`] and [`Manipulator::new`].
+    ///
+    /// # Example
+    /// The reconfigurable 3-UPS of paper 000 §5.1 has a platform of six dof; locking the first
+    /// revolute α of each U (inputs `R1.1`, `R2.1`, `R3.1`) turns it into the 3-RPS of §5.2,
+    /// whose platform keeps three.
+    ///
+    /// ```
+    /// use kinsyn::manipulator::Manipulator;
+    /// use kinsyn::mechanism::SampleSettings;
+    ///
+    /// let text = std::fs::read_to_string("mechanisms/3-ups.json")?;
+    /// let m = Manipulator::from_json(&text)?;
+    /// let settings = SampleSettings::default();
+    /// assert_eq!(m.analyse(&m.reference(), &[], &settings)?.platform_dof, 6);
+    ///
+    /// let alphas = m.parse_locks("R1.1,R2.1,R3.1")?;
+    /// let rps = m.analyse(&m.reference(), &alphas, &settings)?;
+    /// assert_eq!(rps.platform_dof, 3);
+    /// assert!(rps.singularities.is_empty());
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
     pub fn from_json(text: &str) -> Result<Self, ManipulatorError> {
         Self::new(&Description::from_json(text)?)
     }

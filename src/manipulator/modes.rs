@@ -289,6 +289,13 @@ impl Manipulator {
     /// The motion of every lock subset of the inputs from the reference configuration, and the
     /// patterns reached ([`Manipulator::modes_from`] with every subset).
     ///
+    /// # Complexity
+    /// Exponential in the number of inputs n: 2^n lock subsets, each one sampled motion (three
+    /// random walks of three Newton-corrected loop closures by default), about 0.8 ms of CPU
+    /// per subset for the 3-UPS (64 subsets) and 4 ms for the 6-UPS (`docs/limits.md`). Hence
+    /// the refusal above [`MAX_INPUTS`] (2^16 subsets); [`Manipulator::modes_from`] with
+    /// [`Manipulator::lock_subsets`] samples only the subsets of at most k locks.
+    ///
     /// # Errors
     /// More than [`MAX_INPUTS`] inputs.
     pub fn modes(&self, settings: &SampleSettings) -> Result<Modes, String> {
@@ -309,7 +316,14 @@ impl Manipulator {
     /// The subsets are sampled in parallel (rayon); each has its own seed derived from
     /// `settings.seed` and the subset, so a subset's mode does not depend on the other subsets
     /// or the thread count. `progress` is called once per subset finished (from any thread):
-    /// the hook for a progress bar. The cost is one sampled motion per subset.
+    /// the hook for a progress bar.
+    ///
+    /// # Complexity
+    /// One sampled motion per subset, so linear in `subsets.len()`; the minimal lock sets of a
+    /// pattern are found by comparing its subsets with the minimal ones found before, at worst
+    /// quadratic in the number of subsets. Every subset of n inputs is 2^n of them, those of at
+    /// most k locks Σ_{j≤k} C(n, j) ([`Manipulator::lock_subset_count`]): count them before
+    /// calling with [`Manipulator::lock_subsets`].
     #[must_use]
     pub fn modes_from(
         &self,

@@ -86,6 +86,33 @@ const SMALLEST_STEP: f64 = 1.0 / 4096.0;
 impl Manipulator {
     /// The configuration that meets `request`, continuous with `start` (module documentation).
     ///
+    /// # Example
+    /// Inverse kinematics of the 6-UPS: the platform raised by 0.1 m without turning. Leg 1
+    /// runs from A = (1, 0, 0) on the base to B = (0.469846, 0.171010, 0) in the platform
+    /// frame (`mechanisms/6-ups.json`), so its slider `P1.3` lengthens by |p′ + B − A| −
+    /// |p + B − A| with p = (0, 0, 1) and p′ = (0, 0, 1.1).
+    ///
+    /// ```
+    /// use kinsyn::manipulator::{Manipulator, PlatformGoal, PositionRequest};
+    /// use nalgebra::{Rotation3, Vector3};
+    ///
+    /// let m = Manipulator::from_json(&std::fs::read_to_string("mechanisms/6-ups.json")?)?;
+    /// let raised = (Rotation3::identity(), Vector3::new(0.0, 0.0, 1.1));
+    /// let request = PositionRequest {
+    ///     platform: Some(PlatformGoal::Pose(raised)),
+    ///     ..PositionRequest::default()
+    /// };
+    /// let reached = m.solve_position(&m.reference(), &request)?;
+    /// assert!(reached.continuous);
+    ///
+    /// let a = Vector3::new(1.0, 0.0, 0.0);
+    /// let b = Vector3::new(0.469846310393, 0.171010071663, 0.0);
+    /// let length = |z: f64| (Vector3::new(0.0, 0.0, z) + b - a).norm();
+    /// let slider = m.actuators()[m.actuator_named("P1.3")?].joint;
+    /// assert!((reached.q[slider] - (length(1.1) - length(1.0))).abs() < 1e-9);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    ///
     /// # Errors
     /// [`ManipulatorError::Pose`] when the continuation cannot go on: the values asked for lie
     /// beyond the workspace, or a singularity lies on the way (the message gives how far it

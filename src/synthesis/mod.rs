@@ -152,6 +152,15 @@ fn assignments<'a>(
 }
 
 /// All candidates of all Appendix tables, in table, row, variant and assignment order.
+///
+/// # Complexity
+/// Exponential in the length of the words: for each P/R word of a table, every pattern of
+/// revolute directions the table allows ([`rules::revolute_patterns`], a multinomial count in
+/// the r revolutes) is combined with every assignment of the 3 directions to the p prismatic
+/// joints (3^p), each combination is checked against the rules of §2
+/// ([`rules::violations`]), and each admissible one is read in C/U/S letters
+/// ([`rules::readings`]). The tables are fixed (six-joint words, at most three P), so the
+/// whole enumeration takes about 3–6 ms (`cargo bench --bench synthesis`).
 #[must_use]
 pub fn enumerate(options: &Options) -> Vec<Candidate> {
     let mut out = Vec::new();
