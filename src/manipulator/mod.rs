@@ -18,21 +18,21 @@ pub mod build;
 pub mod file;
 mod jacobian;
 pub mod leg;
+pub mod lookup;
 mod modes;
 mod position;
 mod singularity;
 
 pub use jacobian::{Jacobians, RowKind, WrenchRow};
 pub use leg::{LegCheck, LegWarning, LegWarningKind};
+pub use lookup::{CatalogueChain, ChainLookup, CommittedChains};
 pub use modes::{MAX_INPUTS, Mode, Modes, PatternModes};
 pub use position::{PlatformGoal, Position, PositionRequest};
 pub use singularity::{Analysis, GenericRanks, Singularity, SingularityKind, rank_text};
 
-use crate::catalogue::Catalogue;
 use crate::chain::Displacement;
 use crate::mechanism::{JointSpec, Mechanism, MechanismError};
 use crate::notation::{Chain, JointKind, Primitive};
-use crate::synthesis::Options;
 use file::{AxisSpec, Description, DescriptionError};
 use nalgebra::{Rotation3, Vector3};
 use std::ops::Range;
@@ -115,7 +115,17 @@ impl Manipulator {
         Self::new(&Description::from_json(text)?)
     }
 
-    /// Builds a manipulator from a description.
+    /// Builds a manipulator from a description, resolving catalogue ids (and catalogue chains
+    /// whose axes are left out) in the committed catalogue ([`CommittedChains`]).
+    ///
+    /// # Errors
+    /// See [`Manipulator::new_with`].
+    pub fn new(d: &Description) -> Result<Self, ManipulatorError> {
+        Self::new_with(d, CommittedChains::get())
+    }
+
+    /// Builds a manipulator from a description, resolving catalogue ids (and catalogue chains
+    /// whose axes are left out) through `lookup`.
     ///
     /// # Errors
     /// A chain that does not parse or an unknown catalogue id, axes or points in the wrong
@@ -123,7 +133,7 @@ impl Manipulator {
     /// revolute is not parallel to its slider, a U with parallel axes, an S with dependent
     /// axes), revolutes of one parallel group (`Ra…Ra`) whose axes are not parallel, a one-joint leg whose base and platform points differ, actuated positions out of
     /// range, or no leg at all. Each error names its field.
-    pub fn new(d: &Description) -> Result<Self, ManipulatorError> {
+    pub fn new_with(d: &Description, lookup: &dyn ChainLookup) -> Result<Self, ManipulatorError> {
         if d.legs.is_empty() {
             return Err(
                 DescriptionError::new("legs", "no leg: a manipulator needs at least one").into(),
@@ -148,7 +158,6 @@ impl Manipulator {
         );
         let frame: Displacement = (rotation, Vector3::from(d.platform.position));
         let to_ground = |p: &[f64; 3]| frame.0 * Vector3::from(*p) + frame.1;
-        let mut catalogue: Option<Catalogue> = None;
         let mut bodies: Vec<String> = vec!["ground".into(), "platform".into()];
         let mut joints = Vec::new();
         let mut legs = Vec::new();
@@ -157,7 +166,7 @@ impl Manipulator {
             let field = |f: &str| format!("legs[{i}].{f}");
             finite(&spec.base, &field("base"))?;
             finite(&spec.platform, &field("platform"))?;
-            let (chain, entry_axes) = leg_chain(&spec.chain, spec.axes.is_none(), &mut catalogue)
+            let (chain, entry_axes) = leg_chain(&spec.chain, spec.axes.is_none(), lookup)
                 .map_err(|m| DescriptionError::new(field("chain"), m))?;
             let kinds: Vec<Primitive> = chain.primitives().map(|(p, _)| p).collect();
             let letters = chain.joints().len();
@@ -457,34 +466,34 @@ fn finite(p: &[f64; 3], field: &str) -> Result<(), DescriptionError> {
 }
 
 /// The chain of a leg (notation or catalogue id), and the catalogue's axis word when the chain
-/// is a catalogue chain.
+/// is a catalogue chain. The lookup is asked only for an id, or for a notation whose axes are
+/// missing (`need_axes`).
 pub(crate) fn leg_chain(
     text: &str,
     need_axes: bool,
-    catalogue: &mut Option<Catalogue>,
+    lookup: &dyn ChainLookup,
 ) -> Result<(Chain, Option<String>), String> {
     let bytes = text.trim().as_bytes();
     let looks_like_id = bytes.len() > 3
         && bytes[0].eq_ignore_ascii_case(&b'T')
         && bytes[1].is_ascii_digit()
         && bytes.contains(&b'-');
-    if !looks_like_id && !need_axes {
-        let chain: Chain = text.parse().map_err(|e| format!("{text:?}: {e}"))?;
-        return Ok((chain, None));
-    }
-    let cat = catalogue.get_or_insert_with(|| Catalogue::synthesise(&Options::default()));
     if looks_like_id {
-        let entry = cat
-            .find(text)
+        let entry = lookup
+            .chain(text)
             .ok_or_else(|| format!("{text:?} is not a catalogue id (see kinsyn catalogue list)"))?;
         let chain: Chain = entry
             .notation
             .parse()
             .map_err(|e| format!("catalogue entry {}: {e}", entry.id))?;
-        return Ok((chain, Some(entry.axes.clone())));
+        return Ok((chain, Some(entry.axes.to_owned())));
     }
     let chain: Chain = text.parse().map_err(|e| format!("{text:?}: {e}"))?;
-    let axes = cat.find(text).map(|e| e.axes.clone());
+    let axes = if need_axes {
+        lookup.chain(text).map(|e| e.axes.to_owned())
+    } else {
+        None
+    };
     Ok((chain, axes))
 }
 
