@@ -267,6 +267,19 @@ pub fn random_unit(rng: &mut impl Rng) -> Vector3<f64> {
     }
 }
 
+/// A random configuration of a serial chain: revolutes in [−π, π), prismatics in [−1, 1)
+/// (lengths in the chain's units), one value per joint in chain order.
+pub fn random_configuration(chain: &SerialChain, rng: &mut impl Rng) -> Vec<f64> {
+    chain
+        .joints()
+        .iter()
+        .map(|j| match j.kind {
+            Primitive::R => rng.random_range(-std::f64::consts::PI..std::f64::consts::PI),
+            Primitive::P => rng.random_range(-1.0..1.0),
+        })
+        .collect()
+}
+
 /// The joints of the generic chain of paper 000 Fig. 1, in order from the base: prismatic
 /// `a`, revolute `α`, prismatic `b`, revolute `β`, ... — six P and six R alternating.
 pub const GENERIC_JOINTS: [&str; 12] = [

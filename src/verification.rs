@@ -23,11 +23,13 @@
 //! ```
 
 use crate::chain::SerialChain;
+/// Moved to [`crate::chain`]; re-exported here for earlier callers.
+pub use crate::chain::random_configuration;
 use crate::linalg::{self, DEFAULT_RANK_TOLERANCE};
 use crate::motion::{self, Classification};
 use crate::notation::Primitive;
 use nalgebra::DMatrix;
-use rand::{Rng, SeedableRng};
+use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
@@ -95,18 +97,6 @@ fn round_off_to_zero(x: f64) -> f64 {
     } else {
         round_significant(x, 3)
     }
-}
-
-/// A random configuration: revolutes in [−π, π), prismatics in [−1, 1).
-pub fn random_configuration(chain: &SerialChain, rng: &mut impl Rng) -> Vec<f64> {
-    chain
-        .joints()
-        .iter()
-        .map(|j| match j.kind {
-            Primitive::R => rng.random_range(-std::f64::consts::PI..std::f64::consts::PI),
-            Primitive::P => rng.random_range(-1.0..1.0),
-        })
-        .collect()
 }
 
 /// A lock set as text: the 1-based positions of the locked joints, `-` for none.

@@ -1170,3 +1170,76 @@ fn a_description_reads_its_numbers_exactly_and_its_own_json_back() {
         assert_eq!(again.to_json(), d.to_json(), "{text}");
     }
 }
+
+// ---- Issue 10, item 4: catalogue ids resolved through a lookup, not by synthesis ----
+
+#[test]
+fn the_committed_lookup_gives_every_synthesised_entry() {
+    // Manipulator::new resolves ids in the compiled-in catalogue (CommittedChains) instead of
+    // synthesising it; both must give, for every entry's id and notation, the same entry,
+    // notation and axis word as Catalogue::synthesise with the default options.
+    use kinsyn::catalogue::Catalogue;
+    use kinsyn::manipulator::{ChainLookup, CommittedChains};
+    use kinsyn::synthesis::Options;
+    let synthesised = Catalogue::synthesise(&Options::default());
+    let committed = CommittedChains::get();
+    assert!(!synthesised.entries.is_empty());
+    for e in &synthesised.entries {
+        for query in [e.id.as_str(), &e.id.to_lowercase(), &e.notation] {
+            assert_eq!(committed.chain(query), synthesised.chain(query), "{query}");
+        }
+        let found = committed.chain(&e.id).unwrap();
+        assert_eq!(
+            (found.notation, found.axes),
+            (e.notation.as_str(), e.axes.as_str())
+        );
+    }
+    assert_eq!(committed.chain("T9-999"), None);
+    assert_eq!(committed.chain("not a chain"), None);
+}
+
+#[test]
+fn a_catalogue_id_builds_the_same_manipulator_as_the_synthesised_catalogue() {
+    // A 3-leg description whose legs are catalogue ids with the catalogue's axes (docs/
+    // mechanism-format.md: `chain` may be an id, `axes` left out): Manipulator::new (committed
+    // lookup) and Manipulator::new_with the synthesised catalogue give the same legs, joints
+    // (kind, axis, point, bodies) and inputs.
+    use kinsyn::catalogue::Catalogue;
+    use kinsyn::manipulator::file::Description;
+    use kinsyn::synthesis::Options;
+    let text = r#"{
+      "format": "kinsyn-manipulator/1",
+      "name": "3-T4-034",
+      "units": {"length": "m", "angle": "deg"},
+      "platform": {"position": [0.0, 0.0, 1.0], "orientation": [0.0, 0.0, 0.0], "point": [0.0, 0.0, 0.0]},
+      "legs": [
+        {"chain": "T4-034", "base": [1.0, 0.0, 0.0], "platform": [0.5, 0.0, 0.0], "actuated": [1]},
+        {"chain": "t4-034", "base": [-0.5, 0.866, 0.0], "platform": [-0.25, 0.433, 0.0], "actuated": [1]},
+        {"chain": "T1-001", "base": [-0.5, -0.866, 0.0], "platform": [-0.25, -0.433, 0.0], "actuated": [1]}
+      ]
+    }"#;
+    let d = Description::from_json(text).unwrap();
+    let by_default = Manipulator::new(&d).unwrap();
+    let synthesised = Catalogue::synthesise(&Options::default());
+    let by_synthesis = Manipulator::new_with(&d, &synthesised).unwrap();
+    assert_eq!(by_default.legs(), by_synthesis.legs());
+    assert_eq!(by_default.actuators(), by_synthesis.actuators());
+    assert_eq!(
+        by_default.mechanism().joints(),
+        by_synthesis.mechanism().joints()
+    );
+    assert_eq!(
+        by_default.legs()[0].chain.to_string(),
+        synthesised.find("T4-034").unwrap().notation
+    );
+    // An unknown id is refused the same way by both.
+    let bad = Description::from_json(&text.replace("T1-001", "T9-999")).unwrap();
+    let (a, b) = (
+        Manipulator::new(&bad).unwrap_err().to_string(),
+        Manipulator::new_with(&bad, &synthesised)
+            .unwrap_err()
+            .to_string(),
+    );
+    assert_eq!(a, b);
+    assert!(a.contains("legs[2].chain") && a.contains("T9-999"), "{a}");
+}

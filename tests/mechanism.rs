@@ -344,3 +344,39 @@ fn a_classification_reports_the_gap_of_its_rank_decisions() {
         locked.rank_gap
     );
 }
+
+#[test]
+fn assembly_settings_default_to_the_assembly_constants() {
+    // Issue 10, item 6: the assembly's tolerance and step counts are named settings. The default
+    // is what assemble_to has always used (1e-10, 100 steps, 2 polishing steps), and assembling
+    // with it gives bit for bit what assemble_to gives; a looser tolerance with no polishing
+    // stops once the residual is below it, and no step at all refuses an open loop.
+    use kinsyn::mechanism::{ASSEMBLY_STEPS, ASSEMBLY_TOLERANCE, AssemblySettings};
+    let d = AssemblySettings::default();
+    assert_eq!(
+        (d.tolerance, d.max_steps, d.polishing_steps),
+        (1e-10, 100, 2)
+    );
+    assert_eq!((ASSEMBLY_TOLERANCE, ASSEMBLY_STEPS), (1e-10, 100));
+    let m = four_bar();
+    let locked = [true, false, false, false];
+    let mut moved = vec![0.0; 4];
+    moved[0] = 0.3;
+    let by_default = m.assemble_to(&moved, &locked, None).unwrap();
+    assert_eq!(
+        m.assemble_with(&moved, &locked, None, &d).unwrap(),
+        by_default
+    );
+    let loose = AssemblySettings {
+        tolerance: 1e-3,
+        polishing_steps: 0,
+        ..d
+    };
+    let rough = m.assemble_with(&moved, &locked, None, &loose).unwrap();
+    assert!(m.closure_residual(&rough).amax() < 1e-3);
+    let none = AssemblySettings { max_steps: 0, ..d };
+    assert!(matches!(
+        m.assemble_with(&moved, &locked, None, &none),
+        Err(MechanismError::NotAssembled { iterations: 0, .. })
+    ));
+}

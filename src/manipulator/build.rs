@@ -23,6 +23,7 @@
 
 use super::file::{AngleUnit, AxisSpec, Description, FORMAT, LegSpec, PlatformSpec, Units};
 use super::leg::LegCheck;
+use super::lookup::ChainLookup as _;
 use crate::chain::SerialChain;
 use crate::notation::{Chain, Primitive};
 use nalgebra::Vector3;
@@ -208,8 +209,8 @@ pub fn build(spec: &BuildSpec) -> Result<Description, String> {
             spec.twist
         ));
     }
-    let mut catalogue = None;
-    let (chain, entry_axes) = super::leg_chain(&spec.chain, spec.axes.is_none(), &mut catalogue)?;
+    let lookup = super::CommittedChains::get();
+    let (chain, entry_axes) = super::leg_chain(&spec.chain, spec.axes.is_none(), lookup)?;
     let primitives = chain.primitives().count();
     let axes = match (&spec.axes, entry_axes) {
         (Some(word), _) => word.clone(),
@@ -372,9 +373,8 @@ pub fn build(spec: &BuildSpec) -> Result<Description, String> {
             actuated: Some(actuated.clone()),
         });
     }
-    let from_catalogue = catalogue
-        .as_ref()
-        .and_then(|c| c.find(&spec.chain))
+    let from_catalogue = lookup
+        .chain(&spec.chain)
         .filter(|e| e.id.eq_ignore_ascii_case(spec.chain.trim()))
         .map(|e| format!(" (legs: catalogue entry {} {})", e.id, e.notation));
     let name = spec

@@ -24,9 +24,9 @@
 
 use super::{AXIS_TOLERANCE, Manipulator};
 use crate::chain::SerialChain;
+use crate::chain::random_configuration;
 use crate::linalg::{self, Rank};
 use crate::notation::{Chain, Primitive};
-use crate::verification::random_configuration;
 use nalgebra::{DMatrix, Vector3};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;

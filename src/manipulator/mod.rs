@@ -18,21 +18,21 @@ pub mod build;
 pub mod file;
 mod jacobian;
 pub mod leg;
+pub mod lookup;
 mod modes;
 mod position;
 mod singularity;
 
 pub use jacobian::{Jacobians, RowKind, WrenchRow};
 pub use leg::{LegCheck, LegWarning, LegWarningKind};
+pub use lookup::{CatalogueChain, ChainLookup, CommittedChains};
 pub use modes::{MAX_INPUTS, Mode, Modes, PatternModes};
 pub use position::{PlatformGoal, Position, PositionRequest};
 pub use singularity::{Analysis, GenericRanks, Singularity, SingularityKind, rank_text};
 
-use crate::catalogue::Catalogue;
 use crate::chain::Displacement;
 use crate::mechanism::{JointSpec, Mechanism, MechanismError};
 use crate::notation::{Chain, JointKind, Primitive};
-use crate::synthesis::Options;
 use file::{AxisSpec, Description, DescriptionError};
 use nalgebra::{Rotation3, Vector3};
 use std::ops::Range;
@@ -136,7 +136,17 @@ impl Manipulator {
         Self::new(&Description::from_json(text)?)
     }
 
-    /// Builds a manipulator from a description.
+    /// Builds a manipulator from a description, resolving catalogue ids (and catalogue chains
+    /// whose axes are left out) in the committed catalogue ([`CommittedChains`]).
+    ///
+    /// # Errors
+    /// See [`Manipulator::new_with`].
+    pub fn new(d: &Description) -> Result<Self, ManipulatorError> {
+        Self::new_with(d, CommittedChains::get())
+    }
+
+    /// Builds a manipulator from a description, resolving catalogue ids (and catalogue chains
+    /// whose axes are left out) through `lookup`.
     ///
     /// # Errors
     /// A chain that does not parse or an unknown catalogue id, axes or points in the wrong
@@ -144,177 +154,34 @@ impl Manipulator {
     /// revolute is not parallel to its slider, a U with parallel axes, an S with dependent
     /// axes), revolutes of one parallel group (`Ra…Ra`) whose axes are not parallel, a one-joint leg whose base and platform points differ, actuated positions out of
     /// range, or no leg at all. Each error names its field.
-    pub fn new(d: &Description) -> Result<Self, ManipulatorError> {
-        if d.legs.is_empty() {
-            return Err(
-                DescriptionError::new("legs", "no leg: a manipulator needs at least one").into(),
-            );
-        }
-        if d.legs.len() > MAX_LEGS {
-            return Err(DescriptionError::new(
-                "legs",
-                format!(
-                    "{} legs: at most {MAX_LEGS} (docs/limits.md; the analysis grows with the cube of the number of joints)",
-                    d.legs.len()
-                ),
-            )
-            .into());
-        }
-        let angle = d.units.angle;
-        finite(&d.platform.position, "platform.position")?;
-        finite(&d.platform.orientation, "platform.orientation")?;
-        finite(&d.platform.point, "platform.point")?;
-        let rotation = Rotation3::from_scaled_axis(
-            Vector3::from(d.platform.orientation).map(|a| angle.to_radians(a)),
-        );
-        let frame: Displacement = (rotation, Vector3::from(d.platform.position));
-        let to_ground = |p: &[f64; 3]| frame.0 * Vector3::from(*p) + frame.1;
-        let mut catalogue: Option<Catalogue> = None;
-        let mut bodies: Vec<String> = vec!["ground".into(), "platform".into()];
-        let mut joints = Vec::new();
+    pub fn new_with(d: &Description, lookup: &dyn ChainLookup) -> Result<Self, ManipulatorError> {
+        let frame = platform_frame(d)?;
+        let mut builder = MechanismBuilder::new();
         let mut legs = Vec::new();
         let mut actuators = Vec::new();
         for (i, spec) in d.legs.iter().enumerate() {
-            let field = |f: &str| format!("legs[{i}].{f}");
-            finite(&spec.base, &field("base"))?;
-            finite(&spec.platform, &field("platform"))?;
-            let (chain, entry_axes) = leg_chain(&spec.chain, spec.axes.is_none(), &mut catalogue)
-                .map_err(|m| DescriptionError::new(field("chain"), m))?;
-            let kinds: Vec<Primitive> = chain.primitives().map(|(p, _)| p).collect();
-            let letters = chain.joints().len();
-            let base = Vector3::from(spec.base);
-            let end = to_ground(&spec.platform);
-            // One point per joint letter.
-            let points: Vec<Vector3<f64>> = match &spec.points {
-                Some(between) if letters == 1 && between.is_empty() => vec![base],
-                Some(_) if letters == 1 => {
-                    return Err(DescriptionError::new(
-                        field("points"),
-                        format!("{chain} has one joint, so no joint lies between the first and the last; leave points out"),
-                    )
-                    .into());
-                }
-                Some(between) => {
-                    if between.len() + 2 != letters {
-                        return Err(DescriptionError::new(
-                            field("points"),
-                            format!(
-                                "{} points for the {} joints of {} between the first and the last (expected {})",
-                                between.len(),
-                                letters.saturating_sub(2),
-                                chain,
-                                letters.saturating_sub(2)
-                            ),
-                        )
-                        .into());
-                    }
-                    for (k, p) in between.iter().enumerate() {
-                        finite(p, &field(&format!("points[{k}]")))?;
-                    }
-                    std::iter::once(base)
-                        .chain(between.iter().map(|p| Vector3::from(*p)))
-                        .chain(std::iter::once(end))
-                        .collect()
-                }
-                None if letters == 1 => vec![base],
-                None => (0..letters)
-                    .map(|k| base + (end - base) * (k as f64 / (letters - 1) as f64))
-                    .collect(),
-            };
-            if letters == 1 && (end - base).norm() > 1e-9 * (1.0 + base.norm()) {
-                return Err(DescriptionError::new(
-                    field("platform"),
-                    format!("the leg {chain} has one joint, so it does not reach the platform point unless base and platform are the same point"),
-                )
-                .into());
-            }
-            let along = end - base;
-            let axes: Vec<Vector3<f64>> = match (&spec.axes, entry_axes) {
-                (Some(axes), _) => {
-                    if axes.len() != kinds.len() {
-                        return Err(DescriptionError::new(
-                            field("axes"),
-                            format!(
-                                "{} axes for the {} primitive joints of {chain}",
-                                axes.len(),
-                                kinds.len()
-                            ),
-                        )
-                        .into());
-                    }
-                    axes.iter()
-                        .enumerate()
-                        .map(|(k, a)| {
-                            axis_vector(a, &along)
-                                .map_err(|m| DescriptionError::new(field(&format!("axes[{k}]")), m))
-                        })
-                        .collect::<Result<_, _>>()?
-                }
-                (None, Some(word)) => {
-                    let frame = build::leg_frame(&base, &end);
-                    word.bytes().map(|b| frame[(b - b'x') as usize]).collect()
-                }
-                (None, None) => {
-                    return Err(DescriptionError::new(
-                        field("axes"),
-                        format!("missing, and {chain} is not a catalogue chain whose axes could be used; give one axis per primitive joint"),
-                    )
-                    .into());
-                }
-            };
-            check_joint_axes(&chain, &axes)
-                .map_err(|f| DescriptionError::new(field(&format!("axes[{}]", f.at)), f.why))?;
-            leg::check_parallel_marks(&chain, &axes).map_err(|f| {
-                DescriptionError::new(field(&format!("axes[{}]", f.at)), f.message(&chain))
-            })?;
-            let actuated = actuated_positions(&chain, spec.actuated.as_deref())
-                .map_err(|m| DescriptionError::new(field("actuated"), m))?;
-            // Joints: ground → link 1 → ... → platform.
-            let first = joints.len();
-            let mut previous = 0;
-            let mut k = 0;
-            for (letter, joint) in chain.joints().iter().enumerate() {
-                for _ in joint.kind.primitives() {
-                    let next = if k + 1 == kinds.len() {
-                        1
-                    } else {
-                        bodies.push(format!("leg {} link {}", i + 1, k + 1));
-                        bodies.len() - 1
-                    };
-                    joints.push(JointSpec::new(
-                        kinds[k],
-                        axes[k],
-                        points[letter],
-                        previous,
-                        next,
-                    ));
-                    previous = next;
-                    k += 1;
-                }
-            }
-            for &p in &actuated {
-                actuators.push(Actuator {
-                    leg: i,
-                    position: p,
-                    joint: first + p,
-                    kind: kinds[p],
-                });
-            }
+            let geometry = LegGeometry::new(i, spec, &frame, lookup)?;
+            let joints =
+                builder.add_serial_leg(MechanismBuilder::GROUND, PLATFORM, i + 1, &geometry);
+            actuators.extend(geometry.actuated.iter().map(|&p| Actuator {
+                leg: i,
+                position: p,
+                joint: joints.start + p,
+                kind: geometry.kinds[p],
+            }));
             legs.push(Leg {
-                chain,
-                joints: first..joints.len(),
+                chain: geometry.chain,
+                joints,
             });
         }
-        let names: Vec<&str> = bodies.iter().map(String::as_str).collect();
-        let mechanism = Mechanism::new(&names, 0, joints)?;
         Ok(Manipulator {
             name: d.name.clone(),
             units: d.units.clone(),
-            mechanism,
+            mechanism: builder.build()?,
             legs,
             actuators,
-            platform: 1,
-            point: to_ground(&d.platform.point),
+            platform: PLATFORM,
+            point: frame.0 * Vector3::from(d.platform.point) + frame.1,
             frame,
         })
     }
@@ -477,35 +344,277 @@ fn finite(p: &[f64; 3], field: &str) -> Result<(), DescriptionError> {
     }
 }
 
+/// The platform body of a manipulator's mechanism (the ground is body 0).
+const PLATFORM: usize = 1;
+
+/// Checks the description's leg count and platform fields, and gives the platform frame at the
+/// reference configuration (ground frame).
+fn platform_frame(d: &Description) -> Result<Displacement, ManipulatorError> {
+    if d.legs.is_empty() {
+        return Err(
+            DescriptionError::new("legs", "no leg: a manipulator needs at least one").into(),
+        );
+    }
+    if d.legs.len() > MAX_LEGS {
+        return Err(DescriptionError::new(
+            "legs",
+            format!(
+                "{} legs: at most {MAX_LEGS} (docs/limits.md; the analysis grows with the cube of the number of joints)",
+                d.legs.len()
+            ),
+        )
+        .into());
+    }
+    let angle = d.units.angle;
+    finite(&d.platform.position, "platform.position")?;
+    finite(&d.platform.orientation, "platform.orientation")?;
+    finite(&d.platform.point, "platform.point")?;
+    let rotation = Rotation3::from_scaled_axis(
+        Vector3::from(d.platform.orientation).map(|a| angle.to_radians(a)),
+    );
+    Ok((rotation, Vector3::from(d.platform.position)))
+}
+
+/// One leg's geometry at the reference configuration, checked: its chain, primitive joints,
+/// one point per joint letter and one unit axis per primitive joint (ground frame), and its
+/// actuated primitives.
+struct LegGeometry {
+    chain: Chain,
+    kinds: Vec<Primitive>,
+    points: Vec<Vector3<f64>>,
+    axes: Vec<Vector3<f64>>,
+    actuated: Vec<usize>,
+}
+
+impl LegGeometry {
+    /// Leg `i` of a description, its platform point placed by the platform `frame`, catalogue
+    /// chains resolved through `lookup`. Errors name the field (`legs[i].axes[2]`).
+    fn new(
+        i: usize,
+        spec: &file::LegSpec,
+        frame: &Displacement,
+        lookup: &dyn ChainLookup,
+    ) -> Result<Self, ManipulatorError> {
+        let field = |f: &str| format!("legs[{i}].{f}");
+        finite(&spec.base, &field("base"))?;
+        finite(&spec.platform, &field("platform"))?;
+        let (chain, entry_axes) = leg_chain(&spec.chain, spec.axes.is_none(), lookup)
+            .map_err(|m| DescriptionError::new(field("chain"), m))?;
+        let kinds: Vec<Primitive> = chain.primitives().map(|(p, _)| p).collect();
+        let base = Vector3::from(spec.base);
+        let end = frame.0 * Vector3::from(spec.platform) + frame.1;
+        let points = leg_points(&chain, spec, &base, &end, &field)?;
+        let axes = leg_axes(&chain, spec, entry_axes, &base, &end, &field)?;
+        check_joint_axes(&chain, &axes)
+            .map_err(|f| DescriptionError::new(field(&format!("axes[{}]", f.at)), f.why))?;
+        leg::check_parallel_marks(&chain, &axes).map_err(|f| {
+            DescriptionError::new(field(&format!("axes[{}]", f.at)), f.message(&chain))
+        })?;
+        let actuated = actuated_positions(&chain, spec.actuated.as_deref())
+            .map_err(|m| DescriptionError::new(field("actuated"), m))?;
+        Ok(LegGeometry {
+            chain,
+            kinds,
+            points,
+            axes,
+            actuated,
+        })
+    }
+}
+
+/// One point per joint letter of a leg from `base` to `end`: the description's points between
+/// the first and the last, or points evenly spaced on the segment. A one-joint leg must have
+/// its base and platform points at the same place.
+fn leg_points(
+    chain: &Chain,
+    spec: &file::LegSpec,
+    base: &Vector3<f64>,
+    end: &Vector3<f64>,
+    field: &dyn Fn(&str) -> String,
+) -> Result<Vec<Vector3<f64>>, ManipulatorError> {
+    let letters = chain.joints().len();
+    let points: Vec<Vector3<f64>> = match &spec.points {
+        Some(between) if letters == 1 && between.is_empty() => vec![*base],
+        Some(_) if letters == 1 => {
+            return Err(DescriptionError::new(
+                field("points"),
+                format!("{chain} has one joint, so no joint lies between the first and the last; leave points out"),
+            )
+            .into());
+        }
+        Some(between) => {
+            if between.len() + 2 != letters {
+                return Err(DescriptionError::new(
+                    field("points"),
+                    format!(
+                        "{} points for the {} joints of {} between the first and the last (expected {})",
+                        between.len(),
+                        letters.saturating_sub(2),
+                        chain,
+                        letters.saturating_sub(2)
+                    ),
+                )
+                .into());
+            }
+            for (k, p) in between.iter().enumerate() {
+                finite(p, &field(&format!("points[{k}]")))?;
+            }
+            std::iter::once(*base)
+                .chain(between.iter().map(|p| Vector3::from(*p)))
+                .chain(std::iter::once(*end))
+                .collect()
+        }
+        None if letters == 1 => vec![*base],
+        None => (0..letters)
+            .map(|k| base + (end - base) * (k as f64 / (letters - 1) as f64))
+            .collect(),
+    };
+    if letters == 1 && (end - base).norm() > 1e-9 * (1.0 + base.norm()) {
+        return Err(DescriptionError::new(
+            field("platform"),
+            format!("the leg {chain} has one joint, so it does not reach the platform point unless base and platform are the same point"),
+        )
+        .into());
+    }
+    Ok(points)
+}
+
+/// One unit axis per primitive joint of a leg: the description's, or the catalogue's axis word
+/// read in the leg frame from `base` to `end` ([`build::leg_frame`]).
+fn leg_axes(
+    chain: &Chain,
+    spec: &file::LegSpec,
+    entry_axes: Option<String>,
+    base: &Vector3<f64>,
+    end: &Vector3<f64>,
+    field: &dyn Fn(&str) -> String,
+) -> Result<Vec<Vector3<f64>>, ManipulatorError> {
+    let primitives = chain.primitives().count();
+    let along = end - base;
+    match (&spec.axes, entry_axes) {
+        (Some(axes), _) => {
+            if axes.len() != primitives {
+                return Err(DescriptionError::new(
+                    field("axes"),
+                    format!(
+                        "{} axes for the {} primitive joints of {chain}",
+                        axes.len(),
+                        primitives
+                    ),
+                )
+                .into());
+            }
+            Ok(axes
+                .iter()
+                .enumerate()
+                .map(|(k, a)| {
+                    axis_vector(a, &along)
+                        .map_err(|m| DescriptionError::new(field(&format!("axes[{k}]")), m))
+                })
+                .collect::<Result<_, _>>()?)
+        }
+        (None, Some(word)) => {
+            let frame = build::leg_frame(base, end);
+            Ok(word.bytes().map(|b| frame[(b - b'x') as usize]).collect())
+        }
+        (None, None) => Err(DescriptionError::new(
+            field("axes"),
+            format!("missing, and {chain} is not a catalogue chain whose axes could be used; give one axis per primitive joint"),
+        )
+        .into()),
+    }
+}
+
+/// Bodies and primitive joints gathered leg by leg, then made a [`Mechanism`] with body 0 as
+/// the ground.
+struct MechanismBuilder {
+    bodies: Vec<String>,
+    joints: Vec<JointSpec>,
+}
+
+impl MechanismBuilder {
+    /// The ground body.
+    const GROUND: usize = 0;
+
+    /// The ground and the platform, no joint yet.
+    fn new() -> Self {
+        MechanismBuilder {
+            bodies: vec!["ground".into(), "platform".into()],
+            joints: Vec::new(),
+        }
+    }
+
+    /// Adds a serial leg from body `from` to body `to`: its primitive joints in order, with a
+    /// new intermediate body (`leg {number} link {k}`) between consecutive primitives, each
+    /// joint at its letter's point. Gives the leg's joints in the mechanism.
+    fn add_serial_leg(
+        &mut self,
+        from: usize,
+        to: usize,
+        number: usize,
+        leg: &LegGeometry,
+    ) -> Range<usize> {
+        let first = self.joints.len();
+        let mut previous = from;
+        let mut k = 0;
+        for (letter, joint) in leg.chain.joints().iter().enumerate() {
+            for _ in joint.kind.primitives() {
+                let next = if k + 1 == leg.kinds.len() {
+                    to
+                } else {
+                    self.bodies.push(format!("leg {number} link {}", k + 1));
+                    self.bodies.len() - 1
+                };
+                self.joints.push(JointSpec::new(
+                    leg.kinds[k],
+                    leg.axes[k],
+                    leg.points[letter],
+                    previous,
+                    next,
+                ));
+                previous = next;
+                k += 1;
+            }
+        }
+        first..self.joints.len()
+    }
+
+    /// The mechanism of the bodies and joints added.
+    fn build(self) -> Result<Mechanism, MechanismError> {
+        let names: Vec<&str> = self.bodies.iter().map(String::as_str).collect();
+        Mechanism::new(&names, Self::GROUND, self.joints)
+    }
+}
+
 /// The chain of a leg (notation or catalogue id), and the catalogue's axis word when the chain
-/// is a catalogue chain.
+/// is a catalogue chain. The lookup is asked only for an id, or for a notation whose axes are
+/// missing (`need_axes`).
 pub(crate) fn leg_chain(
     text: &str,
     need_axes: bool,
-    catalogue: &mut Option<Catalogue>,
+    lookup: &dyn ChainLookup,
 ) -> Result<(Chain, Option<String>), String> {
     let bytes = text.trim().as_bytes();
     let looks_like_id = bytes.len() > 3
         && bytes[0].eq_ignore_ascii_case(&b'T')
         && bytes[1].is_ascii_digit()
         && bytes.contains(&b'-');
-    if !looks_like_id && !need_axes {
-        let chain: Chain = text.parse().map_err(|e| format!("{text:?}: {e}"))?;
-        return Ok((chain, None));
-    }
-    let cat = catalogue.get_or_insert_with(|| Catalogue::synthesise(&Options::default()));
     if looks_like_id {
-        let entry = cat
-            .find(text)
+        let entry = lookup
+            .chain(text)
             .ok_or_else(|| format!("{text:?} is not a catalogue id (see kinsyn catalogue list)"))?;
         let chain: Chain = entry
             .notation
             .parse()
             .map_err(|e| format!("catalogue entry {}: {e}", entry.id))?;
-        return Ok((chain, Some(entry.axes.clone())));
+        return Ok((chain, Some(entry.axes.to_owned())));
     }
     let chain: Chain = text.parse().map_err(|e| format!("{text:?}: {e}"))?;
-    let axes = cat.find(text).map(|e| e.axes.clone());
+    let axes = if need_axes {
+        lookup.chain(text).map(|e| e.axes.to_owned())
+    } else {
+        None
+    };
     Ok((chain, axes))
 }
 

@@ -29,6 +29,31 @@ pub const ASSEMBLY_STEPS: usize = 100;
 /// The steps taken after the tolerance is met, while they still reduce the residual.
 const POLISHING_STEPS: usize = 2;
 
+/// The settings of an assembly ([`Mechanism::assemble_with`]); the default is
+/// [`ASSEMBLY_TOLERANCE`], [`ASSEMBLY_STEPS`] and two polishing steps, what
+/// [`Mechanism::assemble_to`] uses.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct AssemblySettings {
+    /// The largest dimensionless residual component (radians, or lengths over the mechanism's
+    /// characteristic length) at which the loops count as closed and a goal as met.
+    pub tolerance: f64,
+    /// The most damped Newton steps tried before the assembly is given up.
+    pub max_steps: usize,
+    /// The steps taken after `tolerance` is met, each kept only while it reduces the residual
+    /// (to round-off: derivatives by finite differences of assemblies need it).
+    pub polishing_steps: usize,
+}
+
+impl Default for AssemblySettings {
+    fn default() -> Self {
+        AssemblySettings {
+            tolerance: ASSEMBLY_TOLERANCE,
+            max_steps: ASSEMBLY_STEPS,
+            polishing_steps: POLISHING_STEPS,
+        }
+    }
+}
+
 /// A residual at the round-off of dimensionless coordinates of order one: no step can improve it.
 const ROUND_OFF: f64 = 1e-14;
 
@@ -177,9 +202,9 @@ impl Goal {
 
 impl Mechanism {
     /// Closes the loops from `q` with the `locked` joints held, and meets `goal` when one is
-    /// given, by damped Newton steps on the dimensionless equations (module documentation).
-    /// The solution found is the one the steps reach from `q`: for a mechanism with several
-    /// assemblies, the one nearest `q` in this sense.
+    /// given, by damped Newton steps on the dimensionless equations (module documentation),
+    /// with the default [`AssemblySettings`]. The solution found is the one the steps reach
+    /// from `q`: for a mechanism with several assemblies, the one nearest `q` in this sense.
     ///
     /// # Errors
     /// [`MechanismError::NotAssembled`] when the largest dimensionless residual does not fall
@@ -191,6 +216,23 @@ impl Mechanism {
         locked: &[bool],
         goal: Option<&Goal>,
     ) -> Result<Vec<f64>, MechanismError> {
+        self.assemble_with(q, locked, goal, &AssemblySettings::default())
+    }
+
+    /// [`Mechanism::assemble_to`] with explicit settings: the tolerance, the most steps and the
+    /// polishing steps.
+    ///
+    /// # Errors
+    /// [`MechanismError::NotAssembled`] when the largest dimensionless residual does not fall
+    /// below `settings.tolerance` within `settings.max_steps` steps, or a step stops reducing
+    /// it (a configuration where the equations have no solution nearby).
+    pub fn assemble_with(
+        &self,
+        q: &[f64],
+        locked: &[bool],
+        goal: Option<&Goal>,
+        settings: &AssemblySettings,
+    ) -> Result<Vec<f64>, MechanismError> {
         let free = self.free(locked);
         let mut q = q.to_vec();
         let (mut rows, mut residual) = self.equations(&q, goal);
@@ -200,11 +242,11 @@ impl Mechanism {
         // Once the tolerance is met, a few more steps polish the solution to round-off (each
         // is kept only if it helps): derivatives by finite differences of assemblies need it.
         let mut polish = 0;
-        for iteration in 0..ASSEMBLY_STEPS {
-            let polishing = residual.amax() < ASSEMBLY_TOLERANCE;
+        for iteration in 0..settings.max_steps {
+            let polishing = residual.amax() < settings.tolerance;
             if polishing {
                 polish += 1;
-                if polish > POLISHING_STEPS || residual.amax() < ROUND_OFF {
+                if polish > settings.polishing_steps || residual.amax() < ROUND_OFF {
                     return Ok(q);
                 }
             }
@@ -251,7 +293,7 @@ impl Mechanism {
                 }
                 damping *= 10.0;
             }
-            if !improved && residual.amax() < ASSEMBLY_TOLERANCE {
+            if !improved && residual.amax() < settings.tolerance {
                 return Ok(q);
             }
             if !improved {
@@ -261,12 +303,12 @@ impl Mechanism {
                 });
             }
         }
-        if residual.amax() < ASSEMBLY_TOLERANCE {
+        if residual.amax() < settings.tolerance {
             return Ok(q);
         }
         Err(MechanismError::NotAssembled {
             residual: residual.amax(),
-            iterations: ASSEMBLY_STEPS,
+            iterations: settings.max_steps,
         })
     }
 

@@ -53,7 +53,7 @@
 mod assembly;
 mod motion;
 
-pub use assembly::{ASSEMBLY_STEPS, ASSEMBLY_TOLERANCE, Coordinate, Goal};
+pub use assembly::{ASSEMBLY_STEPS, ASSEMBLY_TOLERANCE, AssemblySettings, Coordinate, Goal};
 pub use motion::{MotionSample, SampleSettings};
 
 use crate::chain::{Displacement, JointAxis};
