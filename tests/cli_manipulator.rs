@@ -36,6 +36,25 @@ fn broken(dir: &tempfile::TempDir, name: &str, edit: impl FnOnce(&mut Value)) ->
     write(dir, name, &serde_json::to_string_pretty(&v).unwrap())
 }
 
+/// A 6-UPS with both U revolutes and the slider of every leg actuated (18 inputs: 2^18 lock
+/// subsets), written by `kinsyn build` into `dir`.
+fn eighteen_inputs(dir: &tempfile::TempDir) -> PathBuf {
+    let file = dir.path().join("18.json");
+    succeed(&[
+        "build",
+        "--legs",
+        "6",
+        "--chain",
+        "U(!,!)P!S",
+        "--twist",
+        "20",
+        "--alternate",
+        "-o",
+        file.to_str().unwrap(),
+    ]);
+    file
+}
+
 /// Asserts exit code 2, nothing on stdout, and exactly one stderr line that starts with
 /// `kinsyn: error:` and contains every one of `needles`.
 fn assert_input_error(o: &Output, what: &str, needles: &[&str]) {
@@ -974,20 +993,8 @@ fn modes_limits_are_one_line_and_exit_2() {
     // Eighteen inputs (every joint of a UPS leg but the S, six legs): 2^18 = 262144 subsets
     // against the default 4096; Σ_{k≤4} C(18, k) = 1 + 18 + 153 + 816 + 3060 = 4048 fit.
     let dir = tempfile::tempdir().unwrap();
-    let file = dir.path().join("18.json");
+    let file = eighteen_inputs(&dir);
     let file = file.to_str().unwrap();
-    succeed(&[
-        "build",
-        "--legs",
-        "6",
-        "--chain",
-        "U(!,!)P!S",
-        "--twist",
-        "20",
-        "--alternate",
-        "-o",
-        file,
-    ]);
     let o = kinsyn(&["modes", file]);
     assert_input_error(
         &o,
@@ -1030,20 +1037,8 @@ fn modes_text_is_bounded_whatever_the_number_of_subsets() {
     // at most six lock sets and says how many more --json lists.
     const BOUND: usize = 138;
     let dir = tempfile::tempdir().unwrap();
-    let file = dir.path().join("18.json");
+    let file = eighteen_inputs(&dir);
     let file = file.to_str().unwrap();
-    succeed(&[
-        "build",
-        "--legs",
-        "6",
-        "--chain",
-        "U(!,!)P!S",
-        "--twist",
-        "20",
-        "--alternate",
-        "-o",
-        file,
-    ]);
     // 1 + 18 + 153 = 172 subsets.
     let out = succeed(&["modes", file, "--max-locks", "2"]);
     assert!(

@@ -30,6 +30,18 @@ fn leg_length(d: &Description, i: usize, r: &Rotation3<f64>, p: &Vector3<f64>) -
     (p + r * b - a).norm()
 }
 
+/// The change of leg `i`'s length from the file's reference pose to the pose (R, p): the
+/// value of its slider, which the joint values measure from the reference.
+fn leg_length_change(d: &Description, i: usize, r: &Rotation3<f64>, p: &Vector3<f64>) -> f64 {
+    leg_length(d, i, r, p)
+        - leg_length(
+            d,
+            i,
+            &Rotation3::identity(),
+            &Vector3::from(d.platform.position),
+        )
+}
+
 fn frame(m: &Manipulator, q: &[f64]) -> (Vector3<f64>, Vector3<f64>) {
     let (r, p) = m.platform_frame(q);
     (p, rotation_log(&r))
@@ -40,7 +52,6 @@ fn frame(m: &Manipulator, q: &[f64]) -> (Vector3<f64>, Vector3<f64>) {
 #[test]
 fn six_ups_forward_kinematics_reaches_the_pose_of_its_leg_lengths() {
     let (m, d) = load("6-ups");
-    let reference_r = Rotation3::identity();
     let reference_p = Vector3::from(d.platform.position);
     for (p, rv) in [
         (
@@ -54,10 +65,7 @@ fn six_ups_forward_kinematics_reaches_the_pose_of_its_leg_lengths() {
         let inputs: Vec<(usize, f64)> = (0..6)
             .map(|i| {
                 let a = m.actuator_named(&format!("P{}.3", i + 1)).unwrap();
-                (
-                    a,
-                    leg_length(&d, i, &r, &p) - leg_length(&d, i, &reference_r, &reference_p),
-                )
+                (a, leg_length_change(&d, i, &r, &p))
             })
             .collect();
         let request = PositionRequest {
@@ -177,13 +185,7 @@ fn inputs_at_a_pose_are_the_closed_form_leg_length_changes() {
     let r = Rotation3::from_scaled_axis(rv);
     for i in 0..6 {
         let a = &m.actuators()[m.actuator_named(&format!("P{}.3", i + 1)).unwrap()];
-        let expected = leg_length(&d, i, &r, &p)
-            - leg_length(
-                &d,
-                i,
-                &Rotation3::identity(),
-                &Vector3::from(d.platform.position),
-            );
+        let expected = leg_length_change(&d, i, &r, &p);
         assert!((q[a.joint] - expected).abs() < 1e-9, "leg {}", i + 1);
     }
 }
@@ -205,13 +207,7 @@ fn a_pose_off_the_start_path_is_reached_and_flagged() {
     let p = Vector3::new(0.0, 0.0, 1.0);
     for i in 0..3 {
         let a = &m.actuators()[m.actuator_named(&format!("P{}.2", i + 1)).unwrap()];
-        let expected = leg_length(&d, i, &r, &p)
-            - leg_length(
-                &d,
-                i,
-                &Rotation3::identity(),
-                &Vector3::from(d.platform.position),
-            );
+        let expected = leg_length_change(&d, i, &r, &p);
         assert!(
             (reached.q[a.joint] - expected).abs() < 1e-9,
             "leg {}",

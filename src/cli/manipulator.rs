@@ -521,13 +521,12 @@ pub struct Placement<'a> {
     pub from: Option<&'a str>,
 }
 
-/// The start of `analyze` without `--from`.
-const START_AT_REFERENCE: &str = "the reference configuration";
-
 /// How the configuration analysed was reached, for the report.
 struct Reached {
     /// "the reference configuration" or "--from …".
     start: String,
+    /// Whether the start was given (`--from`) rather than the reference.
+    start_given: bool,
     /// Continuation steps from the start (0 when nothing was asked).
     steps: usize,
     /// Whether the configuration is the one continuous with the start.
@@ -554,7 +553,7 @@ pub fn analyze(
             configuration_at_pose(&m, "--from", text, &[])?,
             format!("--from {text}"),
         ),
-        None => (m.reference(), START_AT_REFERENCE.to_string()),
+        None => (m.reference(), "the reference configuration".to_string()),
     };
     let mut request = PositionRequest {
         held: locked.clone(),
@@ -592,6 +591,7 @@ pub fn analyze(
     };
     let reached = Reached {
         start: start_text,
+        start_given: placement.from.is_some(),
         steps,
         continuous,
     };
@@ -706,7 +706,7 @@ fn analysis_text(m: &Manipulator, a: &Analysis, reached: &Reached) -> String {
             "reached from {} by damped Newton steps, not by continuation: the path of the values from the start leaves the workspace or meets a singularity, so this may be another assembly mode than the start's",
             reached.start
         );
-    } else if reached.steps > 0 || reached.start != START_AT_REFERENCE {
+    } else if reached.steps > 0 || reached.start_given {
         let _ = writeln!(
             s,
             "reached from {} in {} continuation step{}: the assembly continuous with it (another start, --from POSE, may give another assembly)",
