@@ -153,8 +153,10 @@ pub fn check_position(data: &[u8]) {
             }
         }
         Some(PlatformGoal::Pose(goal)) => {
-            let off = (frame.1 - goal.1).norm() / (1.0 + goal.1.norm())
-                + kinsyn::mechanism::rotation_log(&(frame.0.inverse() * goal.0)).norm();
+            let off = (frame.translation.vector - goal.translation.vector).norm()
+                / (1.0 + goal.translation.vector.norm())
+                + kinsyn::mechanism::rotation_log(&(frame.rotation.inverse() * goal.rotation))
+                    .norm();
             assert!(off < 1e-7, "{text:?}: pose off by {off:e}");
         }
         None => {}

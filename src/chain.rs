@@ -51,13 +51,13 @@ impl JointAxis {
 
     /// The displacement `exp(ξ q)` of this joint by `q` (radians or length units).
     #[must_use]
-    pub fn displacement(&self, q: f64) -> (Rotation3<f64>, Vector3<f64>) {
+    pub fn displacement(&self, q: f64) -> Displacement {
         match self.kind {
-            Primitive::P => (Rotation3::identity(), self.axis * q),
+            Primitive::P => crate::spatial::displacement(Rotation3::identity(), self.axis * q),
             Primitive::R => {
                 let r = Rotation3::from_axis_angle(&Unit::new_unchecked(self.axis), q);
                 let t = self.point - r * self.point;
-                (r, t)
+                crate::spatial::displacement(r, t)
             }
         }
     }
@@ -142,7 +142,7 @@ impl SerialChain {
         self.joints
             .iter()
             .zip(q)
-            .fold((Rotation3::identity(), Vector3::zeros()), |g, (j, &qi)| {
+            .fold(crate::spatial::identity(), |g, (j, &qi)| {
                 compose(&g, &j.displacement(qi))
             })
     }
@@ -169,9 +169,9 @@ impl SerialChain {
             "one joint value and column per joint"
         );
         // The displacement of the joints before joint i carries its reference screw along.
-        let mut g: Displacement = (Rotation3::identity(), Vector3::zeros());
+        let mut g = crate::spatial::identity();
         for (i, (joint, &qi)) in self.joints.iter().zip(q).enumerate() {
-            let t = transform_twist(&g.0, &g.1, &joint.screw());
+            let t = transform_twist(&g.rotation, &g.translation.vector, &joint.screw());
             out.column_mut(i).copy_from(&t.to_vector());
             if qi != 0.0 {
                 g = compose(&g, &joint.displacement(qi));

@@ -121,7 +121,7 @@ fn length(m: &Manipulator) -> f64 {
 /// `exp` of the spatial twist `(w; v)` (v: velocity of the point at the origin), written out:
 /// rotation `exp([w])`, translation `V v` with `V = I + a [w] + b [w]²`, `a = (1 − cos θ)/θ²`,
 /// `b = (θ − sin θ)/θ³` (Murray, Li & Sastry 1994, eq. 2.36), by their series for small θ.
-fn exp(w: &Vector3<f64>, v: &Vector3<f64>) -> Displacement {
+fn exp(w: &Vector3<f64>, v: &Vector3<f64>) -> (Rotation3<f64>, Vector3<f64>) {
     let theta = w.norm();
     let (a, b) = if theta < 1e-3 {
         let t2 = theta * theta;
@@ -166,7 +166,7 @@ fn solve(
     s: f64,
 ) -> Result<Vec<f64>, String> {
     let (r, d) = exp(&(w * s), &(v * s));
-    let moved = (r * frame.0, r * frame.1 + d);
+    let moved = (r * frame.rotation, r * frame.translation.vector + d);
     m.assemble_at(moved.1, rotation_vector(&moved.0), &[])
         .map_err(|e| e.to_string())
 }
@@ -290,13 +290,15 @@ fn poses(m: &Manipulator) -> Vec<(String, Vec<f64>)> {
         .expect("the platform moves");
     let mut out = vec![("reference".to_string(), m.reference())];
     for walk in walks.samples {
-        let (r, o) = m.platform_frame(&walk.q);
+        let g = m.platform_frame(&walk.q);
+        let (r, o) = (g.rotation, g.translation.vector);
         let q = m
             .assemble_at(o, rotation_vector(&r), &[])
             .expect("the walked pose assembles from the reference");
         let back = m.platform_frame(&q);
         assert!(
-            (back.1 - o).norm() < 1e-9 && (back.0.matrix() - r.matrix()).norm() < 1e-9,
+            (back.translation.vector - o).norm() < 1e-9
+                && (back.rotation.matrix() - r.matrix()).norm() < 1e-9,
             "{back:?} vs {:?}",
             (r, o)
         );
@@ -540,7 +542,7 @@ fn finite_differences_of_the_couple_constrained_legs_match_hand_derived_rates() 
                 };
                 let fd = (plus[act.joint] - minus[act.joint]) / (2.0 * H);
                 let a = Vector3::from(leg.base);
-                let c = frame.0 * Vector3::from(leg.platform) + frame.1;
+                let c = frame.rotation * Vector3::from(leg.platform) + frame.translation.vector;
                 let vc = vp + w.cross(&(c - p));
                 let AxisSpec::Vector(u) = leg.axes.as_ref().unwrap()[0] else {
                     panic!("{name}: the first axis is a vector")

@@ -265,7 +265,8 @@ fn locking_every_alpha_gives_three_dof_1t2r_and_the_constraints_of_eq_22() {
         .samples;
     for s in &samples {
         let j = m.jacobians(&s.q, &alphas);
-        let (r, p) = m.platform_frame(&s.q);
+        let g = m.platform_frame(&s.q);
+        let (r, p) = (g.rotation, g.translation.vector);
         let point = m.point(&s.q);
         assert_eq!(j.ji.ncols(), 3);
         for i in 0..3 {
@@ -309,7 +310,8 @@ fn three_rps_built_directly_equals_three_ups_with_alpha_locked() {
         .unwrap()
         .samples;
     for q_rps in std::iter::once(rps.reference()).chain(samples.into_iter().map(|s| s.q)) {
-        let (r, p) = rps.platform_frame(&q_rps);
+        let g = rps.platform_frame(&q_rps);
+        let (r, p) = (g.rotation, g.translation.vector);
         let q_ups = ups.assemble_at(p, r.scaled_axis(), &alphas).unwrap();
         let a = rps.jacobians(&q_rps, &[]);
         let b = ups.jacobians(&q_ups, &alphas);

@@ -43,7 +43,8 @@ fn leg_length_change(d: &Description, i: usize, r: &Rotation3<f64>, p: &Vector3<
 }
 
 fn frame(m: &Manipulator, q: &[f64]) -> (Vector3<f64>, Vector3<f64>) {
-    let (r, p) = m.platform_frame(q);
+    let g_r = m.platform_frame(q);
+    let (r, p) = (g_r.rotation, g_r.translation.vector);
     (p, rotation_log(&r))
 }
 
@@ -106,7 +107,8 @@ fn three_rps_solves_its_parasitic_motion() {
             ..PositionRequest::default()
         };
         let reached = m.solve_position(&m.reference(), &request).unwrap();
-        let (r, p) = m.platform_frame(&reached.q);
+        let g_r = m.platform_frame(&reached.q);
+        let (r, p) = (g_r.rotation, g_r.translation.vector);
         let rv = rotation_log(&r);
         assert!((p.z - z).abs() < 1e-9, "{text}: z {}", p.z);
         assert!(

@@ -35,8 +35,9 @@ fn unit_axis() -> impl Strategy<Value = Unit<Vector3<f64>>> {
 
 /// A displacement built without `exp`: nalgebra's axis–angle rotation and a translation.
 fn displacement() -> impl Strategy<Value = Displacement> {
-    (unit_axis(), angle(), prop::array::uniform3(-3.0f64..3.0))
-        .prop_map(|(u, theta, t)| (Rotation3::from_axis_angle(&u, theta), Vector3::from(t)))
+    (unit_axis(), angle(), prop::array::uniform3(-3.0f64..3.0)).prop_map(|(u, theta, t)| {
+        spatial::displacement(Rotation3::from_axis_angle(&u, theta), Vector3::from(t))
+    })
 }
 
 fn twist() -> impl Strategy<Value = Twist> {
@@ -51,7 +52,9 @@ fn twist() -> impl Strategy<Value = Twist> {
 }
 
 fn close(a: &Displacement, b: &Displacement, tol: f64) -> bool {
-    (a.0.matrix() - b.0.matrix()).amax() <= tol && (a.1 - b.1).norm() <= tol * (1.0 + a.1.norm())
+    (a.rotation.matrix() - b.rotation.matrix()).amax() <= tol
+        && (a.translation.vector - b.translation.vector).norm()
+            <= tol * (1.0 + a.translation.vector.norm())
 }
 
 /// The Hamilton product of quaternions `(w, x, y, z)`, written out.
@@ -163,7 +166,7 @@ fn exp_of_log_at_exactly_a_half_turn() {
     ];
     for axis in axes {
         let u = Unit::new_normalize(axis);
-        let g = (
+        let g = spatial::displacement(
             Rotation3::from_axis_angle(&u, PI),
             Vector3::new(0.4, -1.1, 2.0),
         );
@@ -230,27 +233,27 @@ proptest! {
     #[test]
     fn adjoint_of_a_composition_is_the_product_of_adjoints(g in displacement(), h in displacement()) {
         let gh = compose(&g, &h);
-        let lhs = adjoint(&gh.0, &gh.1);
-        let rhs = adjoint(&g.0, &g.1) * adjoint(&h.0, &h.1);
-        prop_assert!((lhs - rhs).amax() < 1e-12 * (1.0 + g.1.norm() + h.1.norm()));
+        let lhs = adjoint(&gh.rotation, &gh.translation.vector);
+        let rhs = adjoint(&g.rotation, &g.translation.vector) * adjoint(&h.rotation, &h.translation.vector);
+        prop_assert!((lhs - rhs).amax() < 1e-12 * (1.0 + g.translation.vector.norm() + h.translation.vector.norm()));
         // And Ad_{g⁻¹} = (Ad_g)⁻¹.
         let gi = inverse(&g);
-        let product = adjoint(&gi.0, &gi.1) * adjoint(&g.0, &g.1);
-        prop_assert!((product - nalgebra::Matrix6::identity()).amax() < 1e-12 * (1.0 + g.1.norm()));
+        let product = adjoint(&gi.rotation, &gi.translation.vector) * adjoint(&g.rotation, &g.translation.vector);
+        prop_assert!((product - nalgebra::Matrix6::identity()).amax() < 1e-12 * (1.0 + g.translation.vector.norm()));
     }
 
     /// `transform_twist` is the adjoint matrix applied to the twist's coordinates.
     #[test]
     fn transform_twist_is_the_adjoint_times_the_twist(g in displacement(), t in twist()) {
-        let by_matrix = adjoint(&g.0, &g.1) * t.to_vector();
-        let direct = transform_twist(&g.0, &g.1, &t).to_vector();
-        prop_assert!((by_matrix - direct).amax() < 1e-13 * (1.0 + g.1.norm()) * (1.0 + t.v.norm()));
+        let by_matrix = adjoint(&g.rotation, &g.translation.vector) * t.to_vector();
+        let direct = transform_twist(&g.rotation, &g.translation.vector, &t).to_vector();
+        prop_assert!((by_matrix - direct).amax() < 1e-13 * (1.0 + g.translation.vector.norm()) * (1.0 + t.v.norm()));
     }
 
     /// exp(Ad_g ξ) = g exp(ξ) g⁻¹: the adjoint is the derivative of conjugation (MLS §2.4).
     #[test]
     fn exp_of_the_adjoint_is_conjugation(g in displacement(), xi in twist()) {
-        let moved = Twist::from_vector(&(adjoint(&g.0, &g.1) * xi.to_vector()));
+        let moved = Twist::from_vector(&(adjoint(&g.rotation, &g.translation.vector) * xi.to_vector()));
         let lhs = exp(&moved);
         let rhs = compose(&compose(&g, &exp(&xi)), &inverse(&g));
         prop_assert!(close(&lhs, &rhs, 1e-11), "{lhs:?} vs {rhs:?}");
@@ -304,7 +307,7 @@ proptest! {
     #[test]
     fn every_displacement_lies_on_the_study_quadric(g in displacement()) {
         let s = study::from_displacement(&g);
-        prop_assert!(study::quadric_residual(&s).abs() <= 1e-15 * (1.0 + g.1.norm()), "{s:?}");
+        prop_assert!(study::quadric_residual(&s).abs() <= 1e-15 * (1.0 + g.translation.vector.norm()), "{s:?}");
         prop_assert!(study::normalisation_residual(&s).abs() <= 1e-15);
         prop_assert!(s[0] >= 0.0);
         prop_assert!(!study::normalise(&s).unwrap()[0].is_sign_negative());
@@ -323,7 +326,7 @@ proptest! {
         // M_R / Δ is a rotation for every x ≠ 0 (M_R M_Rᵀ = Δ² I, det M_R = Δ³).
         prop_assert!((r * r.transpose() - Matrix3::identity()).amax() < 1e-14);
         prop_assert!((r.determinant() - 1.0).abs() < 1e-14);
-        let g = (
+        let g = spatial::displacement(
             Rotation3::from_matrix_unchecked(r),
             Vector3::from(m.fixed_view::<3, 1>(1, 0) / delta),
         );
@@ -347,7 +350,7 @@ proptest! {
         let delta = k * k;
         prop_assert!((image[0] - delta).abs() < 1e-12 * delta);
         let moved = Vector3::new(image[1], image[2], image[3]) / delta;
-        prop_assert!((moved - (g.0 * p + g.1)).norm() < 1e-12 * (1.0 + g.1.norm() + p.norm()));
+        prop_assert!((moved - (g.rotation * p + g.translation.vector)).norm() < 1e-12 * (1.0 + g.translation.vector.norm() + p.norm()));
     }
 
     /// The printed eq. 5 entry by entry: `study::matrix` is the transcription, and it equals the
@@ -380,7 +383,7 @@ proptest! {
         prop_assert!(same_point(&composed, &product, 1e-13), "{composed:?} vs {product:?}");
         let lhs = study::matrix(&product);
         let rhs = study::matrix(&sa) * study::matrix(&sb);
-        prop_assert!((lhs - rhs).amax() < 1e-12 * (1.0 + a.1.norm()) * (1.0 + b.1.norm()));
+        prop_assert!((lhs - rhs).amax() < 1e-12 * (1.0 + a.translation.vector.norm()) * (1.0 + b.translation.vector.norm()));
     }
 }
 
@@ -504,7 +507,7 @@ proptest! {
     ) {
         let s = study::from_displacement(&g);
         let t = (theta / 2.0).tan();
-        let c = g.0 * Vector3::new(LEG1.b, 0.0, 0.0) + g.1;
+        let c = g.rotation * Vector3::new(LEG1.b, 0.0, 0.0) + g.translation.vector;
         let expected = (1.0 + t * t) * ((c - LEG1.b_point(theta)).norm_squared() - LEG1.r * LEG1.r);
         let g5 = LEG1.g5(t, &s);
         prop_assert!((g5 - expected).abs() < 1e-11 * (1.0 + expected.abs()), "{g5} vs {expected}");
@@ -519,8 +522,8 @@ proptest! {
     ) {
         let s = study::from_displacement(&g);
         let t = (theta / 2.0).tan();
-        let c = g.0 * Vector3::new(LEG1.b, 0.0, 0.0) + g.1;
-        let n = g.0 * Vector3::z();
+        let c = g.rotation * Vector3::new(LEG1.b, 0.0, 0.0) + g.translation.vector;
+        let n = g.rotation * Vector3::z();
         let triple = (c - LEG1.b_point(theta)).dot(&Vector3::z().cross(&n));
         let expected = -0.5 * (1.0 + t * t) * triple;
         let g1 = LEG1.g1(t, &s);
@@ -533,14 +536,14 @@ proptest! {
 /// kinsyn's sign meets it: negating y reads the translation as −t.
 #[test]
 fn the_opposite_sign_of_y_does_not_satisfy_paper_004() {
-    let g = (
+    let g = spatial::displacement(
         Rotation3::from_axis_angle(&Vector3::x_axis(), PI / 2.0),
         Vector3::new(0.5, -0.3, 0.8),
     );
     let theta: f64 = 0.7;
     let t = (theta / 2.0).tan();
     let s = study::from_displacement(&g);
-    let c = g.0 * Vector3::new(LEG1.b, 0.0, 0.0) + g.1;
+    let c = g.rotation * Vector3::new(LEG1.b, 0.0, 0.0) + g.translation.vector;
     let expected = (1.0 + t * t) * ((c - LEG1.b_point(theta)).norm_squared() - LEG1.r * LEG1.r);
     assert!((LEG1.g5(t, &s) - expected).abs() < 1e-12);
     let flipped = [s[0], s[1], s[2], s[3], -s[4], -s[5], -s[6], -s[7]];
@@ -573,7 +576,7 @@ fn normalisation_chooses_x0_nonnegative() {
         assert!((n[4] + 0.1).abs() < 1e-15, "scale {k:e}: {n:?}");
     }
     // A half turn's parameters from a displacement: x0 = cos(π/2) rounds to +6e-17.
-    let s = study::from_displacement(&(
+    let s = study::from_displacement(&spatial::displacement(
         Rotation3::from_axis_angle(&Vector3::y_axis(), PI),
         Vector3::new(1.0, 2.0, 3.0),
     ));
@@ -589,13 +592,13 @@ fn normalisation_chooses_x0_nonnegative() {
 fn study_parameters_near_the_identity() {
     let u = Unit::new_normalize(Vector3::new(1.0, 2.0, -2.0));
     for theta in [1e-300, 1e-16, 1e-10, 1e-6] {
-        let g = (Rotation3::from_axis_angle(&u, theta), Vector3::zeros());
+        let g = spatial::displacement(Rotation3::from_axis_angle(&u, theta), Vector3::zeros());
         let s = study::from_displacement(&g);
         let xv = Vector3::new(s[1], s[2], s[3]);
         let expected = u.into_inner() * (theta / 2.0).sin();
         assert!((xv - expected).norm() <= 1e-15 * theta, "θ {theta:e}: {xv}");
         let back = study::to_displacement(&s, study::QUADRIC_TOLERANCE).unwrap();
-        assert!((rotation_log(&back.0) - u.into_inner() * theta).norm() <= 1e-14 * theta);
+        assert!((rotation_log(&back.rotation) - u.into_inner() * theta).norm() <= 1e-14 * theta);
     }
 }
 
@@ -632,7 +635,7 @@ fn study_errors() {
     );
     assert!(e.to_string().contains("quadric"), "{e}");
     // Just inside and just outside a tolerance, independent of scale and unit of length.
-    let s = study::from_displacement(&(
+    let s = study::from_displacement(&spatial::displacement(
         Rotation3::from_axis_angle(&Vector3::z_axis(), 0.4),
         Vector3::new(1.0, 2.0, 3.0),
     ));
@@ -661,7 +664,7 @@ fn old_paths_are_re_exports() {
         w: Vector3::new(0.1, 0.2, 0.3),
         v: Vector3::new(1.0, 0.0, 0.0),
     };
-    let moved: Twist = kinsyn::screw::transform_twist(&g.0, &g.1, &xi);
+    let moved: Twist = kinsyn::screw::transform_twist(&g.rotation, &g.translation.vector, &xi);
     assert_eq!(moved, xi);
     let h = kinsyn::mechanism::exp(&xi);
     assert_eq!(h, spatial::exp(&xi));
@@ -669,9 +672,12 @@ fn old_paths_are_re_exports() {
     assert_eq!(kinsyn::mechanism::log(&h), spatial::log(&h));
     assert_eq!(kinsyn::mechanism::inverse(&h), spatial::inverse(&h));
     assert_eq!(
-        kinsyn::mechanism::rotation_log(&h.0),
-        spatial::rotation_log(&h.0)
+        kinsyn::mechanism::rotation_log(&h.rotation),
+        spatial::rotation_log(&h.rotation)
     );
-    assert_eq!(kinsyn::screw::adjoint(&h.0, &h.1), adjoint(&h.0, &h.1));
+    assert_eq!(
+        kinsyn::screw::adjoint(&h.rotation, &h.translation.vector),
+        adjoint(&h.rotation, &h.translation.vector)
+    );
     assert_eq!(kinsyn::screw::skew(&xi.w), spatial::skew(&xi.w));
 }

@@ -637,7 +637,7 @@ fn analysis_json(
     warnings: &[String],
 ) -> serde_json::Value {
     let frame = m.platform_frame(&a.q);
-    let rv = kinsyn::mechanism::rotation_log(&frame.0);
+    let rv = kinsyn::mechanism::rotation_log(&frame.rotation);
     let rows: Vec<serde_json::Value> = a
         .jacobians
         .rows
@@ -649,7 +649,7 @@ fn analysis_json(
         "units": m.units(),
         "locked": m.lock_text(&a.locked),
         "point": [a.jacobians.point.x, a.jacobians.point.y, a.jacobians.point.z],
-        "platform_position": [frame.1.x, frame.1.y, frame.1.z],
+        "platform_position": [frame.translation.x, frame.translation.y, frame.translation.z],
         "platform_rotation_vector_rad": [rv.x, rv.y, rv.z],
         "joint_values": a.q,
         "input_values": input_values(m, &a.q).into_iter().map(|(k, v)| (k, serde_json::json!(v))).collect::<serde_json::Map<String, serde_json::Value>>(),
@@ -685,7 +685,7 @@ fn rank_json(r: &kinsyn::screw::Rank, generic: Option<usize>) -> serde_json::Val
 fn analysis_text(m: &Manipulator, a: &Analysis, reached: &Reached) -> String {
     let mut s = String::new();
     let frame = m.platform_frame(&a.q);
-    let rv = kinsyn::mechanism::rotation_log(&frame.0);
+    let rv = kinsyn::mechanism::rotation_log(&frame.rotation);
     let p = a.jacobians.point;
     let _ = writeln!(
         s,

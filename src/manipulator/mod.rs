@@ -34,7 +34,7 @@ use crate::chain::Displacement;
 use crate::mechanism::{JointSpec, Mechanism, MechanismError};
 use crate::notation::{Chain, JointKind, Primitive};
 use file::{AxisSpec, Description, DescriptionError};
-use nalgebra::{Rotation3, Vector3};
+use nalgebra::{Point3, Rotation3, Vector3};
 use std::ops::Range;
 
 /// Why a manipulator could not be built or analysed.
@@ -181,7 +181,9 @@ impl Manipulator {
             legs,
             actuators,
             platform: PLATFORM,
-            point: frame.0 * Vector3::from(d.platform.point) + frame.1,
+            point: frame
+                .transform_point(&Point3::from(d.platform.point))
+                .coords,
             frame,
         })
     }
@@ -232,7 +234,7 @@ impl Manipulator {
     #[must_use]
     pub fn point(&self, q: &[f64]) -> Vector3<f64> {
         let g = self.mechanism.poses(q)[self.platform];
-        g.0 * self.point + g.1
+        g.transform_point(&Point3::from(self.point)).coords
     }
 
     /// The platform frame (orientation, origin) at joint values `q`.
@@ -304,7 +306,7 @@ impl Manipulator {
         locked: &[usize],
     ) -> Result<Vec<f64>, ManipulatorError> {
         let request = PositionRequest {
-            platform: Some(PlatformGoal::Pose((
+            platform: Some(PlatformGoal::Pose(crate::spatial::displacement(
                 Rotation3::from_scaled_axis(orientation),
                 position,
             ))),
@@ -372,7 +374,10 @@ fn platform_frame(d: &Description) -> Result<Displacement, ManipulatorError> {
     let rotation = Rotation3::from_scaled_axis(
         Vector3::from(d.platform.orientation).map(|a| angle.to_radians(a)),
     );
-    Ok((rotation, Vector3::from(d.platform.position)))
+    Ok(crate::spatial::displacement(
+        rotation,
+        Vector3::from(d.platform.position),
+    ))
 }
 
 /// One leg's geometry at the reference configuration, checked: its chain, primitive joints,
@@ -402,7 +407,7 @@ impl LegGeometry {
             .map_err(|m| DescriptionError::new(field("chain"), m))?;
         let kinds: Vec<Primitive> = chain.primitives().map(|(p, _)| p).collect();
         let base = Vector3::from(spec.base);
-        let end = frame.0 * Vector3::from(spec.platform) + frame.1;
+        let end = frame.transform_point(&Point3::from(spec.platform)).coords;
         let points = leg_points(&chain, spec, &base, &end, &field)?;
         let axes = leg_axes(&chain, spec, entry_axes, &base, &end, &field)?;
         check_joint_axes(&chain, &axes)

@@ -352,15 +352,15 @@ impl Manipulator {
             })
             .collect();
         let (groups, non_groups) = self.patterns_reached(&modes);
-        let (r, p) = self.platform_frame(start);
+        let frame = self.platform_frame(start);
         Modes {
             manipulator: self.name.clone(),
             group_kinds: group_kinds(&modes),
             actuators: self.actuators.iter().map(super::Actuator::label).collect(),
             settings: *settings,
             start_joint_values: start.to_vec(),
-            start_position: p.into(),
-            start_rotation_vector_rad: rotation_log(&r).into(),
+            start_position: frame.translation.vector.into(),
+            start_rotation_vector_rad: rotation_log(&frame.rotation).into(),
             modes,
             groups,
             non_groups,

@@ -49,7 +49,7 @@ impl PlatformGoal {
         }
         values.sort_by_key(|(c, _)| c.index());
         let v: Vec<f64> = values.iter().map(|&(_, x)| x).collect();
-        PlatformGoal::Pose((
+        PlatformGoal::Pose(crate::spatial::displacement(
             Rotation3::from_scaled_axis(Vector3::new(v[3], v[4], v[5])),
             Vector3::new(v[0], v[1], v[2]),
         ))
@@ -97,7 +97,7 @@ impl Manipulator {
     /// use nalgebra::{Rotation3, Vector3};
     ///
     /// let m = Manipulator::from_json(&std::fs::read_to_string("mechanisms/6-ups.json")?)?;
-    /// let raised = (Rotation3::identity(), Vector3::new(0.0, 0.0, 1.1));
+    /// let raised = kinsyn::spatial::displacement(Rotation3::identity(), Vector3::new(0.0, 0.0, 1.1));
     /// let request = PositionRequest {
     ///     platform: Some(PlatformGoal::Pose(raised)),
     ///     ..PositionRequest::default()

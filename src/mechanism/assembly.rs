@@ -108,9 +108,9 @@ impl Coordinate {
     pub fn of(self, g: &Displacement) -> f64 {
         let i = self.index();
         if i < 3 {
-            g.1[i]
+            g.translation.vector[i]
         } else {
-            super::rotation_log(&g.0)[i - 3]
+            super::rotation_log(&g.rotation)[i - 3]
         }
     }
 }
@@ -171,8 +171,8 @@ impl Goal {
             Goal::Coordinates { frame, values, .. } => {
                 let f = compose(g, frame);
                 let (centre, length) = (m.centre(), m.scale());
-                let arm = (f.1 - centre) / length;
-                let r = super::rotation_log(&f.0);
+                let arm = (f.translation.vector - centre) / length;
+                let r = super::rotation_log(&f.rotation);
                 let rotation_rates = inverse_left_jacobian(&r);
                 let mut c = DMatrix::zeros(values.len(), 6);
                 let mut e = DVector::zeros(values.len());
@@ -185,7 +185,7 @@ impl Goal {
                             c[(row, k)] = cross[(i, k)];
                         }
                         c[(row, 3 + i)] = 1.0;
-                        e[row] = (f.1[i] - value) / length;
+                        e[row] = (f.translation.vector[i] - value) / length;
                     } else {
                         // ṙ = J_l⁻¹(r) ω for the spatial angular velocity ω.
                         for k in 0..3 {

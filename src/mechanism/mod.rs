@@ -61,7 +61,7 @@ use crate::linalg;
 use crate::notation::Primitive;
 use crate::screw::{self, Twist, transform_twist};
 pub use crate::spatial::{compose, exp, inverse, log, rotation_log};
-use nalgebra::{DMatrix, DVector, Rotation3, Vector3};
+use nalgebra::{DMatrix, DVector, Vector3};
 use petgraph::graph::{NodeIndex, UnGraph};
 use petgraph::visit::{Bfs, EdgeRef};
 
@@ -407,7 +407,7 @@ impl Mechanism {
     #[must_use]
     pub fn poses(&self, q: &[f64]) -> Vec<Displacement> {
         assert!(q.len() >= self.joints.len(), "one value per joint");
-        let mut poses = vec![(Rotation3::identity(), Vector3::zeros()); self.body_count()];
+        let mut poses = vec![crate::spatial::identity(); self.body_count()];
         for &(body, step) in &self.order {
             if let Some((joint, sign)) = step {
                 let j = &self.joints[joint];
@@ -431,7 +431,7 @@ impl Mechanism {
             .iter()
             .map(|j| {
                 let g = &poses[j.from];
-                transform_twist(&g.0, &g.1, &j.screw())
+                transform_twist(&g.rotation, &g.translation.vector, &j.screw())
             })
             .collect()
     }

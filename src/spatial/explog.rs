@@ -16,10 +16,12 @@ use nalgebra::{Matrix3, Rotation3, Vector3};
 /// [`rotation_log`] is returned.
 #[must_use]
 pub fn log(g: &Displacement) -> Twist {
-    let w = rotation_log(&g.0);
+    let w = rotation_log(&g.rotation);
     let v = translation_map(&w)
         .try_inverse()
-        .map_or(g.1, |inverse| inverse * g.1);
+        .map_or(g.translation.vector, |inverse| {
+            inverse * g.translation.vector
+        });
     Twist { w, v }
 }
 
@@ -86,7 +88,7 @@ pub fn rotation_log(r: &Rotation3<f64>) -> Vector3<f64> {
 /// Murray–Li–Sastry §2.3's exponential of a twist, written for an unnormalised `ω`.
 #[must_use]
 pub fn exp(t: &Twist) -> Displacement {
-    (
+    super::displacement(
         Rotation3::from_scaled_axis(t.w),
         translation_map(&t.w) * t.v,
     )

@@ -30,11 +30,11 @@
 //! let quarter = std::f64::consts::FRAC_PI_2;
 //! let xi = Twist { w: Vector3::z() * quarter, v: Vector3::new(0.0, -quarter, 0.0) };
 //! let g = exp(&xi);
-//! assert!((g.1 - Vector3::new(1.0, -1.0, 0.0)).norm() < 1e-12);
+//! assert!((g.translation.vector - Vector3::new(1.0, -1.0, 0.0)).norm() < 1e-12);
 //! // The logarithm gives the twist back, and g · g⁻¹ is the identity.
 //! assert!((log(&g).to_vector() - xi.to_vector()).norm() < 1e-12);
-//! let e = compose(&g, &inverse(&g));
-//! assert!(e.1.norm() < 1e-12 && rotation_log(&e.0).norm() < 1e-12);
+//! let e = compose(&g, &inverse(&g)); // also `g * g.inverse()`
+//! assert!(e.translation.vector.norm() < 1e-12 && rotation_log(&e.rotation).norm() < 1e-12);
 //! ```
 
 mod explog;
@@ -42,7 +42,7 @@ pub mod study;
 
 pub use explog::{exp, inverse_left_jacobian, log, rotation_log};
 
-use nalgebra::{Matrix3, Matrix6, Rotation3, Vector3, Vector6};
+use nalgebra::{IsometryMatrix3, Matrix3, Matrix6, Rotation3, Translation3, Vector3, Vector6};
 
 /// A twist `(ω; v)`: an element of se(3), the instantaneous motion of a rigid body — `ω` its
 /// angular velocity, `v` the velocity of the body point at the frame origin (DESIGN.md). The
@@ -72,26 +72,34 @@ impl Twist {
     }
 }
 
-/// A rigid displacement `(R, p)`: rotation, then translation (`x ↦ R x + p`).
-pub type Displacement = (Rotation3<f64>, Vector3<f64>);
+/// A rigid displacement `g = (R, p)`: rotation, then translation (`x ↦ R x + p`) — nalgebra's
+/// isometry with a rotation *matrix* (`g.rotation`, `g.translation.vector`), so that products
+/// and inverses are the plain matrix formulas (`a · b = (R_a R_b, R_a p_b + p_a)`,
+/// `g⁻¹ = (Rᵀ, −Rᵀ p)`). `a * b` is [`compose`], `g.inverse()` is [`inverse`].
+pub type Displacement = IsometryMatrix3<f64>;
+
+/// The displacement `(R, p)` from its rotation and translation.
+#[must_use]
+pub fn displacement(rotation: Rotation3<f64>, translation: Vector3<f64>) -> Displacement {
+    IsometryMatrix3::from_parts(Translation3::from(translation), rotation)
+}
 
 /// The identity displacement `(I, 0)`.
 #[must_use]
 pub fn identity() -> Displacement {
-    (Rotation3::identity(), Vector3::zeros())
+    IsometryMatrix3::identity()
 }
 
 /// `a` then `b`: the displacement `a · b`.
 #[must_use]
 pub fn compose(a: &Displacement, b: &Displacement) -> Displacement {
-    (a.0 * b.0, a.0 * b.1 + a.1)
+    a * b
 }
 
 /// The inverse displacement `g⁻¹ = (Rᵀ, −Rᵀ p)`.
 #[must_use]
 pub fn inverse(g: &Displacement) -> Displacement {
-    let r = g.0.inverse();
-    (r, -(r * g.1))
+    g.inverse()
 }
 
 /// The skew-symmetric matrix of `x`: `[x] y = x × y`.

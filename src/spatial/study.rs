@@ -44,7 +44,8 @@
 //! // Any multiple of the parameters gives the displacement back.
 //! let scaled: Vec<f64> = s.iter().map(|c| -3.0 * c).collect();
 //! let back = study::to_displacement(&scaled.try_into().unwrap(), study::QUADRIC_TOLERANCE).unwrap();
-//! assert!((back.1 - g.1).norm() < 1e-12 && (back.0.matrix() - g.0.matrix()).amax() < 1e-12);
+//! assert!((back.translation.vector - g.translation.vector).norm() < 1e-12);
+//! assert!((back.rotation.matrix() - g.rotation.matrix()).amax() < 1e-12);
 //! ```
 
 use super::Displacement;
@@ -103,14 +104,14 @@ pub fn normalisation_residual(s: &StudyParameters) -> f64 {
 /// quadric and the normalisation to round-off, with `x0 ≥ 0`.
 #[must_use]
 pub fn from_displacement(g: &Displacement) -> StudyParameters {
-    let r = super::rotation_log(&g.0);
+    let r = super::rotation_log(&g.rotation);
     let theta = r.norm();
     let half = theta / 2.0;
     // sin(θ/2)/θ, whose limit at θ = 0 is 1/2 (and r = 0 there anyway).
     let factor = if theta > 0.0 { half.sin() / theta } else { 0.5 };
     let x0 = half.cos();
     let xv = r * factor;
-    let t = &g.1;
+    let t = &g.translation.vector;
     // y = −½ (0, t)(x0, x⃗) = −½ (−t·x⃗, x0 t + t × x⃗).
     let y0 = 0.5 * t.dot(&xv);
     let yv = -0.5 * (t * x0 + t.cross(&xv));
@@ -198,5 +199,8 @@ pub fn to_displacement(s: &StudyParameters, tolerance: f64) -> Result<Displaceme
     let delta = m[(0, 0)];
     let rotation = m.fixed_view::<3, 3>(1, 1) / delta;
     let translation = m.fixed_view::<3, 1>(1, 0) / delta;
-    Ok((Rotation3::from_matrix_unchecked(rotation), translation))
+    Ok(super::displacement(
+        Rotation3::from_matrix_unchecked(rotation),
+        translation.into_owned(),
+    ))
 }

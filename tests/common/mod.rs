@@ -13,9 +13,12 @@ pub fn finite_difference_column(c: &SerialChain, q: &[f64], i: usize, h: f64) ->
     let mut qm = q.to_vec();
     qp[i] += h;
     qm[i] -= h;
-    let (rp, pp) = c.forward(&qp);
-    let (rm, pm) = c.forward(&qm);
-    let (r0, p0) = c.forward(q);
+    let gp = c.forward(&qp);
+    let (rp, pp) = (gp.rotation, gp.translation.vector);
+    let gm = c.forward(&qm);
+    let (rm, pm) = (gm.rotation, gm.translation.vector);
+    let g0 = c.forward(q);
+    let (r0, p0) = (g0.rotation, g0.translation.vector);
     let dr: Matrix3<f64> = (rp.matrix() - rm.matrix()) / (2.0 * h);
     let w_hat = dr * r0.matrix().transpose();
     let w = Vector3::new(w_hat[(2, 1)], w_hat[(0, 2)], w_hat[(1, 0)]);
