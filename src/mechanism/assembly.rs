@@ -367,6 +367,28 @@ impl Mechanism {
     }
 }
 
+impl Mechanism {
+    /// Closes the loops from `q` with the `locked` joints held, and when `target` is given also
+    /// moves `body` to the displacement `target` from its reference pose
+    /// ([`Mechanism::assemble_to`] with a [`Goal::Pose`]).
+    ///
+    /// # Errors
+    /// [`MechanismError::NotAssembled`] when the residual does not fall below
+    /// [`ASSEMBLY_TOLERANCE`] (rotation in radians, translation over the length scale).
+    pub fn assemble(
+        &self,
+        q: &[f64],
+        locked: &[bool],
+        target: Option<(usize, &Displacement)>,
+    ) -> Result<Vec<f64>, MechanismError> {
+        let goal = target.map(|(body, g)| Goal::Pose {
+            body,
+            displacement: *g,
+        });
+        self.assemble_to(q, locked, goal.as_ref())
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::inverse_left_jacobian;

@@ -51,78 +51,26 @@
 //! ```
 
 mod assembly;
+mod closure;
+mod joint;
+mod mobility;
 mod motion;
 
 pub use assembly::{ASSEMBLY_STEPS, ASSEMBLY_TOLERANCE, AssemblySettings, Coordinate, Goal};
+pub use joint::JointSpec;
+pub use mobility::Mobility;
 pub use motion::{MotionSample, SampleSettings};
 
-use crate::chain::{Displacement, JointAxis};
-use crate::linalg;
 use crate::notation::Primitive;
-use crate::screw::{self, Twist, transform_twist};
+use crate::screw;
 pub use crate::spatial::{compose, exp, inverse, log, rotation_log};
-use nalgebra::{DMatrix, DVector, Vector3};
+use nalgebra::{DMatrix, Vector3};
 use petgraph::graph::{NodeIndex, UnGraph};
 use petgraph::visit::{Bfs, EdgeRef};
 
 /// The rank tolerance of loop-closure and twist-space matrices (relative to the largest
 /// singular value of their dimensionless form).
 pub const MOBILITY_TOLERANCE: f64 = 1e-9;
-
-/// A primitive joint of a mechanism at the reference configuration.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct JointSpec {
-    /// P or R.
-    pub kind: Primitive,
-    /// Unit axis (rotation axis or sliding direction) in the ground frame.
-    pub axis: Vector3<f64>,
-    /// A point of the axis in the ground frame (ignored for P).
-    pub point: Vector3<f64>,
-    /// The body the joint is fixed to.
-    pub from: usize,
-    /// The body the joint value moves relative to `from`.
-    pub to: usize,
-}
-
-impl JointSpec {
-    /// A joint from `from` to `to`; the axis is normalised by [`Mechanism::new`].
-    #[must_use]
-    pub fn new(
-        kind: Primitive,
-        axis: Vector3<f64>,
-        point: Vector3<f64>,
-        from: usize,
-        to: usize,
-    ) -> Self {
-        JointSpec {
-            kind,
-            axis,
-            point,
-            from,
-            to,
-        }
-    }
-
-    /// The joint's axis as a serial-chain joint, whose screw and displacement are the joint's.
-    #[must_use]
-    pub fn primitive(&self) -> JointAxis {
-        JointAxis {
-            kind: self.kind,
-            axis: self.axis,
-            point: self.point,
-        }
-    }
-
-    /// The unit screw at the reference configuration.
-    #[must_use]
-    pub fn screw(&self) -> Twist {
-        self.primitive().screw()
-    }
-
-    fn displacement(&self, q: f64) -> Displacement {
-        self.primitive().displacement(q)
-    }
-}
 
 /// Why a mechanism could not be built or moved.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -186,18 +134,6 @@ pub struct Mechanism {
     chords: Vec<usize>,
     centre: Vector3<f64>,
     scale: f64,
-}
-
-/// The result of a mobility analysis at one configuration.
-#[derive(Debug, Clone)]
-pub struct Mobility {
-    /// Dimension of the joint-rate null space of the loop-closure Jacobian (free joints only).
-    pub dof: usize,
-    /// Rank report of the (dimensionless) loop-closure Jacobian.
-    pub closure_rank: linalg::Rank,
-    /// A basis of compatible rates of the free joints (columns, one entry per free joint, in
-    /// joint order; prismatic rates in length units).
-    pub rates: DMatrix<f64>,
 }
 
 impl Mechanism {
@@ -398,209 +334,6 @@ impl Mechanism {
         } else {
             1.0
         }
-    }
-
-    /// The displacement of every body from its reference pose at joint values `q`.
-    ///
-    /// # Panics
-    /// If `q` has fewer values than the mechanism has joints.
-    #[must_use]
-    pub fn poses(&self, q: &[f64]) -> Vec<Displacement> {
-        assert!(q.len() >= self.joints.len(), "one value per joint");
-        let mut poses = vec![crate::spatial::identity(); self.body_count()];
-        for &(body, step) in &self.order {
-            if let Some((joint, sign)) = step {
-                let j = &self.joints[joint];
-                let parent = if sign > 0.0 { j.from } else { j.to };
-                poses[body] = compose(&poses[parent], &j.displacement(sign * q[joint]));
-            }
-        }
-        poses
-    }
-
-    /// The current screw of every joint at `q` (in the ground frame): the reference screw
-    /// carried by the displacement of the body it is fixed to.
-    #[must_use]
-    pub fn joint_screws(&self, q: &[f64]) -> Vec<Twist> {
-        self.screws_at(&self.poses(q))
-    }
-
-    /// The current joint screws from the bodies' displacements.
-    fn screws_at(&self, poses: &[Displacement]) -> Vec<Twist> {
-        self.joints
-            .iter()
-            .map(|j| {
-                let g = &poses[j.from];
-                transform_twist(&g.rotation, &g.translation.vector, &j.screw())
-            })
-            .collect()
-    }
-
-    /// The tree path from the ground to `body`: each joint with +1 when crossed from its
-    /// `from` body to its `to` body.
-    #[must_use]
-    pub fn path(&self, body: usize) -> &[(usize, f64)] {
-        &self.paths[body]
-    }
-
-    /// The spatial Jacobian of `body` along its tree path: its twist is `J q̇` (6 × joints,
-    /// zero columns for joints off the path).
-    #[must_use]
-    pub fn body_jacobian(&self, body: usize, screws: &[Twist]) -> DMatrix<f64> {
-        let mut j = DMatrix::zeros(6, self.joints.len());
-        for &(joint, sign) in &self.paths[body] {
-            j.column_mut(joint)
-                .copy_from(&(screws[joint].to_vector() * sign));
-        }
-        j
-    }
-
-    /// The loop-closure Jacobian (6 rows per loop × joints): for the chord `a → b` of each loop,
-    /// `V_b − V_a − ξ' q̇ = 0`.
-    #[must_use]
-    pub fn closure_jacobian(&self, screws: &[Twist]) -> DMatrix<f64> {
-        let mut c = DMatrix::zeros(6 * self.chords.len(), self.joints.len());
-        for (l, &chord) in self.chords.iter().enumerate() {
-            let j = &self.joints[chord];
-            let mut block = self.body_jacobian(j.to, screws) - self.body_jacobian(j.from, screws);
-            let s = screws[chord].to_vector();
-            for r in 0..6 {
-                block[(r, chord)] -= s[r];
-            }
-            c.view_mut((6 * l, 0), (6, self.joints.len()))
-                .copy_from(&block);
-        }
-        c
-    }
-
-    /// How far each loop is from closing at `q`: for the chord `a → b`, the screw `ε = log D`
-    /// of `D = g_a exp(ξ q) g_b⁻¹` (6 entries per loop). Zero when assembled.
-    #[must_use]
-    pub fn closure_residual(&self, q: &[f64]) -> DVector<f64> {
-        self.residual_at(q, &self.poses(q))
-    }
-
-    /// [`Mechanism::closure_residual`] with the bodies' displacements at `q` given.
-    fn residual_at(&self, q: &[f64], poses: &[Displacement]) -> DVector<f64> {
-        let mut r = DVector::zeros(6 * self.chords.len());
-        for (l, &chord) in self.chords.iter().enumerate() {
-            let j = &self.joints[chord];
-            let d = compose(
-                &compose(&poses[j.from], &j.displacement(q[chord])),
-                &inverse(&poses[j.to]),
-            );
-            r.rows_mut(6 * l, 6).copy_from(&log(&d).to_vector());
-        }
-        r
-    }
-
-    /// The dimensionless copy of a matrix of twists over joint rates (see
-    /// [`Mechanism::unitless_twists`]), prismatic columns times the length scale so that every
-    /// column is a unit screw.
-    fn dimensionless(&self, m: &DMatrix<f64>) -> DMatrix<f64> {
-        let mut out = self.unitless_twists(m);
-        for c in 0..out.ncols().min(self.joints.len()) {
-            out.column_mut(c).scale_mut(self.unit(c));
-        }
-        out
-    }
-
-    /// The free joints of a lock mask.
-    fn free(&self, locked: &[bool]) -> Vec<usize> {
-        (0..self.joints.len())
-            .filter(|&j| !locked.get(j).copied().unwrap_or(false))
-            .collect()
-    }
-
-    /// The mobility at `q` with the `locked` joints held: the dimension of the null space of the
-    /// loop-closure Jacobian over the free joints.
-    #[must_use]
-    pub fn mobility(&self, q: &[f64], locked: &[bool]) -> Mobility {
-        let screws = self.joint_screws(q);
-        self.mobility_with(&screws, locked)
-    }
-
-    fn mobility_with(&self, screws: &[Twist], locked: &[bool]) -> Mobility {
-        let free = self.free(locked);
-        let (mut basis, rank) = self.unitless_rates(screws, &free);
-        // Back to physical rates: prismatic rates in length units.
-        for (k, &j) in free.iter().enumerate() {
-            basis.row_mut(k).scale_mut(self.unit(j));
-        }
-        Mobility {
-            dof: basis.ncols(),
-            closure_rank: rank,
-            rates: basis,
-        }
-    }
-
-    /// An orthonormal basis of the dimensionless rates of the `free` joints (prismatic rates
-    /// over the length scale) that keep every loop closed, with the rank decision of the
-    /// dimensionless loop-closure Jacobian (unit-screw columns, so its largest singular value
-    /// is not round-off).
-    fn unitless_rates(&self, screws: &[Twist], free: &[usize]) -> (DMatrix<f64>, linalg::Rank) {
-        let c = self.dimensionless(&self.closure_jacobian(screws));
-        let cf = DMatrix::from_fn(c.nrows(), free.len(), |r, k| c[(r, free[k])]);
-        if cf.nrows() == 0 {
-            return (
-                DMatrix::identity(free.len(), free.len()),
-                linalg::Rank {
-                    rank: 0,
-                    singular_values: Vec::new(),
-                    tolerance: MOBILITY_TOLERANCE,
-                    scale: 0.0,
-                },
-            );
-        }
-        linalg::nullspace(&cf, MOBILITY_TOLERANCE)
-    }
-
-    /// The twist space of `body` at `q` with the `locked` joints held: a basis (columns) of the
-    /// spatial twists `(ω; v)` it can have, and the local degrees of freedom (its dimension).
-    #[must_use]
-    pub fn twist_space(&self, body: usize, q: &[f64], locked: &[bool]) -> (DMatrix<f64>, usize) {
-        let screws = self.joint_screws(q);
-        let (basis, rank) = self.unitless_twist_space(body, &screws, locked);
-        (self.physical_twists(&basis), rank.rank)
-    }
-
-    /// The twist space of `body` in the dimensionless form ([`Mechanism::unitless_twists`]): an
-    /// orthonormal basis and the rank decision. The body's twists are its dimensionless Jacobian
-    /// over an orthonormal basis of the compatible (dimensionless) joint rates, so their size is
-    /// judged against the norm of that Jacobian (unit screws), not against their own largest
-    /// value, which is round-off when the body cannot move.
-    pub(crate) fn unitless_twist_space(
-        &self,
-        body: usize,
-        screws: &[Twist],
-        locked: &[bool],
-    ) -> (DMatrix<f64>, linalg::Rank) {
-        let free = self.free(locked);
-        let (rates, _) = self.unitless_rates(screws, &free);
-        let j = self.dimensionless(&self.body_jacobian(body, screws));
-        let jf = DMatrix::from_fn(6, free.len(), |r, k| j[(r, free[k])]);
-        let norm = jf.norm();
-        linalg::span_basis_scaled(&(jf * rates), MOBILITY_TOLERANCE, Some(norm.max(1.0)))
-    }
-
-    /// Closes the loops from `q` with the `locked` joints held, and when `target` is given also
-    /// moves `body` to the displacement `target` from its reference pose
-    /// ([`Mechanism::assemble_to`] with a [`Goal::Pose`]).
-    ///
-    /// # Errors
-    /// [`MechanismError::NotAssembled`] when the residual does not fall below
-    /// [`ASSEMBLY_TOLERANCE`] (rotation in radians, translation over the length scale).
-    pub fn assemble(
-        &self,
-        q: &[f64],
-        locked: &[bool],
-        target: Option<(usize, &Displacement)>,
-    ) -> Result<Vec<f64>, MechanismError> {
-        let goal = target.map(|(body, g)| Goal::Pose {
-            body,
-            displacement: *g,
-        });
-        self.assemble_to(q, locked, goal.as_ref())
     }
 }
 

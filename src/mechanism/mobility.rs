@@ -1,0 +1,99 @@
+//! Mobility: the joint rates compatible with loop closure (the null space of the closure
+//! Jacobian over the free joints) and the twists they give a body.
+
+use super::{MOBILITY_TOLERANCE, Mechanism};
+use crate::linalg;
+use crate::screw::Twist;
+use nalgebra::DMatrix;
+
+/// The result of a mobility analysis at one configuration.
+#[derive(Debug, Clone)]
+pub struct Mobility {
+    /// Dimension of the joint-rate null space of the loop-closure Jacobian (free joints only).
+    pub dof: usize,
+    /// Rank report of the (dimensionless) loop-closure Jacobian.
+    pub closure_rank: linalg::Rank,
+    /// A basis of compatible rates of the free joints (columns, one entry per free joint, in
+    /// joint order; prismatic rates in length units).
+    pub rates: DMatrix<f64>,
+}
+
+impl Mechanism {
+    /// The free joints of a lock mask.
+    pub(super) fn free(&self, locked: &[bool]) -> Vec<usize> {
+        (0..self.joints.len())
+            .filter(|&j| !locked.get(j).copied().unwrap_or(false))
+            .collect()
+    }
+
+    /// The mobility at `q` with the `locked` joints held: the dimension of the null space of the
+    /// loop-closure Jacobian over the free joints.
+    #[must_use]
+    pub fn mobility(&self, q: &[f64], locked: &[bool]) -> Mobility {
+        let screws = self.joint_screws(q);
+        self.mobility_with(&screws, locked)
+    }
+
+    fn mobility_with(&self, screws: &[Twist], locked: &[bool]) -> Mobility {
+        let free = self.free(locked);
+        let (mut basis, rank) = self.unitless_rates(screws, &free);
+        // Back to physical rates: prismatic rates in length units.
+        for (k, &j) in free.iter().enumerate() {
+            basis.row_mut(k).scale_mut(self.unit(j));
+        }
+        Mobility {
+            dof: basis.ncols(),
+            closure_rank: rank,
+            rates: basis,
+        }
+    }
+
+    /// An orthonormal basis of the dimensionless rates of the `free` joints (prismatic rates
+    /// over the length scale) that keep every loop closed, with the rank decision of the
+    /// dimensionless loop-closure Jacobian (unit-screw columns, so its largest singular value
+    /// is not round-off).
+    fn unitless_rates(&self, screws: &[Twist], free: &[usize]) -> (DMatrix<f64>, linalg::Rank) {
+        let c = self.dimensionless(&self.closure_jacobian(screws));
+        let cf = DMatrix::from_fn(c.nrows(), free.len(), |r, k| c[(r, free[k])]);
+        if cf.nrows() == 0 {
+            return (
+                DMatrix::identity(free.len(), free.len()),
+                linalg::Rank {
+                    rank: 0,
+                    singular_values: Vec::new(),
+                    tolerance: MOBILITY_TOLERANCE,
+                    scale: 0.0,
+                },
+            );
+        }
+        linalg::nullspace(&cf, MOBILITY_TOLERANCE)
+    }
+
+    /// The twist space of `body` at `q` with the `locked` joints held: a basis (columns) of the
+    /// spatial twists `(ω; v)` it can have, and the local degrees of freedom (its dimension).
+    #[must_use]
+    pub fn twist_space(&self, body: usize, q: &[f64], locked: &[bool]) -> (DMatrix<f64>, usize) {
+        let screws = self.joint_screws(q);
+        let (basis, rank) = self.unitless_twist_space(body, &screws, locked);
+        (self.physical_twists(&basis), rank.rank)
+    }
+
+    /// The twist space of `body` in the dimensionless form ([`Mechanism::unitless_twists`]): an
+    /// orthonormal basis and the rank decision. The body's twists are its dimensionless Jacobian
+    /// over an orthonormal basis of the compatible (dimensionless) joint rates, so their size is
+    /// judged against the norm of that Jacobian (unit screws), not against their own largest
+    /// value, which is round-off when the body cannot move.
+    pub(crate) fn unitless_twist_space(
+        &self,
+        body: usize,
+        screws: &[Twist],
+        locked: &[bool],
+    ) -> (DMatrix<f64>, linalg::Rank) {
+        let free = self.free(locked);
+        let (rates, _) = self.unitless_rates(screws, &free);
+        let j = self.dimensionless(&self.body_jacobian(body, screws));
+        let jf = DMatrix::from_fn(6, free.len(), |r, k| j[(r, free[k])]);
+        let norm = jf.norm();
+        linalg::span_basis_scaled(&(jf * rates), MOBILITY_TOLERANCE, Some(norm.max(1.0)))
+    }
+}
