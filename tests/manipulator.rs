@@ -961,19 +961,24 @@ fn build_refuses_a_singular_leg_instead_of_claiming_turned_axes() {
         actuated: Some(vec![1]),
         ..Default::default()
     };
-    let e = build(&spec("CRR", "zzzz")).unwrap_err();
+    // The library's typed error, worded with the CLI's option names (issue 10: flag names are
+    // the front end's, `BuildError::describe`).
+    let cli = |e: kinsyn::manipulator::build::BuildError| {
+        e.describe(|f| format!("--{}", f.name().replace('_', "-")))
+    };
+    let e = cli(build(&spec("CRR", "zzzz")).unwrap_err());
     assert_eq!(
         e,
         "--chain \"CRR\" --axes zzzz: leg 1 (CRR) is singular at the reference configuration: its 4 joint twists have rank 3 there, 4 at generic joint values; joints 2 and 4 dependent; turning its revolutes leaves these axis directions unchanged, so no file is written"
     );
     // Four parallel revolutes span at most ω_z and two translations: dependent everywhere.
-    let e = build(&spec("RRRR", "zzzz")).unwrap_err();
+    let e = cli(build(&spec("RRRR", "zzzz")).unwrap_err());
     assert!(
         e.contains("leg 1 (RRRR) has joints dependent at every configuration: its 4 joint twists have rank 3 at generic joint values; joints 1, 2, 3 and 4 dependent"),
         "{e}"
     );
     // Parallel marks are checked on the letters too.
-    let e = build(&spec("RaRaRa", "xyx")).unwrap_err();
+    let e = cli(build(&spec("RaRaRa", "xyx")).unwrap_err());
     assert_eq!(
         e,
         "--axes \"xyx\": joints 1 and 2 of RaRaRa are in parallel group 'a' but get 'x' and 'y': the axes of a parallel group must be parallel"
@@ -1244,4 +1249,100 @@ fn a_catalogue_id_builds_the_same_manipulator_as_the_synthesised_catalogue() {
     );
     assert_eq!(a, b);
     assert!(a.contains("legs[2].chain") && a.contains("T9-999"), "{a}");
+}
+
+/// Issue 10, item 8: the library's build errors name the spec's fields (`base_radius`), never
+/// the CLI's options (`--base-radius`); the CLI words them with its options through
+/// `BuildError::describe` (tests/cli_manipulator.rs checks those texts).
+#[test]
+fn build_errors_name_spec_fields_not_cli_options() {
+    use kinsyn::manipulator::build::{BuildField, BuildSpec, build};
+    let good = || BuildSpec {
+        chain: "RP!S".into(),
+        axes: Some("yxxyz".into()),
+        ..Default::default()
+    };
+    let cases: Vec<(BuildSpec, Vec<BuildField>)> = vec![
+        (BuildSpec { legs: 2, ..good() }, vec![BuildField::Legs]),
+        (
+            BuildSpec {
+                base_radius: -1.0,
+                ..good()
+            },
+            vec![BuildField::BaseRadius],
+        ),
+        (
+            BuildSpec {
+                height: 1e-300,
+                ..good()
+            },
+            vec![BuildField::Height],
+        ),
+        (
+            BuildSpec {
+                platform_radius: 1e9,
+                ..good()
+            },
+            vec![
+                BuildField::BaseRadius,
+                BuildField::PlatformRadius,
+                BuildField::Height,
+            ],
+        ),
+        (
+            BuildSpec {
+                twist: 400.0,
+                ..good()
+            },
+            vec![BuildField::Twist],
+        ),
+        (
+            BuildSpec {
+                chain: "RPX".into(),
+                ..good()
+            },
+            vec![BuildField::Chain],
+        ),
+        (
+            BuildSpec {
+                axes: None,
+                ..good()
+            },
+            vec![BuildField::Axes],
+        ),
+        (
+            BuildSpec {
+                axes: Some("xy".into()),
+                ..good()
+            },
+            vec![BuildField::Axes],
+        ),
+        (
+            BuildSpec {
+                actuated: Some(vec![9]),
+                ..good()
+            },
+            vec![BuildField::Actuated],
+        ),
+        (
+            BuildSpec {
+                chain: "RPS".into(),
+                ..good()
+            },
+            vec![BuildField::Actuated],
+        ),
+    ];
+    for (spec, fields) in cases {
+        let e = build(&spec).expect_err("a bad spec");
+        let text = e.to_string();
+        assert!(!text.contains("--"), "{text}");
+        assert_eq!(e.fields(), fields, "{text}");
+        for f in &fields {
+            assert!(
+                text.contains(f.name()) || matches!(f, BuildField::Chain),
+                "{text} names {}",
+                f.name()
+            );
+        }
+    }
 }

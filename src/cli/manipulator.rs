@@ -2,7 +2,7 @@
 
 use super::{CliError, json};
 use indicatif::{ProgressBar, ProgressStyle};
-use kinsyn::manipulator::build::{BuildSpec, build};
+use kinsyn::manipulator::build::{BuildField, BuildSpec, build};
 use kinsyn::manipulator::{
     Analysis, Manipulator, ManipulatorError, Mode, Modes, PatternModes, PositionRequest, RowKind,
     file, rank_text,
@@ -76,9 +76,24 @@ fn warn(path: &Path, warnings: &[String]) {
     }
 }
 
+/// The `kinsyn build` option that sets a [`BuildSpec`] field.
+fn build_flag(field: BuildField) -> String {
+    match field {
+        BuildField::Legs => "--legs",
+        BuildField::Chain => "--chain",
+        BuildField::Axes => "--axes",
+        BuildField::Actuated => "--actuated",
+        BuildField::BaseRadius => "--base-radius",
+        BuildField::PlatformRadius => "--platform-radius",
+        BuildField::Height => "--height",
+        BuildField::Twist => "--twist",
+    }
+    .to_string()
+}
+
 /// `kinsyn build`: writes a description (to `output`, or returns it for stdout).
 pub fn build_command(spec: &BuildSpec, output: Option<&Path>) -> Result<String, CliError> {
-    let description = build(spec).map_err(CliError::Input)?;
+    let description = build(spec).map_err(|e| CliError::Input(e.describe(build_flag)))?;
     // Check that what is written can be read back and built.
     let m = Manipulator::new(&description).map_err(|e| {
         CliError::Input(format!(

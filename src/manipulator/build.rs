@@ -157,6 +157,245 @@ fn leg_primitives(
 /// The golden angle, 2π(1 − 1/φ): successive multiples never line up.
 const GOLDEN_ANGLE: f64 = 2.399_963_229_728_653;
 
+/// A field of [`BuildSpec`], as named in [`BuildError`] messages: the library says
+/// `base_radius`, a front end names its own option (the CLI's `--base-radius`) through
+/// [`BuildError::describe`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum BuildField {
+    /// [`BuildSpec::legs`].
+    Legs,
+    /// [`BuildSpec::chain`].
+    Chain,
+    /// [`BuildSpec::axes`].
+    Axes,
+    /// [`BuildSpec::actuated`].
+    Actuated,
+    /// [`BuildSpec::base_radius`].
+    BaseRadius,
+    /// [`BuildSpec::platform_radius`].
+    PlatformRadius,
+    /// [`BuildSpec::height`].
+    Height,
+    /// [`BuildSpec::twist`].
+    Twist,
+}
+
+impl BuildField {
+    /// The field's name in [`BuildSpec`].
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            BuildField::Legs => "legs",
+            BuildField::Chain => "chain",
+            BuildField::Axes => "axes",
+            BuildField::Actuated => "actuated",
+            BuildField::BaseRadius => "base_radius",
+            BuildField::PlatformRadius => "platform_radius",
+            BuildField::Height => "height",
+            BuildField::Twist => "twist",
+        }
+    }
+}
+
+/// Why [`build`] made no description: the spec's fields, or a leg that the symmetric geometry
+/// cannot make generic. Each variant names the fields at fault ([`BuildError::fields`]).
+#[derive(Debug, Clone, PartialEq)]
+pub enum BuildError {
+    /// Not 3 to 6 legs (paper 000 §3).
+    Legs(usize),
+    /// A radius or the height is not a positive number.
+    NotPositive(BuildField, f64),
+    /// A radius or the height is outside the lengths kinsyn computes with (docs/limits.md).
+    LengthOutOfRange(BuildField, f64),
+    /// The largest of the radii and height is too many times the smallest (docs/limits.md).
+    LengthRatio {
+        /// [`BuildSpec::base_radius`].
+        base_radius: f64,
+        /// [`BuildSpec::platform_radius`].
+        platform_radius: f64,
+        /// [`BuildSpec::height`].
+        height: f64,
+        /// Largest over smallest.
+        ratio: f64,
+    },
+    /// The twist is not an angle within ±360°.
+    Twist(f64),
+    /// The chain does not parse, or is an unknown catalogue id.
+    Chain(String),
+    /// The chain is not in the catalogue and no axes were given.
+    AxesNeeded {
+        /// The chain.
+        chain: String,
+    },
+    /// The axis word has the wrong length or letters.
+    AxesWord {
+        /// The axis word given.
+        axes: String,
+        /// The chain.
+        chain: String,
+        /// Its number of primitive joints.
+        primitives: usize,
+    },
+    /// The axis letters break a C, U or S (paper 000 §2).
+    JointAxes {
+        /// The axis word given.
+        axes: String,
+        /// C, U or S.
+        letter: char,
+        /// Its first primitive joint (1-based).
+        first: usize,
+        /// Its last primitive joint (1-based).
+        last: usize,
+        /// What the joint needs.
+        why: &'static str,
+    },
+    /// Two joints of one parallel group get letters that are not parallel.
+    ParallelGroup {
+        /// The axis word given.
+        axes: String,
+        /// The chain.
+        chain: String,
+        /// The group's mark.
+        group: char,
+        /// The group's first joint (1-based).
+        first: usize,
+        /// The joint whose letter differs (1-based).
+        at: usize,
+    },
+    /// The actuated list is not a set of joints of the chain consistent with its marks.
+    Actuated(String),
+    /// No joint is actuated.
+    NoActuated {
+        /// The chain's number of primitive joints.
+        primitives: usize,
+    },
+    /// A leg is not generic in this geometry and turning its axes did not help.
+    Refused {
+        /// The chain as given.
+        chain: String,
+        /// The axis word.
+        axes: String,
+        /// What the leg check found.
+        warning: String,
+        /// Why turning the axes does not help.
+        why: String,
+    },
+}
+
+impl BuildError {
+    /// The spec fields the error is about, in the order its message names them.
+    #[must_use]
+    pub fn fields(&self) -> Vec<BuildField> {
+        use BuildField as F;
+        match self {
+            BuildError::Legs(_) => vec![F::Legs],
+            BuildError::NotPositive(f, _) | BuildError::LengthOutOfRange(f, _) => vec![*f],
+            BuildError::LengthRatio { .. } => vec![F::BaseRadius, F::PlatformRadius, F::Height],
+            BuildError::Twist(_) => vec![F::Twist],
+            BuildError::Chain(_) => vec![F::Chain],
+            BuildError::AxesNeeded { .. }
+            | BuildError::AxesWord { .. }
+            | BuildError::JointAxes { .. }
+            | BuildError::ParallelGroup { .. } => vec![F::Axes],
+            BuildError::Actuated(_) | BuildError::NoActuated { .. } => vec![F::Actuated],
+            BuildError::Refused { .. } => vec![F::Chain, F::Axes],
+        }
+    }
+
+    /// The message with each field called `name(field)`: the [`Display`](std::fmt::Display)
+    /// form uses the spec's field names, a front end its own option names.
+    pub fn describe(&self, name: impl Fn(BuildField) -> String) -> String {
+        use BuildField as F;
+        match self {
+            BuildError::Legs(n) => format!(
+                "{} {n}: paper 000 §3 builds manipulators of three to six legs",
+                name(F::Legs)
+            ),
+            BuildError::NotPositive(f, x) => format!("{} {x}: must be a positive length", name(*f)),
+            BuildError::LengthOutOfRange(f, x) => format!(
+                "{} {x:e}: lengths are between {:e} and {:e} (docs/limits.md); choose another length unit",
+                name(*f),
+                super::SMALLEST_LENGTH,
+                super::LARGEST_COORDINATE
+            ),
+            BuildError::LengthRatio {
+                base_radius,
+                platform_radius,
+                height,
+                ratio,
+            } => format!(
+                "{} {base_radius}, {} {platform_radius}, {} {height}: the largest is {ratio:.1e} times the smallest; at most {:e} (docs/limits.md), beyond which the legs' ranks are round-off",
+                name(F::BaseRadius),
+                name(F::PlatformRadius),
+                name(F::Height),
+                super::LARGEST_LENGTH_RATIO
+            ),
+            BuildError::Twist(t) => {
+                format!("{} {t}: degrees between -360 and 360", name(F::Twist))
+            }
+            BuildError::Chain(m) => m.clone(),
+            BuildError::AxesNeeded { chain } => format!(
+                "{chain} is not a catalogue chain; give its axes with {} (one of x, y, z per primitive joint, in the leg frame)",
+                name(F::Axes)
+            ),
+            BuildError::AxesWord {
+                axes,
+                chain,
+                primitives,
+            } => format!(
+                "{} {axes:?}: one letter x, y or z per primitive joint of {chain} ({primitives})",
+                name(F::Axes)
+            ),
+            BuildError::JointAxes {
+                axes,
+                letter,
+                first,
+                last,
+                why,
+            } => format!(
+                "{} {axes:?}: the {letter} at joints {first}–{last} ('{}'): {why}",
+                name(F::Axes),
+                axes.get(first - 1..*last).unwrap_or_default()
+            ),
+            BuildError::ParallelGroup {
+                axes,
+                chain,
+                group,
+                first,
+                at,
+            } => format!(
+                "{} {axes:?}: joints {first} and {at} of {chain} are in parallel group '{group}' but get '{}' and '{}': the axes of a parallel group must be parallel",
+                name(F::Axes),
+                axes.get(first - 1..*first).unwrap_or_default(),
+                axes.get(at - 1..*at).unwrap_or_default()
+            ),
+            BuildError::Actuated(m) => format!("{}: {m}", name(F::Actuated)),
+            BuildError::NoActuated { primitives } => format!(
+                "no actuated joint: mark them with '!' in the chain or give {} (1 to {primitives})",
+                name(F::Actuated)
+            ),
+            BuildError::Refused {
+                chain,
+                axes,
+                warning,
+                why,
+            } => format!(
+                "{} {chain:?} {} {axes}: {warning}; {why}, so no file is written",
+                name(F::Chain),
+                name(F::Axes)
+            ),
+        }
+    }
+}
+
+impl std::fmt::Display for BuildError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.describe(|field| field.name().to_string()))
+    }
+}
+
+impl std::error::Error for BuildError {}
+
 /// Rounds to 12 decimals so that written files do not carry round-off digits.
 fn tidy(v: Vector3<f64>) -> [f64; 3] {
     v.map(|x| (x * 1e12).round() / 1e12 + 0.0).into()
@@ -168,63 +407,55 @@ fn tidy(v: Vector3<f64>) -> [f64; 3] {
 /// A number of legs outside 3–6, a chain that does not parse or is not in the catalogue when
 /// its axes are needed, an axis word of the wrong length or letters, no actuated joint, or
 /// geometry numbers that are not positive.
-pub fn build(spec: &BuildSpec) -> Result<Description, String> {
+pub fn build(spec: &BuildSpec) -> Result<Description, BuildError> {
     if !(3..=6).contains(&spec.legs) {
-        return Err(format!(
-            "--legs {}: paper 000 §3 builds manipulators of three to six legs",
-            spec.legs
-        ));
+        return Err(BuildError::Legs(spec.legs));
     }
     for (name, x) in [
-        ("--base-radius", spec.base_radius),
-        ("--platform-radius", spec.platform_radius),
-        ("--height", spec.height),
+        (BuildField::BaseRadius, spec.base_radius),
+        (BuildField::PlatformRadius, spec.platform_radius),
+        (BuildField::Height, spec.height),
     ] {
         if !(x.is_finite() && x > 0.0) {
-            return Err(format!("{name} {x}: must be a positive length"));
+            return Err(BuildError::NotPositive(name, x));
         }
         if !(super::SMALLEST_LENGTH..=super::LARGEST_COORDINATE).contains(&x) {
-            return Err(format!(
-                "{name} {x:e}: lengths are between {:e} and {:e} (docs/limits.md); choose another length unit",
-                super::SMALLEST_LENGTH,
-                super::LARGEST_COORDINATE
-            ));
+            return Err(BuildError::LengthOutOfRange(name, x));
         }
     }
     let lengths = [spec.base_radius, spec.platform_radius, spec.height];
     let ratio = lengths.iter().copied().fold(0.0, f64::max)
         / lengths.iter().copied().fold(f64::INFINITY, f64::min);
     if ratio > super::LARGEST_LENGTH_RATIO {
-        return Err(format!(
-            "--base-radius {}, --platform-radius {}, --height {}: the largest is {ratio:.1e} times the smallest; at most {:e} (docs/limits.md), beyond which the legs' ranks are round-off",
-            spec.base_radius,
-            spec.platform_radius,
-            spec.height,
-            super::LARGEST_LENGTH_RATIO
-        ));
+        return Err(BuildError::LengthRatio {
+            base_radius: spec.base_radius,
+            platform_radius: spec.platform_radius,
+            height: spec.height,
+            ratio,
+        });
     }
     if !spec.twist.is_finite() || spec.twist.abs() > 360.0 {
-        return Err(format!(
-            "--twist {}: degrees between -360 and 360",
-            spec.twist
-        ));
+        return Err(BuildError::Twist(spec.twist));
     }
     let lookup = super::CommittedChains::get();
-    let (chain, entry_axes) = super::leg_chain(&spec.chain, spec.axes.is_none(), lookup)?;
+    let (chain, entry_axes) =
+        super::leg_chain(&spec.chain, spec.axes.is_none(), lookup).map_err(BuildError::Chain)?;
     let primitives = chain.primitives().count();
     let axes = match (&spec.axes, entry_axes) {
         (Some(word), _) => word.clone(),
         (None, Some(word)) => word,
         (None, None) => {
-            return Err(format!(
-                "{chain} is not a catalogue chain; give its axes with --axes (one of x, y, z per primitive joint, in the leg frame)"
-            ));
+            return Err(BuildError::AxesNeeded {
+                chain: chain.to_string(),
+            });
         }
     };
     if axes.len() != primitives || !axes.bytes().all(|b| matches!(b, b'x' | b'y' | b'z')) {
-        return Err(format!(
-            "--axes {axes:?}: one letter x, y or z per primitive joint of {chain} ({primitives})"
-        ));
+        return Err(BuildError::AxesWord {
+            axes,
+            chain: chain.to_string(),
+            primitives,
+        });
     }
     // Each C, U and S must get directions that keep it that joint (paper 000 §2); the letters
     // are checked as the unit vectors they stand for.
@@ -232,35 +463,29 @@ pub fn build(spec: &BuildSpec) -> Result<Description, String> {
         .bytes()
         .map(|b| Vector3::ith(usize::from(b - b'x'), 1.0))
         .collect();
-    super::check_joint_axes(&chain, &letter_vectors).map_err(|f| {
-        format!(
-            "--axes {axes:?}: the {} at joints {}–{} ('{}'): {}",
-            f.letter,
-            f.primitives.start + 1,
-            f.primitives.end,
-            &axes[f.primitives.clone()],
-            f.why
-        )
+    super::check_joint_axes(&chain, &letter_vectors).map_err(|f| BuildError::JointAxes {
+        axes: axes.clone(),
+        letter: f.letter,
+        first: f.primitives.start + 1,
+        last: f.primitives.end,
+        why: f.why,
     })?;
     super::leg::check_parallel_marks(&chain, &letter_vectors).map_err(|f| {
-        format!(
-            "--axes {axes:?}: joints {} and {} of {chain} are in parallel group '{}' but get '{}' and '{}': the axes of a parallel group must be parallel",
-            f.first + 1,
-            f.at + 1,
-            f.group,
-            &axes[f.first..=f.first],
-            &axes[f.at..=f.at]
-        )
+        BuildError::ParallelGroup {
+            axes: axes.clone(),
+            chain: chain.to_string(),
+            group: f.group,
+            first: f.first + 1,
+            at: f.at + 1,
+        }
     })?;
     let actuated: Vec<usize> = super::actuated_positions(&chain, spec.actuated.as_deref())
-        .map_err(|m| format!("--actuated: {m}"))?
+        .map_err(BuildError::Actuated)?
         .into_iter()
         .map(|p| p + 1)
         .collect();
     if actuated.is_empty() {
-        return Err(format!(
-            "no actuated joint: mark them with '!' in the chain or give --actuated (1 to {primitives})"
-        ));
+        return Err(BuildError::NoActuated { primitives });
     }
     let plain: Chain = chain.without_actuation();
     let letters = plain.joints().len();
@@ -310,11 +535,11 @@ pub fn build(spec: &BuildSpec) -> Result<Description, String> {
                 .first()
                 .map(ToString::to_string)
                 .unwrap_or_default();
-            let refused = |why: &str| {
-                format!(
-                    "--chain {:?} --axes {axes}: {warning}; {why}, so no file is written",
-                    spec.chain.trim()
-                )
+            let refused = |why: &str| BuildError::Refused {
+                chain: spec.chain.trim().to_string(),
+                axes: axes.clone(),
+                warning: warning.clone(),
+                why: why.to_string(),
             };
             if found.has_dependent_joints() {
                 return Err(refused(
