@@ -8,7 +8,7 @@
 
 use crate::chain::{ChainError, SerialChain};
 use crate::motion::PatternQuery;
-use crate::notation::{Chain, JointKind, Primitive};
+use crate::notation::{Axis, AxisWord, Chain, JointKind, Primitive};
 use crate::paper::{self, Difference, DifferenceKind, RowComparison};
 use crate::synthesis::{self, Candidate, Options, TABLES, tables};
 use crate::verification::{self, Settings, Verification};
@@ -114,8 +114,8 @@ pub struct Entry {
     pub family: String,
     /// The P/R permutation it is read from.
     pub word: String,
-    /// Axis direction of each primitive joint at the reference configuration.
-    pub axes: String,
+    /// Axis direction of each primitive joint at the reference configuration (`xyzxyz`).
+    pub axes: AxisWord,
     /// Parallel groups as 1-based positions in `word` (and `axes`).
     pub parallel_groups: Vec<Vec<usize>>,
     /// Joint letter counts.
@@ -134,12 +134,12 @@ pub struct Entry {
 }
 
 impl Entry {
-    /// The chain's primitive joints, axis directions (0, 1, 2) and joint blocks (primitives per
-    /// letter), in the order of `word`.
+    /// The chain's primitive joints, axis directions and joint blocks (primitives per letter),
+    /// in the order of `word`.
     #[must_use]
-    pub fn layout(&self) -> (Vec<Primitive>, Vec<u8>, Vec<usize>) {
+    pub fn layout(&self) -> (Vec<Primitive>, Vec<Axis>, Vec<usize>) {
         let word = synthesis::parse_word(&self.word).unwrap_or_default();
-        let axes = self.axes.bytes().map(|b| b.wrapping_sub(b'x')).collect();
+        let axes = self.axes.axes().collect();
         let blocks = self
             .notation
             .parse::<Chain>()

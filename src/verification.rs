@@ -11,11 +11,12 @@
 //! ```
 //! use kinsyn::verification::{verify, Settings};
 //! use kinsyn::chain::SerialChain;
+//! use kinsyn::notation::Axis::{X, Y, Z};
 //! use kinsyn::notation::Primitive::{P, R};
 //! use rand::SeedableRng;
 //! // PPPS: three perpendicular guides and a spherical wrist (Table 1 row 1).
 //! let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(7);
-//! let chain = SerialChain::from_layout(&[P, P, P, R, R, R], &[0, 1, 2, 0, 1, 2], &[1, 1, 1, 3], &mut rng).unwrap();
+//! let chain = SerialChain::from_layout(&[P, P, P, R, R, R], &[X, Y, Z, X, Y, Z], &[1, 1, 1, 3], &mut rng).unwrap();
 //! let v = verify(&chain, &Settings::default(), 7);
 //! assert!(v.is_3t3r);
 //! assert_eq!(v.patterns["T3"], vec!["456"]); // lock the S: spatial translation
