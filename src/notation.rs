@@ -120,7 +120,7 @@ impl Axis {
 
 impl fmt::Display for Axis {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{}", self.letter())
+        f.pad(["x", "y", "z"][self.index()])
     }
 }
 
@@ -200,7 +200,7 @@ impl std::ops::Deref for AxisWord {
 
 impl fmt::Display for AxisWord {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(&self.0)
+        f.pad(&self.0)
     }
 }
 

@@ -2,7 +2,7 @@
 //! chains whose motion is known by hand, and the text forms.
 
 use kinsyn::chain::SerialChain;
-use kinsyn::motion::{GroupKind, Pattern, PatternQuery};
+use kinsyn::motion::{GroupKind, Pattern, PatternName, PatternQuery};
 use kinsyn::notation::Axis::{self, X, Y, Z};
 use kinsyn::notation::Primitive::{self, P, R};
 use kinsyn::verification::{Settings, configurations, locked_motion, random_configuration, verify};
@@ -10,6 +10,11 @@ use nalgebra::{Rotation3, Vector3};
 use proptest::prelude::*;
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
+
+/// A pattern name as the catalogue writes it.
+fn name(text: &str) -> PatternName {
+    text.parse().unwrap()
+}
 
 fn v(x: f64, y: f64, z: f64) -> Vector3<f64> {
     Vector3::new(x, y, z)
@@ -140,10 +145,10 @@ fn ppps_locks_give_t3_and_s() {
     ]);
     let ver = verify(&c, &Settings::default(), 11);
     assert!(ver.is_3t3r);
-    assert_eq!(ver.patterns["T3"], vec!["456"]);
-    assert_eq!(ver.patterns["S"], vec!["123"]);
-    assert_eq!(ver.patterns["D"], vec!["-"]);
-    assert_eq!(ver.patterns["E"], vec!["123456"]);
+    assert_eq!(ver.patterns[&name("T3")], vec!["456"]);
+    assert_eq!(ver.patterns[&name("S")], vec!["123"]);
+    assert_eq!(ver.patterns[&name("D")], vec!["-"]);
+    assert_eq!(ver.patterns[&name("E")], vec!["123456"]);
 }
 
 #[test]
