@@ -6,11 +6,11 @@
 // Each fuzz target uses one of these, the replay test all of them.
 #![allow(dead_code)]
 
+use kinsyn::lockset::LockSet;
 use kinsyn::manipulator::Manipulator;
 use kinsyn::mechanism::SampleSettings;
 use kinsyn::motion::PatternQuery;
 use kinsyn::notation::Chain;
-use kinsyn::verification;
 use std::sync::OnceLock;
 
 /// A chain that parses prints a text that parses to the same chain, prints the same text, and
@@ -163,26 +163,28 @@ pub fn check_position(data: &[u8]) {
     }
 }
 
-/// Lock sets of a chain of 1 to 8 joints, and actuator labels of the 3-UPS: an accepted set
-/// names joints that exist, and its text reads back to the same set.
+/// Lock sets of a chain of 1 to 12 joints (digits up to 9, numbers with commas beyond), and
+/// actuator labels of the 3-UPS: an accepted set names joints that exist, and its text reads
+/// back to the same set.
 pub fn check_locks(data: &[u8]) {
     let Ok(text) = std::str::from_utf8(data) else {
         return;
     };
-    for n in 1..=8usize {
-        let Ok(mask) = verification::parse_lock_set(text, n) else {
+    for n in 1..=12usize {
+        let Ok(set) = LockSet::parse_for(text, n) else {
             continue;
         };
+        let mask = set.mask();
         assert_eq!(
             mask >> n,
             0,
             "{text:?}: joints beyond {n} in mask {mask:#b}"
         );
-        let printed = verification::lock_text(mask, n);
-        let again = verification::parse_lock_set(&printed, n)
+        let printed = set.to_string();
+        let again = LockSet::parse_for(&printed, n)
             .unwrap_or_else(|e| panic!("{text:?} (n = {n}) reads but {printed:?} does not: {e}"));
         assert_eq!(
-            again, mask,
+            again, set,
             "{text:?} (n = {n}): {printed:?} reads differently"
         );
     }

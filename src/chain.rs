@@ -22,7 +22,7 @@
 //! assert!((j[(3, 1)] - 1.0).abs() < 1e-12 && j[(4, 1)].abs() < 1e-12);
 //! ```
 
-use crate::notation::Primitive;
+use crate::notation::{Axis, Primitive};
 use crate::screw::{Twist, transform_twist};
 pub use crate::spatial::{Displacement, compose};
 use nalgebra::{Matrix6xX, Rotation3, Unit, Vector3};
@@ -209,8 +209,7 @@ impl SerialChain {
         }
     }
 
-    /// A concrete chain for a catalogue layout: primitive `word`, axis directions `axes`
-    /// (0, 1, 2 for x, y, z), and `blocks`, the number of primitives in each joint letter in
+    /// A concrete chain for a catalogue layout: primitive `word`, axis directions `axes`, and `blocks`, the number of primitives in each joint letter in
     /// order (a C, U or S block shares one point: coaxial or intersecting axes, rules 2–3).
     /// Consecutive blocks are offset by generic non-zero vectors drawn from `rng` (length 0.5 to
     /// 1.5 in a random direction), so no other coincidence holds.
@@ -219,14 +218,11 @@ impl SerialChain {
     /// If the lengths of `word`, `axes` and `blocks` disagree.
     pub fn from_layout(
         word: &[Primitive],
-        axes: &[u8],
+        axes: &[Axis],
         blocks: &[usize],
         rng: &mut impl Rng,
     ) -> Result<Self, ChainError> {
-        if word.len() != axes.len()
-            || blocks.iter().sum::<usize>() != word.len()
-            || axes.iter().any(|&a| a > 2)
-        {
+        if word.len() != axes.len() || blocks.iter().sum::<usize>() != word.len() {
             return Err(ChainError::Layout(format!(
                 "word of {} joints, {} axes, blocks {:?}",
                 word.len(),
@@ -241,7 +237,7 @@ impl SerialChain {
             for k in at..at + size {
                 joints.push(JointAxis {
                     kind: word[k],
-                    axis: Vector3::ith(axes[k] as usize, 1.0),
+                    axis: axes[k].unit(),
                     point,
                 });
             }

@@ -18,6 +18,7 @@
 pub mod catalogue;
 pub mod chain;
 mod linalg;
+pub mod lockset;
 pub mod manipulator;
 pub mod mechanism;
 pub mod motion;

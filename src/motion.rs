@@ -31,6 +31,7 @@
 //! ```
 
 use crate::linalg;
+use crate::notation::Axis;
 use crate::screw::{self, Twist, lie_bracket};
 use nalgebra::{DMatrix, Vector3};
 use serde::Serialize;
@@ -201,47 +202,237 @@ impl Pattern {
     }
 }
 
-/// Names a unit direction: `x`, `y`, `z` when it lies along an axis (either sense), else its
-/// components.
-fn direction_text(d: &[f64; 3]) -> String {
-    for (i, name) in ["x", "y", "z"].iter().enumerate() {
-        if (d[i].abs() - 1.0).abs() < 1e-6 {
-            return (*name).to_string();
+impl Pattern {
+    /// The pattern's name: its kind and the axis-aligned or rounded direction of its axis or
+    /// plane normal, without the points and pitches that depend on the geometry.
+    #[must_use]
+    pub fn name(&self) -> PatternName {
+        match *self {
+            Pattern::NonGroup {
+                translations,
+                rotations,
+            } => PatternName::NonGroup {
+                translations,
+                rotations,
+            },
+            Pattern::Group(g) => PatternName::Group {
+                kind: g.kind,
+                direction: match g.kind.parameter() {
+                    Parameter::None => None,
+                    Parameter::Direction | Parameter::Plane => {
+                        g.direction.map(|d| Direction::of(&d))
+                    }
+                },
+            },
         }
-    }
-    // Rounded, and −0 written as 0, so that one direction always prints the same.
-    let c = |x: f64| (x * 1000.0).round() / 1000.0 + 0.0;
-    format!("[{:.3},{:.3},{:.3}]", c(d[0]), c(d[1]), c(d[2]))
-}
-
-/// Names the plane with unit normal `n`: `xy` for normal z, and so on.
-fn plane_text(n: &[f64; 3]) -> String {
-    match direction_text(n).as_str() {
-        "x" => "yz".to_string(),
-        "y" => "xz".to_string(),
-        "z" => "xy".to_string(),
-        other => format!("n={other}"),
     }
 }
 
 impl fmt::Display for Pattern {
-    /// The text form: the group symbol with its direction (`X(z)`, `G(xy)`, `T3`, `S`), or
-    /// `nTmR`. Points and pitches are in the JSON form only (they depend on the geometry).
+    /// The text form, its [`Pattern::name`]: the group symbol with its direction (`X(z)`,
+    /// `G(xy)`, `T3`, `S`), or `nTmR`. Points and pitches are in the JSON form only (they depend
+    /// on the geometry).
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        self.name().fmt(f)
+    }
+}
+
+/// The direction that names a group's axis (T, R, H, C, Y, X) or plane normal (T2, G).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Direction {
+    /// Along a frame axis, in either sense: written `x`, `y`, `z` (planes `yz`, `xz`, `xy`).
+    Along(Axis),
+    /// Any other unit direction, by its components in thousandths (rounded, −0 as 0): written
+    /// `[0.707,0.707,0.000]` (planes `n=[…]`, by their normal).
+    Oblique([i32; 3]),
+}
+
+impl Direction {
+    /// Names a unit direction: along an axis when one component is ±1 (within 1e-6), else
+    /// rounded to thousandths, so that one direction always gets the same name.
+    #[must_use]
+    pub fn of(d: &[f64; 3]) -> Self {
+        if let Some(a) = Axis::ALL
+            .into_iter()
+            .find(|a| (d[a.index()].abs() - 1.0).abs() < 1e-6)
+        {
+            return Direction::Along(a);
+        }
+        // Thousandths fit an i32 for a unit vector; a non-finite component reads as 0.
+        Direction::Oblique(d.map(|x| (x * 1000.0).round() as i32))
+    }
+
+    /// `x`, `y`, `z`, or the components.
+    fn text(self) -> String {
         match self {
-            Pattern::NonGroup {
+            Direction::Along(a) => a.to_string(),
+            Direction::Oblique(m) => {
+                let c = |k: i32| f64::from(k) / 1000.0;
+                format!("[{:.3},{:.3},{:.3}]", c(m[0]), c(m[1]), c(m[2]))
+            }
+        }
+    }
+
+    /// The plane with this normal: `yz` for x, `xz` for y, `xy` for z, else `n=[…]`.
+    fn plane_text(self) -> String {
+        match self {
+            Direction::Along(a) => ["yz", "xz", "xy"][a.index()].to_string(),
+            oblique => format!("n={}", oblique.text()),
+        }
+    }
+
+    /// Reads the components of `[a,b,c]` (the oblique form).
+    fn parse_oblique(text: &str) -> Option<Self> {
+        let inner = text.strip_prefix('[')?.strip_suffix(']')?;
+        let c: Vec<f64> = inner
+            .split(',')
+            .map(|x| {
+                x.parse::<f64>()
+                    .ok()
+                    .filter(|v| v.is_finite() && v.abs() <= 1.0)
+            })
+            .collect::<Option<_>>()?;
+        let d: [f64; 3] = c.try_into().ok()?;
+        Some(Direction::Oblique(d.map(|x| (x * 1000.0).round() as i32)))
+    }
+}
+
+/// A motion pattern by name: what the text form of a classified [`Pattern`] says — the group
+/// with the direction of its axis or plane normal, or `nTmR` — without the points and pitches
+/// that depend on the geometry. The keys of [`crate::verification::Verification::patterns`]:
+/// one name per pattern a chain gives with some joints locked.
+///
+/// Names are ordered by their text (`0T2R` < `C(x)` < `D` < `E` < `G(xy)` …), the order in
+/// which the catalogue's files list them; they serialise as that text.
+///
+/// ```
+/// use kinsyn::motion::{Direction, GroupKind, PatternName};
+/// use kinsyn::notation::Axis;
+/// let x: PatternName = "X(z)".parse().unwrap();
+/// assert_eq!(x, PatternName::Group { kind: GroupKind::X, direction: Some(Direction::Along(Axis::Z)) });
+/// assert_eq!(x.to_string(), "X(z)");
+/// assert!("1T2R".parse::<PatternName>().unwrap() < x);
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum PatternName {
+    /// One of the 12 displacement subgroups.
+    Group {
+        /// Which group.
+        kind: GroupKind,
+        /// Its direction or plane normal; `None` for the groups without one (E, T3, S, D).
+        direction: Option<Direction>,
+    },
+    /// A non-group pattern `nTmR`.
+    NonGroup {
+        /// Dimension minus rotational rank.
+        translations: usize,
+        /// Rank of the rotational part.
+        rotations: usize,
+    },
+}
+
+impl PatternName {
+    /// Whether the pattern is one of the 12 groups.
+    #[must_use]
+    pub fn is_group(&self) -> bool {
+        matches!(self, PatternName::Group { .. })
+    }
+}
+
+impl PatternName {
+    /// The text form: `X(z)`, `G(xy)`, `T3`, `1T2R`.
+    fn text(&self) -> String {
+        match *self {
+            PatternName::NonGroup {
                 translations,
                 rotations,
-            } => write!(f, "{translations}T{rotations}R"),
-            Pattern::Group(g) => {
-                f.write_str(g.kind.symbol())?;
-                match (g.kind.parameter(), g.direction) {
-                    (Parameter::Direction, Some(d)) => write!(f, "({})", direction_text(&d)),
-                    (Parameter::Plane, Some(n)) => write!(f, "({})", plane_text(&n)),
-                    _ => Ok(()),
+            } => format!("{translations}T{rotations}R"),
+            PatternName::Group { kind, direction } => {
+                let symbol = kind.symbol();
+                match (kind.parameter(), direction) {
+                    (Parameter::Direction, Some(d)) => format!("{symbol}({})", d.text()),
+                    (Parameter::Plane, Some(n)) => format!("{symbol}({})", n.plane_text()),
+                    _ => symbol.to_string(),
                 }
             }
         }
+    }
+}
+
+impl fmt::Display for PatternName {
+    /// The text form, padded as a string is (`{:<8}`).
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.pad(&self.text())
+    }
+}
+
+impl FromStr for PatternName {
+    type Err = PatternError;
+
+    /// Reads what [`PatternQuery`] reads, and oblique directions (`R([0.707,0.707,0.000])`,
+    /// `G(n=[…])`).
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        let text: String = s.chars().filter(|c| !c.is_whitespace()).collect();
+        if let Some((symbol, rest)) = text.split_once('(')
+            && let Some(param) = rest.strip_suffix(')')
+            && param.contains('[')
+            && let Some(kind) = GroupKind::ALL.into_iter().find(|k| k.symbol() == symbol)
+        {
+            let components = match kind.parameter() {
+                Parameter::Direction => Some(param),
+                Parameter::Plane => param.strip_prefix("n="),
+                Parameter::None => None,
+            };
+            return match components.and_then(Direction::parse_oblique) {
+                Some(d) => Ok(PatternName::Group {
+                    kind,
+                    direction: Some(d),
+                }),
+                None => Err(PatternError::BadParameter {
+                    why: format!("{param:?} is not a direction of {symbol}"),
+                    text,
+                }),
+            };
+        }
+        Ok(match text.parse::<PatternQuery>()? {
+            PatternQuery::Group { kind, axis } => PatternName::Group {
+                kind,
+                direction: axis.map(Direction::Along),
+            },
+            PatternQuery::NonGroup {
+                translations,
+                rotations,
+            } => PatternName::NonGroup {
+                translations,
+                rotations,
+            },
+        })
+    }
+}
+
+impl PartialOrd for PatternName {
+    fn partial_cmp(&self, other: &Self) -> Option<std::cmp::Ordering> {
+        Some(self.cmp(other))
+    }
+}
+
+impl Ord for PatternName {
+    /// By text, the order of the catalogue's files (one name, one text).
+    fn cmp(&self, other: &Self) -> std::cmp::Ordering {
+        self.text().cmp(&other.text())
+    }
+}
+
+impl Serialize for PatternName {
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        serializer.collect_str(self)
+    }
+}
+
+impl<'de> serde::Deserialize<'de> for PatternName {
+    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        let text = String::deserialize(deserializer)?;
+        text.parse().map_err(serde::de::Error::custom)
     }
 }
 
@@ -249,12 +440,12 @@ impl fmt::Display for Pattern {
 /// aligned), or `nTmR`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum PatternQuery {
-    /// A group, with `axis` the direction (0, 1, 2 = x, y, z) or the plane normal when given.
+    /// A group, with `axis` the direction or the plane normal when given.
     Group {
         /// Which group.
         kind: GroupKind,
         /// Direction or plane normal along x, y or z; `None` matches any.
-        axis: Option<u8>,
+        axis: Option<Axis>,
     },
     /// A non-group pattern.
     NonGroup {
@@ -327,9 +518,9 @@ impl FromStr for PatternQuery {
                 });
             }
             (Parameter::Direction, Some(p)) => Some(match p {
-                "x" => 0,
-                "y" => 1,
-                "z" => 2,
+                "x" => Axis::X,
+                "y" => Axis::Y,
+                "z" => Axis::Z,
                 _ => {
                     return Err(PatternError::BadParameter {
                         text,
@@ -338,9 +529,9 @@ impl FromStr for PatternQuery {
                 }
             }),
             (Parameter::Plane, Some(p)) => Some(match p {
-                "yz" | "zy" => 0,
-                "xz" | "zx" => 1,
-                "xy" | "yx" => 2,
+                "yz" | "zy" => Axis::X,
+                "xz" | "zx" => Axis::Y,
+                "xy" | "yx" => Axis::Z,
                 _ => {
                     return Err(PatternError::BadParameter {
                         text,
@@ -363,11 +554,9 @@ impl fmt::Display for PatternQuery {
             PatternQuery::Group { kind, axis } => {
                 f.write_str(kind.symbol())?;
                 match (kind.parameter(), axis) {
-                    (Parameter::Direction, Some(a)) => {
-                        write!(f, "({})", ["x", "y", "z"][a as usize])
-                    }
+                    (Parameter::Direction, Some(a)) => write!(f, "({a})"),
                     (Parameter::Plane, Some(a)) => {
-                        write!(f, "({})", ["yz", "xz", "xy"][a as usize])
+                        write!(f, "({})", Direction::Along(a).plane_text())
                     }
                     _ => Ok(()),
                 }
@@ -439,9 +628,37 @@ impl PatternQuery {
                 g.kind == *kind
                     && axis.is_none_or(|a| {
                         g.direction
-                            .is_some_and(|d| (d[a as usize].abs() - 1.0).abs() < 1e-6)
+                            .is_some_and(|d| (d[a.index()].abs() - 1.0).abs() < 1e-6)
                     })
             }
+            _ => false,
+        }
+    }
+}
+
+impl PatternQuery {
+    /// Whether a pattern, by its name (a key of the catalogue's verification), is the one
+    /// asked for: the same group, along the asked axis when the question names one, or the same
+    /// `nTmR`. An `nTmR` that is always a group ([`PatternQuery::forced_group`]) names that group.
+    #[must_use]
+    pub fn covers(&self, name: &PatternName) -> bool {
+        if let (Some(kind), PatternName::Group { kind: k, .. }) = (self.forced_group(), name) {
+            return kind == *k;
+        }
+        match (*self, *name) {
+            (PatternQuery::Group { kind, axis }, PatternName::Group { kind: k, direction }) => {
+                kind == k && axis.is_none_or(|a| direction == Some(Direction::Along(a)))
+            }
+            (
+                PatternQuery::NonGroup {
+                    translations,
+                    rotations,
+                },
+                PatternName::NonGroup {
+                    translations: t,
+                    rotations: r,
+                },
+            ) => translations == t && rotations == r,
             _ => false,
         }
     }

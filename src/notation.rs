@@ -54,6 +54,183 @@ impl Primitive {
     }
 }
 
+/// One of the three mutually perpendicular directions of paper 000 §2, rule 1: every joint axis
+/// of a catalogue chain lies along one of them at the reference configuration, so that
+/// consecutive axes are parallel or perpendicular. Written `x`, `y`, `z` (the catalogue's axis
+/// words, `kinsyn build --axes`); in a leg frame they are the frame's three axes.
+///
+/// ```
+/// use kinsyn::notation::Axis;
+/// let z: Axis = "z".parse().unwrap();
+/// assert_eq!(z, Axis::Z);
+/// assert_eq!(z.to_string(), "z");
+/// assert_eq!(z.unit(), nalgebra::Vector3::z());
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum Axis {
+    /// The first direction (the first joint's, in a canonical axis word).
+    X,
+    /// The second direction.
+    Y,
+    /// The third direction.
+    Z,
+}
+
+impl Axis {
+    /// The three directions, in the order x, y, z.
+    pub const ALL: [Axis; 3] = [Axis::X, Axis::Y, Axis::Z];
+
+    /// The position of the direction in `x, y, z` (0, 1, 2): the coordinate its unit vector
+    /// has, and the column of a frame it picks.
+    #[must_use]
+    pub fn index(self) -> usize {
+        self as usize
+    }
+
+    /// The direction at position `i` (0, 1, 2) of `x, y, z`; `None` beyond.
+    #[must_use]
+    pub fn from_index(i: usize) -> Option<Axis> {
+        Axis::ALL.get(i).copied()
+    }
+
+    /// The direction's letter, `x`, `y` or `z`.
+    #[must_use]
+    pub fn letter(self) -> char {
+        ['x', 'y', 'z'][self.index()]
+    }
+
+    /// The direction of a letter `x`, `y` or `z` (lower case only, as files write them).
+    #[must_use]
+    pub fn from_letter(c: char) -> Option<Axis> {
+        match c {
+            'x' => Some(Axis::X),
+            'y' => Some(Axis::Y),
+            'z' => Some(Axis::Z),
+            _ => None,
+        }
+    }
+
+    /// The unit vector along the direction in the frame it is read in: `(1, 0, 0)` for x, and
+    /// so on.
+    #[must_use]
+    pub fn unit(self) -> nalgebra::Vector3<f64> {
+        nalgebra::Vector3::ith(self.index(), 1.0)
+    }
+}
+
+impl fmt::Display for Axis {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.pad(["x", "y", "z"][self.index()])
+    }
+}
+
+/// Why a text is not an axis direction or an axis word.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum AxisError {
+    /// A character that is not `x`, `y` or `z` (or a direction text of another length).
+    #[error("{text:?}: {found:?} is not an axis direction; write x, y or z")]
+    NotAnAxis {
+        /// The whole text.
+        text: String,
+        /// What stands where a direction should.
+        found: String,
+    },
+}
+
+impl FromStr for Axis {
+    type Err = AxisError;
+
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        let mut chars = s.chars();
+        match (chars.next().and_then(Axis::from_letter), chars.next()) {
+            (Some(a), None) => Ok(a),
+            _ => Err(AxisError::NotAnAxis {
+                text: s.to_string(),
+                found: s.to_string(),
+            }),
+        }
+    }
+}
+
+/// The axis directions of a chain's primitive joints at the reference configuration, one
+/// [`Axis`] letter each: the catalogue's axis word, such as `xyzxyz` for PPPS (three
+/// perpendicular guides, then the spherical joint's three perpendicular revolutes).
+///
+/// It reads as the text it is written as (it dereferences to `str`, and serialises as that
+/// string), and holds only the letters `x`, `y`, `z`, which [`AxisWord::axes`] gives as
+/// directions.
+///
+/// ```
+/// use kinsyn::notation::{Axis, AxisWord};
+/// let word: AxisWord = "xyzxyz".parse().unwrap();
+/// assert_eq!(word.axes().take(3).collect::<Vec<_>>(), [Axis::X, Axis::Y, Axis::Z]);
+/// assert_eq!(word.as_str(), "xyzxyz");
+/// assert!("xyw".parse::<AxisWord>().is_err());
+/// ```
+#[derive(Debug, Clone, PartialEq, Eq, Hash, PartialOrd, Ord, Default)]
+pub struct AxisWord(String);
+
+impl AxisWord {
+    /// The word as text.
+    #[must_use]
+    pub fn as_str(&self) -> &str {
+        &self.0
+    }
+
+    /// The directions, joint by joint.
+    pub fn axes(&self) -> impl ExactSizeIterator<Item = Axis> + '_ {
+        // Only x, y and z are ever stored.
+        self.0.bytes().map(|b| Axis::ALL[usize::from(b - b'x')])
+    }
+}
+
+impl FromIterator<Axis> for AxisWord {
+    fn from_iter<I: IntoIterator<Item = Axis>>(iter: I) -> Self {
+        AxisWord(iter.into_iter().map(Axis::letter).collect())
+    }
+}
+
+impl std::ops::Deref for AxisWord {
+    type Target = str;
+
+    fn deref(&self) -> &str {
+        &self.0
+    }
+}
+
+impl fmt::Display for AxisWord {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.pad(&self.0)
+    }
+}
+
+impl FromStr for AxisWord {
+    type Err = AxisError;
+
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        match s.chars().find(|&c| Axis::from_letter(c).is_none()) {
+            Some(c) => Err(AxisError::NotAnAxis {
+                text: s.to_string(),
+                found: c.to_string(),
+            }),
+            None => Ok(AxisWord(s.to_string())),
+        }
+    }
+}
+
+impl serde::Serialize for AxisWord {
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        serializer.serialize_str(&self.0)
+    }
+}
+
+impl<'de> serde::Deserialize<'de> for AxisWord {
+    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        let text = String::deserialize(deserializer)?;
+        text.parse().map_err(serde::de::Error::custom)
+    }
+}
+
 /// The joint letters of paper 000: first-class pairs P, R and the pairs built from them.
 #[derive(
     Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, serde::Serialize, serde::Deserialize,

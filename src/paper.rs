@@ -274,7 +274,7 @@ fn explain_missing(table: u8, word_text: &str, letters: &str) -> (DifferenceKind
     // they break, and whether rule 3's fewest joints hold. The undominated ways are the
     // evidence (a way is dominated when another breaks a subset of its rules).
     struct Way {
-        axes: Vec<rules::Axis>,
+        axes: Vec<rules::AxisIndex>,
         violations: Vec<rules::Violation>,
         in_pattern: bool,
         fewest: bool,
@@ -374,7 +374,7 @@ fn explain_missing(table: u8, word_text: &str, letters: &str) -> (DifferenceKind
 }
 
 /// How many revolutes lie along each direction, largest first.
-fn revolute_counts(word: &[crate::notation::Primitive], axes: &[rules::Axis]) -> [u8; 3] {
+fn revolute_counts(word: &[crate::notation::Primitive], axes: &[rules::AxisIndex]) -> [u8; 3] {
     let mut counts = [0u8; 3];
     for (i, p) in word.iter().enumerate() {
         if *p == crate::notation::Primitive::R {

@@ -11,22 +11,25 @@
 //! ```
 //! use kinsyn::verification::{verify, Settings};
 //! use kinsyn::chain::SerialChain;
+//! use kinsyn::notation::Axis::{X, Y, Z};
 //! use kinsyn::notation::Primitive::{P, R};
 //! use rand::SeedableRng;
 //! // PPPS: three perpendicular guides and a spherical wrist (Table 1 row 1).
 //! let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(7);
-//! let chain = SerialChain::from_layout(&[P, P, P, R, R, R], &[0, 1, 2, 0, 1, 2], &[1, 1, 1, 3], &mut rng).unwrap();
+//! let chain = SerialChain::from_layout(&[P, P, P, R, R, R], &[X, Y, Z, X, Y, Z], &[1, 1, 1, 3], &mut rng).unwrap();
 //! let v = verify(&chain, &Settings::default(), 7);
+//! let name = |text: &str| text.parse::<kinsyn::motion::PatternName>().unwrap();
 //! assert!(v.is_3t3r);
-//! assert_eq!(v.patterns["T3"], vec!["456"]); // lock the S: spatial translation
-//! assert_eq!(v.patterns["S"], vec!["123"]);  // lock the guides: spherical motion
+//! assert_eq!(v.patterns[&name("T3")], vec!["456"]); // lock the S: spatial translation
+//! assert_eq!(v.patterns[&name("S")], vec!["123"]);  // lock the guides: spherical motion
 //! ```
 
 use crate::chain::SerialChain;
 /// Moved to [`crate::chain`]; re-exported here for earlier callers.
 pub use crate::chain::random_configuration;
 use crate::linalg::{self, DEFAULT_RANK_TOLERANCE};
-use crate::motion::{self, Classification};
+pub use crate::lockset::{LockSet, LockSetError};
+use crate::motion::{self, Classification, PatternName};
 use crate::notation::Primitive;
 use nalgebra::DMatrix;
 use rand::SeedableRng;
@@ -75,9 +78,11 @@ pub struct Verification {
     pub idle_joints: Vec<usize>,
     /// Rank 6 at every sample and no idle joint.
     pub is_3t3r: bool,
-    /// Every pattern the chain gives with some joints locked, by text form, with its minimal
-    /// lock sets (each a string of 1-based joint positions, `-` for none).
-    pub patterns: BTreeMap<String, Vec<String>>,
+    /// Every pattern the chain gives with some joints locked, by name, with its minimal lock
+    /// sets: the sets of locked joints that leave this motion and hold no smaller such set, in
+    /// increasing order of their bit masks. In files, the names and sets are their text
+    /// (`"T3": ["456"]`).
+    pub patterns: BTreeMap<PatternName, Vec<LockSet>>,
 }
 
 /// Rounds to `digits` significant digits, so that files do not carry floating-point noise.
@@ -97,16 +102,6 @@ fn round_off_to_zero(x: f64) -> f64 {
     } else {
         round_significant(x, 3)
     }
-}
-
-/// A lock set as text: the 1-based positions of the locked joints, `-` for none.
-#[must_use]
-pub fn lock_text(mask: u32, n: usize) -> String {
-    let s: String = (0..n)
-        .filter(|i| mask & (1 << i) != 0)
-        .map(|i| char::from_digit((i + 1) as u32, 10).unwrap_or('?'))
-        .collect();
-    if s.is_empty() { "-".to_string() } else { s }
 }
 
 /// The motion left when the joints in `mask` are locked at their reference values, classified
@@ -188,27 +183,6 @@ pub fn configurations(chain: &SerialChain, settings: &Settings, seed: u64) -> Ve
     out
 }
 
-/// Parses a lock set written as joint positions (`"45"`, `"1,4,5"`, `"-"` for none) for a chain
-/// of `n` joints into a bit mask.
-///
-/// # Errors
-/// A character that is not a joint position of the chain, or a joint named twice.
-pub fn parse_lock_set(text: &str, n: usize) -> Result<u32, String> {
-    let mut mask = 0u32;
-    for c in text.chars().filter(|c| !matches!(c, ',' | ' ' | '-')) {
-        let Some(d) = c.to_digit(10).filter(|&d| d >= 1 && (d as usize) <= n) else {
-            return Err(format!(
-                "lock set {text:?}: {c:?} is not a joint of this chain (joints 1 to {n})"
-            ));
-        };
-        if mask & (1 << (d - 1)) != 0 {
-            return Err(format!("lock set {text:?}: joint {d} named twice"));
-        }
-        mask |= 1 << (d - 1);
-    }
-    Ok(mask)
-}
-
 /// Verifies a chain (up to 31 joints): rank, idle joints and the patterns of all lock subsets.
 ///
 /// # Complexity
@@ -253,21 +227,18 @@ pub fn verify(chain: &SerialChain, settings: &Settings, seed: u64) -> Verificati
     let is_3t3r = ranks.iter().all(|r| r.rank == 6) && idle_joints.is_empty();
 
     // Every lock subset, then the minimal lock sets of each pattern.
-    let mut by_pattern: BTreeMap<String, Vec<u32>> = BTreeMap::new();
+    let mut by_pattern: BTreeMap<PatternName, Vec<u32>> = BTreeMap::new();
     for mask in 0u32..(1 << n) {
         let c = locked_motion(chain, mask, &configurations, settings);
-        by_pattern
-            .entry(c.pattern.to_string())
-            .or_default()
-            .push(mask);
+        by_pattern.entry(c.pattern.name()).or_default().push(mask);
     }
     let patterns = by_pattern
         .into_iter()
         .map(|(p, masks)| {
-            let minimal: Vec<String> = masks
+            let minimal: Vec<LockSet> = masks
                 .iter()
                 .filter(|&&m| !masks.iter().any(|&o| o != m && o & m == o))
-                .map(|&m| lock_text(m, n))
+                .map(|&m| LockSet::from_mask(m))
                 .collect();
             (p, minimal)
         })

@@ -5,6 +5,7 @@ mod common;
 
 use common::finite_difference_column;
 use kinsyn::chain::{GenericChain, GenericValues, SerialChain, random_unit};
+use kinsyn::notation::Axis::{X, Y};
 use kinsyn::notation::Primitive::{self, P, R};
 use kinsyn::screw::Twist;
 use nalgebra::Vector3;
@@ -147,6 +148,6 @@ fn bad_chain_descriptions_are_errors() {
     assert!(SerialChain::new(vec![(R, Vector3::zeros(), Vector3::zeros())]).is_err());
     assert!(SerialChain::new(vec![(R, Vector3::x(), Vector3::new(f64::NAN, 0.0, 0.0))]).is_err());
     let mut rng = ChaCha8Rng::seed_from_u64(1);
-    assert!(SerialChain::from_layout(&[P, R], &[0], &[2], &mut rng).is_err());
-    assert!(SerialChain::from_layout(&[P, R], &[0, 1], &[1], &mut rng).is_err());
+    assert!(SerialChain::from_layout(&[P, R], &[X], &[2], &mut rng).is_err());
+    assert!(SerialChain::from_layout(&[P, R], &[X, Y], &[1], &mut rng).is_err());
 }

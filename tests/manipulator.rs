@@ -577,7 +577,7 @@ fn every_verified_catalogue_chain_builds_a_six_dof_manipulator() {
     for e in cat.verified() {
         let d = build(&BuildSpec {
             chain: e.notation.clone(),
-            axes: Some(e.axes.clone()),
+            axes: Some(e.axes.to_string()),
             actuated: Some(vec![1]),
             ..Default::default()
         })

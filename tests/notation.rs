@@ -1,6 +1,7 @@
 //! The chain notation (src/notation.rs) against paper 000 §2's own examples.
 
-use kinsyn::notation::{Chain, NotationError, letters_fit_word};
+use kinsyn::notation::{Axis, AxisWord, Chain, NotationError, letters_fit_word};
+use nalgebra::Vector3;
 use proptest::prelude::*;
 
 fn parse(s: &str) -> Chain {
@@ -187,6 +188,42 @@ fn letters_fit_word_reads_merged_joints() {
     assert!(letters_fit_word("CRRC", "PRRRRP"));
     assert!(!letters_fit_word("CRC", "PRRRRP")); // Table 2 row 6 prints CRC: five primitives
     assert!(!letters_fit_word("PPRRPR", "PPRRP"));
+}
+
+#[test]
+fn axis_directions_read_and_print_as_x_y_z() {
+    // Rule 1 of paper 000 §2: three mutually perpendicular directions, written x, y, z in the
+    // catalogue's axis words; each is the unit vector of its frame axis.
+    for (text, axis, unit) in [
+        ("x", Axis::X, Vector3::new(1.0, 0.0, 0.0)),
+        ("y", Axis::Y, Vector3::new(0.0, 1.0, 0.0)),
+        ("z", Axis::Z, Vector3::new(0.0, 0.0, 1.0)),
+    ] {
+        assert_eq!(text.parse::<Axis>(), Ok(axis));
+        assert_eq!(axis.to_string(), text);
+        assert_eq!(axis.unit(), unit);
+        assert_eq!(Axis::from_index(axis.index()), Some(axis));
+    }
+    for bad in ["", "X", "w", "xy", " x"] {
+        assert!(bad.parse::<Axis>().is_err(), "{bad:?}");
+    }
+    // PPPS (Table 1 row 1): three perpendicular guides, then the S's three revolutes.
+    let word: AxisWord = "xyzxyz".parse().unwrap();
+    assert_eq!(
+        word.axes().collect::<Vec<_>>(),
+        [Axis::X, Axis::Y, Axis::Z, Axis::X, Axis::Y, Axis::Z]
+    );
+    assert_eq!(word.to_string(), "xyzxyz");
+    assert_eq!(serde_json::to_string(&word).unwrap(), "\"xyzxyz\"");
+    assert_eq!(
+        serde_json::from_str::<AxisWord>("\"zzx\"")
+            .unwrap()
+            .as_str(),
+        "zzx"
+    );
+    assert!(serde_json::from_str::<AxisWord>("\"xyq\"").is_err());
+    let e = "xyq".parse::<AxisWord>().unwrap_err().to_string();
+    assert_eq!(e, r#""xyq": "q" is not an axis direction; write x, y or z"#);
 }
 
 proptest! {

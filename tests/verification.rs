@@ -6,15 +6,61 @@ mod common;
 
 use common::finite_difference_jacobian;
 use kinsyn::catalogue::{Catalogue, VERIFICATION_SEED};
-use kinsyn::motion::PatternQuery;
+use kinsyn::lockset::LockSet;
+use kinsyn::motion::{PatternName, PatternQuery};
 use kinsyn::synthesis::Options;
 use kinsyn::verification::random_configuration;
 use rand::SeedableRng;
 use std::sync::OnceLock;
 
+/// A pattern name as the catalogue writes it.
+fn name(text: &str) -> PatternName {
+    text.parse().unwrap()
+}
+
+/// A lock set as the catalogue writes it.
+fn lock(text: &str) -> LockSet {
+    text.parse().unwrap()
+}
+
 fn catalogue() -> &'static Catalogue {
     static C: OnceLock<Catalogue> = OnceLock::new();
     C.get_or_init(|| Catalogue::generate(&Options::default()))
+}
+
+#[test]
+fn an_unaligned_query_finds_each_typed_direction() {
+    // PPPS (T1-001, Table 1 row 1, axes xyzxyz): the S's revolutes 4, 5, 6 turn about x, y, z
+    // at the reference configuration. Locking two of them leaves three translations and one
+    // rotation about the third (held at reference values, the others keep their directions):
+    // Schönflies motion X(x) with 5 and 6 locked, X(y) with 4 and 6, X(z) with 4 and 5. A query
+    // for X with no direction covers all three, and each hit carries the classified direction
+    // as a typed name, not as text to parse again.
+    use kinsyn::motion::{Direction, GroupKind};
+    use kinsyn::notation::Axis;
+    let hits = catalogue().query(&"X".parse().unwrap(), 2, Some("PPPRRR"));
+    let ppps: Vec<(PatternName, Vec<LockSet>)> = hits
+        .iter()
+        .filter(|h| h.entry.id == "T1-001")
+        .map(|h| (h.pattern, h.lock_sets.clone()))
+        .collect();
+    let x = |axis| PatternName::Group {
+        kind: GroupKind::X,
+        direction: Some(Direction::Along(axis)),
+    };
+    let locks = |joints: &[usize]| vec![joints.iter().copied().collect::<LockSet>()];
+    assert_eq!(
+        ppps,
+        vec![
+            (x(Axis::X), locks(&[5, 6])),
+            (x(Axis::Y), locks(&[4, 6])),
+            (x(Axis::Z), locks(&[4, 5])),
+        ]
+    );
+    let covers = |q: &str, n: &str| q.parse::<PatternQuery>().unwrap().covers(&name(n));
+    assert!(covers("X", "X(y)") && covers("X(y)", "X(y)") && !covers("X(z)", "X(y)"));
+    // nTmR names of groups (3T0R is always T3) and of non-group motions.
+    assert!(covers("3T0R", "T3") && covers("1T2R", "1T2R") && !covers("2T1R", "G(xy)"));
 }
 
 #[test]
@@ -60,8 +106,8 @@ fn every_entry_reaches_d_and_e_and_queries_find_hand_derived_cases() {
     for e in cat.verified() {
         let v = e.verification.as_ref().unwrap();
         // Nothing locked: the whole displacement group; everything locked: the identity.
-        assert_eq!(v.patterns["D"], vec!["-"], "{}", e.id);
-        assert_eq!(v.patterns["E"], vec!["123456"], "{}", e.id);
+        assert_eq!(v.patterns[&name("D")], vec!["-"], "{}", e.id);
+        assert_eq!(v.patterns[&name("E")], vec!["123456"], "{}", e.id);
     }
     // PPPS (Table 1 row 1): locking the S leaves T3; locking two of its axes leaves X(z) about
     // the last one (z at the reference configuration).
@@ -110,14 +156,14 @@ fn equal_guide_columns_do_not_fool_the_classification() {
     let e = catalogue().find("T1-005").expect("T1-005");
     let v = e.verification.as_ref().unwrap();
     assert!(
-        v.patterns["1T2R"].contains(&"23".to_string()),
+        v.patterns[&name("1T2R")].contains(&lock("23")),
         "{:?}",
         v.patterns
     );
     assert!(
         !v.patterns
-            .get("0T3R")
-            .is_some_and(|l| l.contains(&"23".to_string()))
+            .get(&name("0T3R"))
+            .is_some_and(|l| l.contains(&lock("23")))
     );
 }
 
@@ -129,7 +175,7 @@ fn two_guides_left_parallel_by_locks_are_one_translation() {
     let e = catalogue().find("T2-105").expect("T2-105");
     let v = e.verification.as_ref().unwrap();
     assert!(
-        v.patterns["1T2R"].contains(&"34".to_string()),
+        v.patterns[&name("1T2R")].contains(&lock("34")),
         "{:?}",
         v.patterns
     );

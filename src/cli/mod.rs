@@ -11,7 +11,8 @@ mod terminal;
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use kinsyn::catalogue::{Catalogue, Entry, VERIFICATION_SEED};
-use kinsyn::motion::PatternQuery;
+use kinsyn::lockset::LockSet;
+use kinsyn::motion::{PatternName, PatternQuery};
 use kinsyn::notation::Chain;
 use kinsyn::synthesis::{Options, PrismaticReading, tables};
 use kinsyn::verification::{self, Settings};
@@ -582,7 +583,7 @@ fn query(
             h.entry.word,
             h.entry.axes,
             h.pattern,
-            h.lock_sets.join(" | ")
+            lock_sets_text(&h.lock_sets)
         );
     }
     let chains: std::collections::BTreeSet<&str> =
@@ -897,20 +898,25 @@ fn catalogue(command: CatalogueCommand) -> Result<String, CliError> {
 
 /// The motion of an entry's chain with the joints of `text` locked (its verification's
 /// geometry and sample configurations).
-fn locked_pattern(entry: &Entry, text: &str) -> Result<(String, String), CliError> {
+fn locked_pattern(entry: &Entry, text: &str) -> Result<(LockSet, PatternName), CliError> {
     let chain = entry
         .serial_chain(VERIFICATION_SEED)
         .map_err(|e| CliError::Input(format!("{}: {e}", entry.id)))?;
-    let mask = verification::parse_lock_set(text, chain.len())
+    let locks = LockSet::parse_for(text, chain.len())
         .map_err(|e| CliError::Input(format!("{}: {e}", entry.id)))?;
     let settings = Settings::default();
     let configurations =
         verification::configurations(&chain, &settings, entry.sample_seed(VERIFICATION_SEED));
-    let c = verification::locked_motion(&chain, mask, &configurations, &settings);
-    Ok((
-        verification::lock_text(mask, chain.len()),
-        c.pattern.to_string(),
-    ))
+    let c = verification::locked_motion(&chain, locks.mask(), &configurations, &settings);
+    Ok((locks, c.pattern.name()))
+}
+
+/// Lock sets as the text commands print them: `45 | 46`.
+fn lock_sets_text(sets: &[LockSet]) -> String {
+    sets.iter()
+        .map(ToString::to_string)
+        .collect::<Vec<_>>()
+        .join(" | ")
 }
 
 fn describe(cat: &Catalogue, e: &Entry) -> String {
@@ -973,34 +979,18 @@ fn describe(cat: &Catalogue, e: &Entry) -> String {
             s,
             "patterns     (lock sets: joint positions in the word; minimal sets only)"
         );
-        let mut groups: Vec<(&String, &Vec<String>)> = v
-            .patterns
-            .iter()
-            .filter(|(p, _)| {
-                p.parse::<PatternQuery>()
-                    .is_ok_and(|q| matches!(q, PatternQuery::Group { .. }))
-            })
-            .collect();
-        groups.sort_by_key(|(p, locks)| {
-            (
-                locks
-                    .iter()
-                    .map(|l| if l.as_str() == "-" { 0 } else { l.len() })
-                    .min(),
-                (*p).clone(),
-            )
-        });
+        // Groups by the fewest joints that lock them, then by name.
+        let mut groups: Vec<(&PatternName, &Vec<LockSet>)> =
+            v.patterns.iter().filter(|(p, _)| p.is_group()).collect();
+        groups.sort_by_key(|(p, locks)| (locks.iter().map(|l| l.len()).min(), **p));
         for (p, locks) in groups {
-            let _ = writeln!(s, "  {p:<8} {}", locks.join(" | "));
+            let _ = writeln!(s, "  {p:<8} {}", lock_sets_text(locks));
         }
         let others: Vec<String> = v
             .patterns
             .keys()
-            .filter(|p| {
-                p.parse::<PatternQuery>()
-                    .is_ok_and(|q| matches!(q, PatternQuery::NonGroup { .. }))
-            })
-            .cloned()
+            .filter(|p| !p.is_group())
+            .map(ToString::to_string)
             .collect();
         let _ = writeln!(s, "  non-group: {}", others.join(" "));
     }

@@ -460,8 +460,9 @@ pub fn build(spec: &BuildSpec) -> Result<Description, BuildError> {
     // Each C, U and S must get directions that keep it that joint (paper 000 §2); the letters
     // are checked as the unit vectors they stand for.
     let letter_vectors: Vec<Vector3<f64>> = axes
-        .bytes()
-        .map(|b| Vector3::ith(usize::from(b - b'x'), 1.0))
+        .chars()
+        .filter_map(crate::notation::Axis::from_letter)
+        .map(crate::notation::Axis::unit)
         .collect();
     super::check_joint_axes(&chain, &letter_vectors).map_err(|f| BuildError::JointAxes {
         axes: axes.clone(),
@@ -512,8 +513,11 @@ pub fn build(spec: &BuildSpec) -> Result<Description, BuildError> {
             let a = m * GOLDEN_ANGLE;
             (frame[0] * a.cos() + frame[1] * a.sin()) * (0.15 * length)
         };
-        let mut axis_vectors: Vec<Vector3<f64>> =
-            axes.bytes().map(|b| frame[(b - b'x') as usize]).collect();
+        let mut axis_vectors: Vec<Vector3<f64>> = axes
+            .chars()
+            .filter_map(crate::notation::Axis::from_letter)
+            .map(|a| frame[a.index()])
+            .collect();
         let points: Vec<Vector3<f64>> = (0..letters)
             .map(|m| match m {
                 0 => base,

@@ -520,7 +520,10 @@ fn leg_axes(
         }
         (None, Some(word)) => {
             let frame = build::leg_frame(base, end);
-            Ok(word.bytes().map(|b| frame[(b - b'x') as usize]).collect())
+            let word: crate::notation::AxisWord = word.parse().map_err(|e| {
+                DescriptionError::new(field("chain"), format!("the catalogue's axis word {e}"))
+            })?;
+            Ok(word.axes().map(|a| frame[a.index()]).collect())
         }
         (None, None) => Err(DescriptionError::new(
             field("axes"),

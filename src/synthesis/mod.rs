@@ -17,10 +17,10 @@
 pub mod rules;
 pub mod tables;
 
-pub use rules::{Axis, Options, PrismaticReading, Violation};
+pub use rules::{AxisIndex, Options, PrismaticReading, Violation};
 pub use tables::{TABLES, Table};
 
-use crate::notation::{Chain, Joint, JointKind, Mark, Primitive};
+use crate::notation::{AxisWord, Chain, Joint, JointKind, Mark, Primitive};
 use itertools::Itertools;
 
 /// One C/U/S reading of one admissible axis assignment, with where it comes from.
@@ -36,8 +36,9 @@ pub struct Candidate {
     pub variant: usize,
     /// The variant as the paper's 'Variants' column would print it, marks kept (e.g. `PPRaRaRR`).
     pub variant_label: String,
-    /// Axis direction of each primitive joint at the reference configuration (e.g. `xyyxzz`).
-    pub axes: String,
+    /// Axis direction of each primitive joint at the reference configuration, canonical (the
+    /// first joint along x, the next new direction y), e.g. `xyyxzz`.
+    pub axes: AxisWord,
     /// The parallel groups, as 1-based positions in `word`.
     pub parallel_groups: Vec<Vec<usize>>,
     /// The chain in C/U/S letters with its parallel groups.
@@ -84,7 +85,7 @@ pub fn variant_label(word: &[Primitive], groups: &[Vec<usize>]) -> String {
 /// the word) and those patterns.
 struct Variant {
     groups: Vec<Vec<usize>>,
-    patterns: Vec<Vec<Axis>>,
+    patterns: Vec<Vec<AxisIndex>>,
 }
 
 /// The variants of a row: revolute direction patterns grouped by the parallel groups they
@@ -123,9 +124,9 @@ fn variants(word: &[Primitive], table: &Table) -> Vec<Variant> {
 /// pattern, the guides take every direction, in lexicographic order.
 fn assignments<'a>(
     word: &'a [Primitive],
-    patterns: &'a [Vec<Axis>],
+    patterns: &'a [Vec<AxisIndex>],
     options: &'a Options,
-) -> impl Iterator<Item = Vec<Axis>> + 'a {
+) -> impl Iterator<Item = Vec<AxisIndex>> + 'a {
     let prismatics: Vec<usize> = (0..word.len())
         .filter(|&i| word[i] == Primitive::P)
         .collect();
@@ -196,7 +197,7 @@ pub fn enumerate(options: &Options) -> Vec<Candidate> {
 /// first joint along x, the next new direction y). Used to explain why a printed chain is not
 /// generated.
 #[must_use]
-pub fn all_assignments(word: &[Primitive]) -> Vec<Vec<Axis>> {
+pub fn all_assignments(word: &[Primitive]) -> Vec<Vec<AxisIndex>> {
     std::iter::repeat_n(0..3u8, word.len())
         .multi_cartesian_product()
         .filter(|axes| rules::canonical_axes(axes) == *axes)

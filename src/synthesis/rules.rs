@@ -6,15 +6,17 @@
 //! perpendicular by construction. The other rules decide which assignments are admissible and
 //! how an admissible one is read in C/U/S letters.
 
-use crate::notation::{Chain, Joint, JointKind, Mark, Primitive};
+use crate::notation::{Axis, AxisWord, Chain, Joint, JointKind, Mark, Primitive};
 
-/// An axis direction at the reference configuration: 0, 1 or 2 for x, y, z.
-pub type Axis = u8;
+/// An axis direction at the reference configuration by its position 0, 1 or 2 in x, y, z
+/// ([`Axis::index`]): the enumeration counts directions and relabels them, so it works on
+/// positions, and [`axis_word`] names them.
+pub type AxisIndex = u8;
 
 /// The same directions relabelled so that the first joint lies along x and the next new
 /// direction along y: relabelling the three directions changes no chain.
 #[must_use]
-pub fn canonical_axes(axes: &[Axis]) -> Vec<Axis> {
+pub fn canonical_axes(axes: &[AxisIndex]) -> Vec<AxisIndex> {
     let mut map = [u8::MAX; 3];
     let mut next = 0;
     axes.iter()
@@ -28,10 +30,15 @@ pub fn canonical_axes(axes: &[Axis]) -> Vec<Axis> {
         .collect()
 }
 
-/// Prints axis directions as a word such as `xyzxyz`.
+/// Names axis directions as a word such as `xyzxyz`.
+///
+/// # Panics
+/// If a position is not 0, 1 or 2 (no rule produces one).
 #[must_use]
-pub fn axis_word(axes: &[Axis]) -> String {
-    axes.iter().map(|&a| (b'x' + a) as char).collect()
+pub fn axis_word(axes: &[AxisIndex]) -> AxisWord {
+    axes.iter()
+        .map(|&a| Axis::from_index(usize::from(a)).expect("directions are 0, 1 or 2"))
+        .collect()
 }
 
 /// Every sequence of `n` revolute directions whose direction counts, largest first, are
@@ -43,10 +50,10 @@ pub fn axis_word(axes: &[Axis]) -> String {
 /// sequences". Relabelling the three directions changes no chain, so only canonical sequences
 /// are kept.
 #[must_use]
-pub fn revolute_patterns(n: usize, counts: [u8; 3]) -> Vec<Vec<Axis>> {
+pub fn revolute_patterns(n: usize, counts: [u8; 3]) -> Vec<Vec<AxisIndex>> {
     let mut out = Vec::new();
     let mut seq = Vec::with_capacity(n);
-    fn rec(n: usize, counts: [u8; 3], seq: &mut Vec<Axis>, out: &mut Vec<Vec<Axis>>) {
+    fn rec(n: usize, counts: [u8; 3], seq: &mut Vec<AxisIndex>, out: &mut Vec<Vec<AxisIndex>>) {
         if seq.len() == n {
             let mut c = [0u8; 3];
             for &a in seq.iter() {
@@ -78,7 +85,7 @@ pub fn revolute_patterns(n: usize, counts: [u8; 3]) -> Vec<Vec<Axis>> {
 /// revolutes with the same direction stay parallel exactly when every revolute between them
 /// has that direction too: groups are the runs of equal direction in the sequence of revolutes.
 #[must_use]
-pub fn parallel_groups(word: &[Primitive], axes: &[Axis]) -> Vec<Vec<usize>> {
+pub fn parallel_groups(word: &[Primitive], axes: &[AxisIndex]) -> Vec<Vec<usize>> {
     let revolutes: Vec<usize> = (0..word.len())
         .filter(|&i| word[i] == Primitive::R)
         .collect();
@@ -109,7 +116,7 @@ pub fn parallel_groups(word: &[Primitive], axes: &[Axis]) -> Vec<Vec<usize>> {
 #[must_use]
 pub fn parallel_guides(
     word: &[Primitive],
-    axes: &[Axis],
+    axes: &[AxisIndex],
     reading: PrismaticReading,
 ) -> Option<(usize, usize)> {
     let prismatics: Vec<usize> = (0..word.len())
@@ -153,7 +160,7 @@ pub enum PrismaticReading {
 /// §2.4, whose Table 6 pattern keeps three parallel R beside a parallel pair) is not subject
 /// to it: its third translation comes from the other revolutes.
 #[must_use]
-pub fn triple_group_without_guide(word: &[Primitive], axes: &[Axis]) -> bool {
+pub fn triple_group_without_guide(word: &[Primitive], axes: &[AxisIndex]) -> bool {
     word.contains(&Primitive::P)
         && parallel_groups(word, axes)
             .iter()
@@ -206,7 +213,7 @@ impl Violation {
 
 /// The admissibility rules an axis assignment breaks under `options` (empty: admissible).
 #[must_use]
-pub fn violations(word: &[Primitive], axes: &[Axis], options: &Options) -> Vec<Violation> {
+pub fn violations(word: &[Primitive], axes: &[AxisIndex], options: &Options) -> Vec<Violation> {
     let mut v = Vec::new();
     if parallel_guides(word, axes, options.prismatics).is_some() {
         v.push(Violation::ParallelGuides);
@@ -226,7 +233,7 @@ pub fn violations(word: &[Primitive], axes: &[Axis], options: &Options) -> Vec<V
 /// always merged; when a joint has a parallel partner on both sides, either pairing is a
 /// candidate.
 #[must_use]
-pub fn cylindrical_pairings(word: &[Primitive], axes: &[Axis]) -> Vec<Vec<(usize, usize)>> {
+pub fn cylindrical_pairings(word: &[Primitive], axes: &[AxisIndex]) -> Vec<Vec<(usize, usize)>> {
     let edges: Vec<(usize, usize)> = (0..word.len().saturating_sub(1))
         .filter(|&i| word[i] != word[i + 1] && axes[i] == axes[i + 1])
         .map(|i| (i, i + 1))
@@ -259,7 +266,7 @@ pub fn cylindrical_pairings(word: &[Primitive], axes: &[Axis]) -> Vec<Vec<(usize
 /// RUS, ..., instead of SS chain": where the fewest would be SS, the readings with one joint
 /// more are taken instead.
 #[must_use]
-pub fn revolute_groupings(axes: &[Axis]) -> Vec<Vec<usize>> {
+pub fn revolute_groupings(axes: &[AxisIndex]) -> Vec<Vec<usize>> {
     let all = all_revolute_groupings(axes);
     let Some(fewest) = all.iter().map(Vec::len).min() else {
         return vec![Vec::new()];
@@ -278,8 +285,8 @@ pub fn revolute_groupings(axes: &[Axis]) -> Vec<Vec<usize>> {
 /// Every way of reading a run of revolutes as R, U and S joints (perpendicular axes in a U,
 /// mutually perpendicular in an S), not only the fewest: what rule 3 chooses from.
 #[must_use]
-pub fn all_revolute_groupings(axes: &[Axis]) -> Vec<Vec<usize>> {
-    fn rec(axes: &[Axis], at: usize, cur: &mut Vec<usize>, out: &mut Vec<Vec<usize>>) {
+pub fn all_revolute_groupings(axes: &[AxisIndex]) -> Vec<Vec<usize>> {
+    fn rec(axes: &[AxisIndex], at: usize, cur: &mut Vec<usize>, out: &mut Vec<Vec<usize>>) {
         if at == axes.len() {
             out.push(cur.clone());
             return;
@@ -318,13 +325,13 @@ pub enum Grouping {
 /// Every C/U/S reading of an axis assignment under rules 2 and 3, with the parallel groups
 /// marked.
 #[must_use]
-pub fn readings(word: &[Primitive], axes: &[Axis]) -> Vec<Chain> {
+pub fn readings(word: &[Primitive], axes: &[AxisIndex]) -> Vec<Chain> {
     readings_with(word, axes, Grouping::Fewest)
 }
 
 /// Every C/U/S reading of an axis assignment, the revolutes grouped as `grouping` says.
 #[must_use]
-pub fn readings_with(word: &[Primitive], axes: &[Axis], grouping: Grouping) -> Vec<Chain> {
+pub fn readings_with(word: &[Primitive], axes: &[AxisIndex], grouping: Grouping) -> Vec<Chain> {
     let groups = parallel_groups(word, axes);
     let mark = |i: usize| Mark {
         group: groups.iter().position(|g| g.contains(&i)).map(|g| g as u8),
@@ -367,7 +374,7 @@ pub fn readings_with(word: &[Primitive], axes: &[Axis], grouping: Grouping) -> V
             match piece {
                 Ok(joint) => partial.iter_mut().for_each(|p| p.push(joint.clone())),
                 Err(run) => {
-                    let run_axes: Vec<Axis> = run.iter().map(|&k| axes[k]).collect();
+                    let run_axes: Vec<AxisIndex> = run.iter().map(|&k| axes[k]).collect();
                     let mut next = Vec::new();
                     for prefix in &partial {
                         let blocks_list = match grouping {

@@ -1,0 +1,135 @@
+//! The catalogue from enumerated candidates: the first occurrence of each chain (letters and
+//! parallel marks) in the paper's table order becomes an entry with its provenance, and each
+//! table counts what is new to it.
+
+use super::{Catalogue, Composition, Entry, Provenance, TableCount};
+use crate::paper;
+use crate::synthesis::{Candidate, Options, TABLES, Table};
+use std::collections::BTreeSet;
+
+/// The chains the printed Appendix names, by letters (misprints included).
+struct Printed {
+    /// (table, row, letters) of every printed chain.
+    in_row: BTreeSet<(u8, usize, String)>,
+}
+
+impl Printed {
+    fn read() -> Self {
+        Printed {
+            in_row: paper::appendix()
+                .into_iter()
+                .flat_map(|p| p.chains.into_iter().map(move |c| (p.table, p.row, c)))
+                .collect(),
+        }
+    }
+
+    /// Whether the candidate's letters are printed in its own row (anywhere in Tables 5–8,
+    /// whose rows the paper does not keep apart).
+    fn in_its_row(&self, c: &Candidate, letters: &str) -> bool {
+        self.in_row
+            .iter()
+            .any(|(t, r, l)| *t == c.table && (*r == c.row || c.table >= 5) && l == letters)
+    }
+
+    /// Whether the letters are printed anywhere in the Appendix.
+    fn anywhere(&self, letters: &str) -> bool {
+        self.in_row.iter().any(|(_, _, l)| l == letters)
+    }
+}
+
+/// What earlier tables already hold: the first occurrence wins.
+#[derive(Default)]
+struct Seen {
+    /// Canonical notations (letters and parallel marks): the catalogue's identity.
+    marks: BTreeSet<String>,
+    /// Letters only.
+    letters: BTreeSet<String>,
+    /// Printed letters.
+    printed: BTreeSet<String>,
+}
+
+impl Seen {
+    /// The new entries of one table and its counts, remembering what it adds.
+    fn table(
+        &mut self,
+        table: &Table,
+        candidates: &[Candidate],
+        printed: &Printed,
+    ) -> (TableCount, Vec<Entry>) {
+        let mut count = TableCount {
+            table: table.number,
+            family: table.family.to_string(),
+            published: table.published,
+            candidates: 0,
+            letters_only: 0,
+            with_marks: 0,
+            printed_letters: 0,
+            verified_3t3r: None,
+        };
+        let mut entries = Vec::new();
+        for c in candidates.iter().filter(|c| c.table == table.number) {
+            count.candidates += 1;
+            let notation = c.chain.to_string();
+            let letters = c.chain.letters();
+            let first_with_letters = self.letters.insert(letters.clone());
+            count.letters_only += usize::from(first_with_letters);
+            if !self.marks.insert(notation.clone()) {
+                continue;
+            }
+            count.with_marks += 1;
+            let id = format!("T{}-{:03}", table.number, entries.len() + 1);
+            entries.push(Entry {
+                id,
+                notation,
+                parallel_groups: c.parallel_groups.clone(),
+                composition: Composition::of(&c.chain),
+                first_with_letters,
+                printed_in_row: printed.in_its_row(c, &letters),
+                printed_in_appendix: printed.anywhere(&letters),
+                letters,
+                family: table.family.to_string(),
+                word: c.word.clone(),
+                axes: c.axes.clone(),
+                provenance: Provenance {
+                    table: c.table,
+                    row: c.row,
+                    variant: c.variant,
+                    variant_label: c.variant_label.clone(),
+                },
+                verification: None,
+            });
+        }
+        for (t, _, l) in &printed.in_row {
+            if *t == table.number && self.printed.insert(l.clone()) {
+                count.printed_letters += 1;
+            }
+        }
+        (count, entries)
+    }
+}
+
+impl Catalogue {
+    /// Builds the catalogue from enumerated candidates (first occurrence wins, in table order)
+    /// and compares them with the printed Appendix; no numerical check.
+    #[must_use]
+    pub fn from_candidates(options: Options, candidates: &[Candidate]) -> Self {
+        let (rows, differences) = paper::compare(candidates);
+        let printed = Printed::read();
+        let mut seen = Seen::default();
+        let mut entries = Vec::new();
+        let mut counts = Vec::new();
+        for table in &TABLES {
+            let (count, new) = seen.table(table, candidates, &printed);
+            counts.push(count);
+            entries.extend(new);
+        }
+        Catalogue {
+            options,
+            entries,
+            counts,
+            rows,
+            differences,
+            verification: None,
+        }
+    }
+}
