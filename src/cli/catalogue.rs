@@ -223,8 +223,7 @@ fn list(
         .entries
         .iter()
         .filter(|e| {
-            family.is_none_or(|f| e.family == f)
-                && table.is_none_or(|t| e.provenance.table == t)
+            family.is_none_or(|f| e.family == f) && table.is_none_or(|t| e.provenance.table == t)
         })
         .collect();
     if as_json {
@@ -262,70 +261,9 @@ fn show(
             .parse::<Chain>()
             .is_ok_and(|c| c.parallel_groups().is_empty()) =>
         {
-            // Letters only: show every entry with these letters, if any.
-            let letters = query
-                .parse::<Chain>()
-                .map(|c| c.letters())
-                .unwrap_or_default();
-            let same: Vec<&Entry> = cat
-                .entries
-                .iter()
-                .filter(|e| e.letters == letters)
-                .collect();
-            if same.is_empty() {
-                return Err(CliError::Input(format!(
-                    "{letters:?} is not in the catalogue: the rules of paper 000 §2 do not give it"
-                )));
-            }
-            if as_json {
-                return Ok(json(&same));
-            }
-            let mut s = format!(
-                "no entry {letters} without parallel marks; {} entr{} with these letters:\n\n",
-                same.len(),
-                if same.len() == 1 { "y" } else { "ies" }
-            );
-            s.push_str(
-                &same
-                    .iter()
-                    .map(|e| describe(&cat, e))
-                    .collect::<Vec<_>>()
-                    .join("\n"),
-            );
-            return Ok(s);
+            return same_letters(&cat, query, as_json);
         }
-        None => {
-            let looks_like_id = query.trim().starts_with(['T', 't'])
-                && query.contains('-')
-                && query.chars().any(|c| c.is_ascii_digit());
-            return Err(CliError::Input(match query.parse::<Chain>() {
-                Err(_) if looks_like_id => format!(
-                    "no entry with id {query:?} (ids look like T2-017; see kinsyn catalogue list)"
-                ),
-                Err(e) => {
-                    format!("{query:?} is neither an entry id nor a valid chain: {e}")
-                }
-                Ok(chain) => {
-                    let same: Vec<&str> = cat
-                        .entries
-                        .iter()
-                        .filter(|e| e.letters == chain.letters())
-                        .map(|e| e.notation.as_str())
-                        .collect();
-                    if same.is_empty() {
-                        format!(
-                            "'{chain}' is not in the catalogue: the rules of paper 000 §2 do not give it"
-                        )
-                    } else {
-                        format!(
-                            "'{chain}' is not in the catalogue; entries with letters {}: {}",
-                            chain.letters(),
-                            same.join(", ")
-                        )
-                    }
-                }
-            }));
-        }
+        None => return Err(CliError::Input(not_found(&cat, query))),
     };
     let locked = match &lock {
         None => None,
@@ -343,6 +281,77 @@ fn show(
         let _ = writeln!(s, "locked {set:<6} {pattern}");
     }
     Ok(s)
+}
+
+/// `catalogue show LETTERS` for letters without parallel marks that are not an entry: every
+/// entry with these letters.
+fn same_letters(cat: &Catalogue, query: &str, as_json: bool) -> Result<String, CliError> {
+    // Letters only: show every entry with these letters, if any.
+    let letters = query
+        .parse::<Chain>()
+        .map(|c| c.letters())
+        .unwrap_or_default();
+    let same: Vec<&Entry> = cat
+        .entries
+        .iter()
+        .filter(|e| e.letters == letters)
+        .collect();
+    if same.is_empty() {
+        return Err(CliError::Input(format!(
+            "{letters:?} is not in the catalogue: the rules of paper 000 §2 do not give it"
+        )));
+    }
+    if as_json {
+        return Ok(json(&same));
+    }
+    let mut s = format!(
+        "no entry {letters} without parallel marks; {} entr{} with these letters:\n\n",
+        same.len(),
+        if same.len() == 1 { "y" } else { "ies" }
+    );
+    s.push_str(
+        &same
+            .iter()
+            .map(|e| describe(cat, e))
+            .collect::<Vec<_>>()
+            .join("\n"),
+    );
+    Ok(s)
+}
+
+/// Why `query` names no entry: an unknown id, not a chain, or a chain the rules do not give
+/// (with the entries that have its letters).
+fn not_found(cat: &Catalogue, query: &str) -> String {
+    let looks_like_id = query.trim().starts_with(['T', 't'])
+        && query.contains('-')
+        && query.chars().any(|c| c.is_ascii_digit());
+    match query.parse::<Chain>() {
+        Err(_) if looks_like_id => {
+            format!("no entry with id {query:?} (ids look like T2-017; see kinsyn catalogue list)")
+        }
+        Err(e) => {
+            format!("{query:?} is neither an entry id nor a valid chain: {e}")
+        }
+        Ok(chain) => {
+            let same: Vec<&str> = cat
+                .entries
+                .iter()
+                .filter(|e| e.letters == chain.letters())
+                .map(|e| e.notation.as_str())
+                .collect();
+            if same.is_empty() {
+                format!(
+                    "'{chain}' is not in the catalogue: the rules of paper 000 §2 do not give it"
+                )
+            } else {
+                format!(
+                    "'{chain}' is not in the catalogue; entries with letters {}: {}",
+                    chain.letters(),
+                    same.join(", ")
+                )
+            }
+        }
+    }
 }
 
 /// `catalogue compare`: every difference from the printed Appendix.
