@@ -408,6 +408,46 @@ fn tidy(v: Vector3<f64>) -> [f64; 3] {
 /// its axes are needed, an axis word of the wrong length or letters, no actuated joint, or
 /// geometry numbers that are not positive.
 pub fn build(spec: &BuildSpec) -> Result<Description, BuildError> {
+    check_geometry(spec)?;
+    let lookup = super::CommittedChains::get();
+    let (chain, axes, actuated) = leg_chain_and_axes(spec, lookup)?;
+    let plain: Chain = chain.without_actuation();
+    let n = spec.legs;
+    let mut legs = Vec::with_capacity(n);
+    // The ranks and dependent joints of the first leg whose axes had to be turned.
+    let mut turned_note: Option<TurnedNote> = None;
+    for k in 0..n {
+        let (leg, note) = symmetric_leg(spec, k, &plain, &axes, &actuated)?;
+        legs.push(leg);
+        if turned_note.is_none() {
+            turned_note = note;
+        }
+    }
+    let name = spec
+        .name
+        .clone()
+        .unwrap_or_else(|| format!("{n}-{}", plain.letters()));
+    let source = source_text(spec, lookup, &axes, &actuated, &name, turned_note.as_ref());
+    Ok(Description {
+        format: FORMAT.into(),
+        name,
+        source: Some(source),
+        units: Units {
+            length: "m".into(),
+            angle: AngleUnit::Deg,
+        },
+        platform: PlatformSpec {
+            position: [0.0, 0.0, spec.height],
+            orientation: [0.0; 3],
+            point: [0.0; 3],
+        },
+        legs,
+    })
+}
+
+/// Checks the numbers of the symmetric geometry: 3 to 6 legs, lengths kinsyn computes with
+/// (docs/limits.md), and a twist within ±360°.
+fn check_geometry(spec: &BuildSpec) -> Result<(), BuildError> {
     if !(3..=6).contains(&spec.legs) {
         return Err(BuildError::Legs(spec.legs));
     }
@@ -437,7 +477,15 @@ pub fn build(spec: &BuildSpec) -> Result<Description, BuildError> {
     if !spec.twist.is_finite() || spec.twist.abs() > 360.0 {
         return Err(BuildError::Twist(spec.twist));
     }
-    let lookup = super::CommittedChains::get();
+    Ok(())
+}
+
+/// The leg chain, its axis word (given, or the catalogue's) checked against the chain's C, U, S
+/// and parallel groups, and its actuated joints (1-based).
+fn leg_chain_and_axes(
+    spec: &BuildSpec,
+    lookup: &super::CommittedChains,
+) -> Result<(Chain, String, Vec<usize>), BuildError> {
     let (chain, entry_axes) =
         super::leg_chain(&spec.chain, spec.axes.is_none(), lookup).map_err(BuildError::Chain)?;
     let primitives = chain.primitives().count();
@@ -488,128 +536,152 @@ pub fn build(spec: &BuildSpec) -> Result<Description, BuildError> {
     if actuated.is_empty() {
         return Err(BuildError::NoActuated { primitives });
     }
-    let plain: Chain = chain.without_actuation();
-    let letters = plain.joints().len();
-    let n = spec.legs;
-    let mut legs = Vec::with_capacity(n);
-    // The ranks and dependent joints of the first leg whose axes had to be turned.
-    let mut turned_note: Option<(usize, usize, Vec<usize>)> = None;
-    for k in 0..n {
-        let theta = std::f64::consts::TAU * k as f64 / n as f64;
-        let sense = if spec.alternate && k % 2 == 1 {
-            -1.0
-        } else {
-            1.0
-        };
-        let phi = theta + sense * spec.twist.to_radians();
-        let base = Vector3::new(theta.cos(), theta.sin(), 0.0) * spec.base_radius;
-        let attach = Vector3::new(phi.cos(), phi.sin(), 0.0) * spec.platform_radius;
-        let end = attach + Vector3::new(0.0, 0.0, spec.height);
-        let frame = leg_frame(&base, &end);
-        let length = (end - base).norm();
-        // Letter m is pushed off the leg line by 0.15 of its length towards the angle m·ψ
-        // (ψ the golden angle) in the leg frame's xy plane: the points do not lie in one plane.
-        let off = |m: f64| {
-            let a = m * GOLDEN_ANGLE;
-            (frame[0] * a.cos() + frame[1] * a.sin()) * (0.15 * length)
-        };
-        let mut axis_vectors: Vec<Vector3<f64>> = axes
-            .chars()
-            .filter_map(crate::notation::Axis::from_letter)
-            .map(|a| frame[a.index()])
-            .collect();
-        let points: Vec<Vector3<f64>> = (0..letters)
-            .map(|m| match m {
-                0 => base,
-                _ if m + 1 == letters => end,
-                _ => base + (end - base) * (m as f64 / (letters - 1) as f64) + off(m as f64),
-            })
-            .collect();
-        // The leg as it will be written (rounded as in the file) must be generic at the
-        // reference: its joint twists of full generic rank, and that rank reached there.
-        let check = |axis_vectors: &[Vector3<f64>]| {
-            let joints = leg_primitives(&plain, axis_vectors, &points);
-            LegCheck::standalone(k, &plain, &joints)
-        };
-        let sound = |c: &LegCheck| !c.is_singular() && !c.has_dependent_joints();
-        let found = check(&axis_vectors);
-        if !sound(&found) {
-            let warning = found
-                .warnings()
-                .first()
-                .map(ToString::to_string)
-                .unwrap_or_default();
-            let refused = |why: &str| BuildError::Refused {
-                chain: spec.chain.trim().to_string(),
-                axes: axes.clone(),
-                warning: warning.clone(),
-                why: why.to_string(),
-            };
-            if found.has_dependent_joints() {
-                return Err(refused(
-                    "turning the axes cannot remove a dependency that holds at every configuration",
-                ));
-            }
-            // The aligned directions are a singular configuration of this chain (e.g. two
-            // guides parallel there): take the directions the joints have after every revolute
-            // turned by a fixed angle; parallel groups stay parallel (paper 000 §2). Kept only
-            // when the directions changed and the leg is then generic.
-            let turned_vectors = turned(&plain, &axis_vectors, &points);
-            let changed = turned_vectors
-                .iter()
-                .zip(&axis_vectors)
-                .any(|(a, b)| a.cross(b).norm() > super::AXIS_TOLERANCE);
-            if !changed {
-                return Err(refused(
-                    "turning its revolutes leaves these axis directions unchanged",
-                ));
-            }
-            let valid = super::check_joint_axes(&plain, &turned_vectors).is_ok()
-                && super::leg::check_parallel_marks(&plain, &turned_vectors).is_ok();
-            let after = check(&turned_vectors);
-            if !valid || !sound(&after) {
-                return Err(refused(&format!(
-                    "with its revolutes turned it is still not generic (rank {} of {} joints, {} at generic joint values)",
-                    after.reference.rank, after.joints, after.generic.rank
-                )));
-            }
-            turned_note.get_or_insert_with(|| {
-                (
-                    found.reference.rank,
-                    found.generic.rank,
-                    found.dependent_at_reference.clone(),
-                )
-            });
-            axis_vectors = turned_vectors;
-        }
+    Ok((chain, axes, actuated))
+}
 
-        let first = points[0];
-        let points: Vec<[f64; 3]> = points[1..letters.saturating_sub(1).max(1)]
+/// Why a leg's axes were turned: its joint-twist rank at the reference and at generic joint
+/// values, and its joints dependent at the reference.
+struct TurnedNote {
+    rank: usize,
+    generic: usize,
+    dependent: Vec<usize>,
+}
+
+/// Leg `k` of the symmetric geometry (0-based): its joint points and axis directions in the
+/// ground frame, checked generic as the file will hold it, with its axes turned when the aligned
+/// directions are a singular configuration of the chain (and why).
+fn symmetric_leg(
+    spec: &BuildSpec,
+    k: usize,
+    plain: &Chain,
+    axes: &str,
+    actuated: &[usize],
+) -> Result<(LegSpec, Option<TurnedNote>), BuildError> {
+    let n = spec.legs;
+    let letters = plain.joints().len();
+    let theta = std::f64::consts::TAU * k as f64 / n as f64;
+    let sense = if spec.alternate && k % 2 == 1 {
+        -1.0
+    } else {
+        1.0
+    };
+    let phi = theta + sense * spec.twist.to_radians();
+    let base = Vector3::new(theta.cos(), theta.sin(), 0.0) * spec.base_radius;
+    let attach = Vector3::new(phi.cos(), phi.sin(), 0.0) * spec.platform_radius;
+    let end = attach + Vector3::new(0.0, 0.0, spec.height);
+    let frame = leg_frame(&base, &end);
+    let length = (end - base).norm();
+    // Letter m is pushed off the leg line by 0.15 of its length towards the angle m·ψ
+    // (ψ the golden angle) in the leg frame's xy plane: the points do not lie in one plane.
+    let off = |m: f64| {
+        let a = m * GOLDEN_ANGLE;
+        (frame[0] * a.cos() + frame[1] * a.sin()) * (0.15 * length)
+    };
+    let mut note = None;
+    let mut axis_vectors: Vec<Vector3<f64>> = axes
+        .chars()
+        .filter_map(crate::notation::Axis::from_letter)
+        .map(|a| frame[a.index()])
+        .collect();
+    let points: Vec<Vector3<f64>> = (0..letters)
+        .map(|m| match m {
+            0 => base,
+            _ if m + 1 == letters => end,
+            _ => base + (end - base) * (m as f64 / (letters - 1) as f64) + off(m as f64),
+        })
+        .collect();
+    // The leg as it will be written (rounded as in the file) must be generic at the
+    // reference: its joint twists of full generic rank, and that rank reached there.
+    let check = |axis_vectors: &[Vector3<f64>]| {
+        let joints = leg_primitives(plain, axis_vectors, &points);
+        LegCheck::standalone(k, plain, &joints)
+    };
+    let sound = |c: &LegCheck| !c.is_singular() && !c.has_dependent_joints();
+    let found = check(&axis_vectors);
+    if !sound(&found) {
+        let warning = found
+            .warnings()
+            .first()
+            .map(ToString::to_string)
+            .unwrap_or_default();
+        let refused = |why: &str| BuildError::Refused {
+            chain: spec.chain.trim().to_string(),
+            axes: axes.to_string(),
+            warning: warning.clone(),
+            why: why.to_string(),
+        };
+        if found.has_dependent_joints() {
+            return Err(refused(
+                "turning the axes cannot remove a dependency that holds at every configuration",
+            ));
+        }
+        // The aligned directions are a singular configuration of this chain (e.g. two
+        // guides parallel there): take the directions the joints have after every revolute
+        // turned by a fixed angle; parallel groups stay parallel (paper 000 §2). Kept only
+        // when the directions changed and the leg is then generic.
+        let turned_vectors = turned(plain, &axis_vectors, &points);
+        let changed = turned_vectors
             .iter()
-            .map(|p| tidy(*p))
-            .collect();
-        legs.push(LegSpec {
-            chain: plain.to_string(),
-            base: tidy(first),
-            platform: tidy(attach),
-            points: (letters > 2).then_some(points),
-            axes: Some(
-                axis_vectors
-                    .iter()
-                    .map(|a| AxisSpec::Vector(tidy(*a)))
-                    .collect(),
-            ),
-            actuated: Some(actuated.clone()),
+            .zip(&axis_vectors)
+            .any(|(a, b)| a.cross(b).norm() > super::AXIS_TOLERANCE);
+        if !changed {
+            return Err(refused(
+                "turning its revolutes leaves these axis directions unchanged",
+            ));
+        }
+        let valid = super::check_joint_axes(plain, &turned_vectors).is_ok()
+            && super::leg::check_parallel_marks(plain, &turned_vectors).is_ok();
+        let after = check(&turned_vectors);
+        if !valid || !sound(&after) {
+            return Err(refused(&format!(
+                "with its revolutes turned it is still not generic (rank {} of {} joints, {} at generic joint values)",
+                after.reference.rank, after.joints, after.generic.rank
+            )));
+        }
+        note = Some(TurnedNote {
+            rank: found.reference.rank,
+            generic: found.generic.rank,
+            dependent: found.dependent_at_reference.clone(),
         });
+        axis_vectors = turned_vectors;
     }
+
+    let first = points[0];
+    let points: Vec<[f64; 3]> = points[1..letters.saturating_sub(1).max(1)]
+        .iter()
+        .map(|p| tidy(*p))
+        .collect();
+    let leg = LegSpec {
+        chain: plain.to_string(),
+        base: tidy(first),
+        platform: tidy(attach),
+        points: (letters > 2).then_some(points),
+        axes: Some(
+            axis_vectors
+                .iter()
+                .map(|a| AxisSpec::Vector(tidy(*a)))
+                .collect(),
+        ),
+        actuated: Some(actuated.to_vec()),
+    };
+    Ok((leg, note))
+}
+
+/// The file's `source`: the command that rebuilds it, the catalogue entry of its legs, and why
+/// axes were turned.
+fn source_text(
+    spec: &BuildSpec,
+    lookup: &super::CommittedChains,
+    axes: &str,
+    actuated: &[usize],
+    name: &str,
+    turned_note: Option<&TurnedNote>,
+) -> String {
+    let n = spec.legs;
     let from_catalogue = lookup
         .chain(&spec.chain)
         .filter(|e| e.id.eq_ignore_ascii_case(spec.chain.trim()))
         .map(|e| format!(" (legs: catalogue entry {} {})", e.id, e.notation));
-    let name = spec
-        .name
-        .clone()
-        .unwrap_or_else(|| format!("{n}-{}", plain.letters()));
     let mut source = format!(
         "kinsyn build --legs {n} --chain '{}' --axes {axes} --actuated {} --base-radius {} --platform-radius {} --height {} --twist {}{} --name '{name}'",
         spec.chain.trim(),
@@ -625,30 +697,21 @@ pub fn build(spec: &BuildSpec) -> Result<Description, BuildError> {
         if spec.alternate { " --alternate" } else { "" }
     );
     source += &from_catalogue.unwrap_or_default();
-    if let Some((rank, generic, dependent)) = turned_note {
+    if let Some(TurnedNote {
+        rank,
+        generic,
+        dependent,
+    }) = turned_note
+    {
         let _ = write!(
             source,
             "; axes turned: with the directions of --axes the leg is singular at the reference (rank {rank} there, {generic} at generic joint values{}), so every revolute was turned by 0.6 + 0.25 k rad (k its 0-based position), joint points kept; the leg is then generic",
             if dependent.is_empty() {
                 String::new()
             } else {
-                format!("; joints {} dependent", super::leg::joint_list(&dependent))
+                format!("; joints {} dependent", super::leg::joint_list(dependent))
             }
         );
     }
-    Ok(Description {
-        format: FORMAT.into(),
-        name,
-        source: Some(source),
-        units: Units {
-            length: "m".into(),
-            angle: AngleUnit::Deg,
-        },
-        platform: PlatformSpec {
-            position: [0.0, 0.0, spec.height],
-            orientation: [0.0; 3],
-            point: [0.0; 3],
-        },
-        legs,
-    })
+    source
 }
