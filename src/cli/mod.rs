@@ -116,6 +116,10 @@ enum Command {
         lock: Option<String>,
         /// Refuse more lock subsets than this (each is a sampled motion of about 1–5 ms of CPU;
         /// 4096 take about 16–20 s on a 6-UPS).
+        /// A moving body of a kinsyn-manipulator/2 file whose patterns to report instead of the
+        /// end-effector's.
+        #[arg(long, value_name = "NAME")]
+        body: Option<String>,
         #[arg(long, value_name = "COUNT", default_value_t = manipulator::DEFAULT_MAX_SUBSETS,
               value_parser = clap::value_parser!(u32).range(1..=i64::from(manipulator::MAX_SUBSETS_CEILING)))]
         max_subsets: u32,
@@ -160,6 +164,10 @@ enum Command {
         /// their values at the start.
         #[arg(long)]
         lock: Option<String>,
+        /// A moving body of a kinsyn-manipulator/2 file to analyse instead of the end-effector
+        /// (its pose is then the one --pose, --from and P refer to).
+        #[arg(long, value_name = "NAME")]
+        body: Option<String>,
         /// Seed of the random assemblies that give the generic ranks.
         #[arg(long, default_value_t = 2026)]
         seed: u64,
@@ -492,6 +500,7 @@ fn execute(command: Command) -> Result<String, CliError> {
             max_locks,
             lock,
             max_subsets,
+            body,
             sampling,
             json: as_json,
         } => {
@@ -502,7 +511,7 @@ fn execute(command: Command) -> Result<String, CliError> {
             };
             manipulator::modes(
                 &file,
-                pose.as_deref(),
+                (pose.as_deref(), body.as_deref()),
                 &selection,
                 max_subsets,
                 &sampling.settings(),
@@ -515,6 +524,7 @@ fn execute(command: Command) -> Result<String, CliError> {
             inputs,
             from,
             lock,
+            body,
             seed,
             json: as_json,
         } => manipulator::analyze(
@@ -523,6 +533,7 @@ fn execute(command: Command) -> Result<String, CliError> {
                 pose: pose.as_deref(),
                 inputs: inputs.as_deref(),
                 from: from.as_deref(),
+                body: body.as_deref(),
             },
             lock.as_deref(),
             &kinsyn::mechanism::SampleSettings {

@@ -296,24 +296,40 @@ impl Manipulator {
                 ),
             });
         }
+        let legs = self.has_leg_wrench_jacobians();
         if generic.jd < 6 {
             out.push(Singularity {
                 kind: SingularityKind::Direct,
-                detail: format!(
-                    "the held inputs and constraints never fix the platform: J_D of rank {} at every generic configuration (too few inputs, or an architecture singularity)",
-                    generic.jd
-                ),
+                detail: if legs {
+                    format!(
+                        "the held inputs and constraints never fix the platform: J_D of rank {} at every generic configuration (too few inputs, or an architecture singularity)",
+                        generic.jd
+                    )
+                } else {
+                    format!(
+                        "the held inputs never fix the end-effector: with every input held it keeps {} dof at every generic configuration (loop-closure Jacobian; too few inputs, or an architecture singularity)",
+                        6 - generic.jd
+                    )
+                },
             });
         }
         if jd_rank.rank < generic.jd {
             out.push(Singularity {
                 kind: SingularityKind::Direct,
-                detail: format!(
-                    "J_D of rank {} here, {} at generic configurations ({})",
-                    jd_rank.rank,
-                    generic.jd,
-                    rank_text(jd_rank)
-                ),
+                detail: if legs {
+                    format!(
+                        "J_D of rank {} here, {} at generic configurations ({})",
+                        jd_rank.rank,
+                        generic.jd,
+                        rank_text(jd_rank)
+                    )
+                } else {
+                    format!(
+                        "with every input held the end-effector keeps {} dof here, {} at generic configurations (loop-closure Jacobian)",
+                        6 - jd_rank.rank,
+                        6 - generic.jd
+                    )
+                },
             });
         }
         out
