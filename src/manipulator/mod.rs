@@ -249,6 +249,16 @@ impl Manipulator {
                 to,
             });
         }
+        let joints = legs.last().map_or(0, |l| l.joints.end);
+        if fields == Fields::V2 && joints > MAX_JOINTS {
+            return Err(DescriptionError::new(
+                "legs",
+                format!(
+                    "{joints} primitive joints in all: at most {MAX_JOINTS} (docs/limits.md; the analysis grows with the cube of the number of joints)"
+                ),
+            )
+            .into());
+        }
         let bodies: Vec<Body> = d
             .bodies
             .iter()
@@ -579,15 +589,6 @@ impl Layout {
                 "no leg: a manipulator needs at least one".into(),
             ));
         }
-        let joints: usize = d
-            .legs
-            .iter()
-            .map(|l| {
-                l.chain
-                    .parse::<Chain>()
-                    .map_or(0, |c| c.primitives().count())
-            })
-            .sum();
         match fields {
             Fields::V1 if d.legs.len() > MAX_LEGS => {
                 return Err(err(
@@ -604,14 +605,6 @@ impl Layout {
                     format!(
                         "{} legs: at most {MAX_LEGS_BETWEEN_BODIES} (docs/limits.md)",
                         d.legs.len()
-                    ),
-                ));
-            }
-            Fields::V2 if joints > MAX_JOINTS => {
-                return Err(err(
-                    "legs".into(),
-                    format!(
-                        "{joints} primitive joints in all: at most {MAX_JOINTS} (docs/limits.md; the analysis grows with the cube of the number of joints)"
                     ),
                 ));
             }
