@@ -223,9 +223,20 @@ pub fn check_description(data: &[u8]) {
             "a description's own JSON reads differently:\n{json}"
         );
     }
+    // Either format in its /2 form (a /1 file converted): its /2 JSON reads back the same.
+    if let Ok(d) = kinsyn::manipulator::file::MultibodyDescription::from_json(text) {
+        let json = d.to_json();
+        let again = kinsyn::manipulator::file::MultibodyDescription::from_json(&json)
+            .unwrap_or_else(|e| panic!("a /2 description's own JSON does not read: {e}\n{json}"));
+        assert_eq!(
+            again, d,
+            "a /2 description's own JSON reads differently:\n{json}"
+        );
+    }
     let Ok(m) = Manipulator::from_json(text) else {
         return;
     };
+    assert!(m.end_effector() < m.bodies().len());
     let warnings = m.leg_warnings();
     assert!(warnings.iter().all(|w| w.leg < m.legs().len()));
     let settings = SampleSettings {

@@ -100,6 +100,10 @@ pub(super) enum Command {
         /// ('-' for none).
         #[arg(long, value_name = "SET", allow_hyphen_values = true)]
         lock: Option<String>,
+        /// A moving body of a kinsyn-manipulator/2 file whose patterns to report instead of the
+        /// end-effector's.
+        #[arg(long, value_name = "NAME")]
+        body: Option<String>,
         /// Refuse more lock subsets than this (each is a sampled motion of about 1–5 ms of CPU;
         /// 4096 take about 16–20 s on a 6-UPS).
         #[arg(long, value_name = "COUNT", default_value_t = super::manipulator::DEFAULT_MAX_SUBSETS,
@@ -146,6 +150,10 @@ pub(super) enum Command {
         /// their values at the start.
         #[arg(long)]
         lock: Option<String>,
+        /// A moving body of a kinsyn-manipulator/2 file to analyse instead of the end-effector
+        /// (its pose is then the one --pose, --from and P refer to).
+        #[arg(long, value_name = "NAME")]
+        body: Option<String>,
         /// Seed of the random assemblies that give the generic ranks.
         #[arg(long, default_value_t = 2026)]
         seed: u64,

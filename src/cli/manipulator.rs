@@ -63,6 +63,17 @@ pub fn load(path: &Path) -> Result<Manipulator, CliError> {
     })
 }
 
+/// [`load`], with the moving body `body` (`--body NAME`) as the end-effector when given.
+fn load_with_body(path: &Path, body: Option<&str>) -> Result<Manipulator, CliError> {
+    let m = load(path)?;
+    match body {
+        None => Ok(m),
+        Some(name) => m
+            .with_end_effector(name)
+            .map_err(|e| CliError::Input(format!("--body {name:?}: {e}"))),
+    }
+}
+
 /// The leg warnings of `m` (docs/mechanism-format.md, "Leg checks").
 fn leg_warnings(m: &Manipulator) -> Vec<String> {
     m.leg_warnings().iter().map(ToString::to_string).collect()
@@ -221,13 +232,13 @@ fn subset_progress(count: usize) -> ProgressBar {
 /// held at their values at the start configuration (the reference, or `--pose`).
 pub fn modes(
     path: &Path,
-    pose: Option<&str>,
+    (pose, body): (Option<&str>, Option<&str>),
     selection: &Selection,
     max_subsets: u32,
     settings: &SampleSettings,
     as_json: bool,
 ) -> Result<String, CliError> {
-    let m = load(path)?;
+    let m = load_with_body(path, body)?;
     let subsets = selected_subsets(path, &m, selection, max_subsets)?;
     let start = start_configuration(&m, pose)?;
     let modes = if subsets.len() > 1 {
@@ -241,7 +252,14 @@ pub fn modes(
     let warnings = leg_warnings(&m);
     warn(path, &warnings);
     if as_json {
-        return Ok(json(&modes_json(&modes, pose, selection, &warnings)));
+        let mut value = modes_json(&modes, pose, selection, &warnings);
+        if let Some(object) = value.as_object_mut() {
+            object.insert(
+                "end_effector".into(),
+                serde_json::json!(m.bodies()[m.end_effector()].name),
+            );
+        }
+        return Ok(json(&value));
     }
     let mut s = modes_header(&m, &modes, pose, selection);
     match selection {
@@ -315,6 +333,14 @@ fn modes_header(
         kinsyn::manipulator::file::AngleUnit::Deg => (r.map(f64::to_degrees), "deg"),
         kinsyn::manipulator::file::AngleUnit::Rad => (r, "rad"),
     };
+    if m.bodies().len() > 1 {
+        let _ = writeln!(
+            s,
+            "patterns of the end-effector {:?} (moving bodies: {}; --body NAME for another)",
+            m.bodies()[m.end_effector()].name,
+            body_names(m)
+        );
+    }
     let _ = writeln!(
         s,
         "start: {}: platform frame at [{:.6}, {:.6}, {:.6}] {}, rotation vector [{:.6}, {:.6}, {:.6}] {angle}; locked inputs held at their values there",
@@ -534,6 +560,8 @@ pub struct Placement<'a> {
     pub inputs: Option<&'a str>,
     /// `--from`: the pose of the start configuration.
     pub from: Option<&'a str>,
+    /// `--body`: the moving body analysed instead of the description's end-effector.
+    pub body: Option<&'a str>,
 }
 
 /// How the configuration analysed was reached, for the report.
@@ -556,7 +584,7 @@ pub fn analyze(
     settings: &SampleSettings,
     as_json: bool,
 ) -> Result<String, CliError> {
-    let m = load(path)?;
+    let m = load_with_body(path, placement.body)?;
     let locked = match lock {
         Some(text) => m
             .parse_locks(text)
@@ -682,7 +710,54 @@ fn analysis_json(
         "generic_assemblies": a.generic.assemblies,
         "singularities": a.singularities,
         "warnings": warnings,
+        "end_effector": m.bodies()[m.end_effector()].name,
+        "bodies": bodies_json(m, a),
+        "leg_wrench_jacobians": a.leg_wrench_jacobians,
+        "inputs_with_end_effector_held": {
+            "here": a.inputs_with_end_effector_held,
+            "generic": a.generic.inputs_with_end_effector_held,
+        },
     })
+}
+
+/// The moving bodies' names, comma separated, the end-effector marked.
+fn body_names(m: &Manipulator) -> String {
+    m.bodies()
+        .iter()
+        .enumerate()
+        .map(|(k, b)| {
+            if k == m.end_effector() {
+                format!("{} (end-effector)", b.name)
+            } else {
+                b.name.clone()
+            }
+        })
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+/// Each moving body at the configuration analysed: its name, dof with the locked inputs held,
+/// frame origin, rotation vector (radians) and reference point.
+fn bodies_json(m: &Manipulator, a: &Analysis) -> serde_json::Value {
+    let bodies: Vec<serde_json::Value> = m
+        .bodies()
+        .iter()
+        .enumerate()
+        .map(|(k, b)| {
+            let frame = m.body_frame(k, &a.q);
+            let rv = kinsyn::mechanism::rotation_log(&frame.rotation);
+            let p = m.body_point(k, &a.q);
+            serde_json::json!({
+                "name": b.name,
+                "end_effector": k == m.end_effector(),
+                "dof": a.body_dof[k],
+                "position": [frame.translation.x, frame.translation.y, frame.translation.z],
+                "rotation_vector_rad": [rv.x, rv.y, rv.z],
+                "point": [p.x, p.y, p.z],
+            })
+        })
+        .collect();
+    serde_json::Value::Array(bodies)
 }
 
 /// A rank decision with its gap and the generic rank it is compared with.
@@ -697,64 +772,8 @@ fn rank_json(r: &kinsyn::screw::Rank, generic: Option<usize>) -> serde_json::Val
     })
 }
 
-fn analysis_text(m: &Manipulator, a: &Analysis, reached: &Reached) -> String {
+fn jacobian_text(m: &Manipulator, a: &Analysis) -> String {
     let mut s = String::new();
-    let frame = m.platform_frame(&a.q);
-    let rv = kinsyn::mechanism::rotation_log(&frame.rotation);
-    let p = a.jacobians.point;
-    let _ = writeln!(
-        s,
-        "{}: P = [{:.6}, {:.6}, {:.6}] {}; platform rotation vector [{:.6}, {:.6}, {:.6}] rad; locked: {}",
-        m.name(),
-        clean(p.x),
-        clean(p.y),
-        clean(p.z),
-        m.units().length,
-        clean(rv.x),
-        clean(rv.y),
-        clean(rv.z),
-        m.lock_text(&a.locked)
-    );
-    if !reached.continuous {
-        let _ = writeln!(
-            s,
-            "reached from {} by damped Newton steps, not by continuation: the path of the values from the start leaves the workspace or meets a singularity, so this may be another assembly mode than the start's",
-            reached.start
-        );
-    } else if reached.steps > 0 || reached.start_given {
-        let _ = writeln!(
-            s,
-            "reached from {} in {} continuation step{}: the assembly continuous with it (another start, --from POSE, may give another assembly)",
-            reached.start,
-            reached.steps,
-            if reached.steps == 1 { "" } else { "s" }
-        );
-    }
-    let values: Vec<String> = input_values(m, &a.q)
-        .iter()
-        .map(|(label, v)| format!("{label} = {:.6}", clean(*v)))
-        .collect();
-    let _ = writeln!(
-        s,
-        "input values (from the reference; {}, angles in {}): {}",
-        m.units().length,
-        m.units().angle.name(),
-        values.join(", ")
-    );
-    let _ = writeln!(
-        s,
-        "mobility {} (joint rates closing the loops), platform dof {} (6 − rank of the constraint wrenches; {} internal)",
-        a.mobility,
-        a.platform_dof,
-        a.mobility.saturating_sub(a.platform_dof)
-    );
-    let (kept, dropped) = a.closure_rank.gap();
-    let _ = writeln!(
-        s,
-        "loop closure: rank {} over {} free joint rates, gap {kept:.3e} kept / {dropped:.3e} dropped",
-        a.closure_rank.rank,
-        a.closure_rank.rank + a.mobility,
-    );
     let inputs: Vec<String> = a
         .jacobians
         .free
@@ -792,6 +811,151 @@ fn analysis_text(m: &Manipulator, a: &Analysis, reached: &Reached) -> String {
         rank_text(&a.constraint_rank),
         a.generic.constraint
     );
+    s
+}
+
+/// What replaces `J_D`, `J_I` when the legs do not all run from the ground to the end-effector:
+/// why they are not defined, and the end-effector's input–output freedoms from the loop
+/// closure (docs/manipulators.md, "Several moving bodies").
+fn closure_io_text(m: &Manipulator, a: &Analysis) -> String {
+    let mut s = String::new();
+    let ee = m.platform();
+    let off: Vec<String> = m
+        .legs()
+        .iter()
+        .enumerate()
+        .filter(|(_, l)| l.from != m.mechanism().ground() || l.to != ee)
+        .map(|(i, l)| {
+            format!(
+                "leg {} {} → {}",
+                i + 1,
+                m.mechanism().body_name(l.from),
+                m.mechanism().body_name(l.to)
+            )
+        })
+        .collect();
+    let _ = writeln!(
+        s,
+        "J_D, J_I: not defined: paper 000's leg wrenches act on the end-effector only when every leg runs from the ground to it, and {} do not; from the loop-closure Jacobian instead:",
+        off.join(", ")
+    );
+    let plural = |n: usize| if n == 1 { "" } else { "s" };
+    let held = 6 - a.jd_rank.rank;
+    let generic_held = 6 - a.generic.jd;
+    let _ = writeln!(
+        s,
+        "  with every input held, the end-effector keeps {held} dof (generic {generic_held}; 0 when the inputs fix it)"
+    );
+    let _ = writeln!(
+        s,
+        "  with the locked inputs held, the end-effector has {} dof: constraint wrenches of rank {} (generic {})",
+        a.platform_dof, a.constraint_rank.rank, a.generic.constraint
+    );
+    let free: Vec<String> = a
+        .jacobians
+        .free
+        .iter()
+        .map(|&i| m.actuators()[i].label())
+        .collect();
+    let _ = writeln!(
+        s,
+        "  with the end-effector held, the free inputs [{}] keep {} independent rate{} (generic {})",
+        free.join(" "),
+        a.inputs_with_end_effector_held,
+        plural(a.inputs_with_end_effector_held),
+        a.generic.inputs_with_end_effector_held
+    );
+    s
+}
+
+fn analysis_text(m: &Manipulator, a: &Analysis, reached: &Reached) -> String {
+    let mut s = String::new();
+    let frame = m.platform_frame(&a.q);
+    let rv = kinsyn::mechanism::rotation_log(&frame.rotation);
+    let p = a.jacobians.point;
+    let several = m.bodies().len() > 1;
+    let title = if several {
+        format!(
+            "{}, end-effector {:?}",
+            m.name(),
+            m.bodies()[m.end_effector()].name
+        )
+    } else {
+        m.name().to_string()
+    };
+    let _ = writeln!(
+        s,
+        "{title}: P = [{:.6}, {:.6}, {:.6}] {}; platform rotation vector [{:.6}, {:.6}, {:.6}] rad; locked: {}",
+        clean(p.x),
+        clean(p.y),
+        clean(p.z),
+        m.units().length,
+        clean(rv.x),
+        clean(rv.y),
+        clean(rv.z),
+        m.lock_text(&a.locked)
+    );
+    if !reached.continuous {
+        let _ = writeln!(
+            s,
+            "reached from {} by damped Newton steps, not by continuation: the path of the values from the start leaves the workspace or meets a singularity, so this may be another assembly mode than the start's",
+            reached.start
+        );
+    } else if reached.steps > 0 || reached.start_given {
+        let _ = writeln!(
+            s,
+            "reached from {} in {} continuation step{}: the assembly continuous with it (another start, --from POSE, may give another assembly)",
+            reached.start,
+            reached.steps,
+            if reached.steps == 1 { "" } else { "s" }
+        );
+    }
+    let values: Vec<String> = input_values(m, &a.q)
+        .iter()
+        .map(|(label, v)| format!("{label} = {:.6}", clean(*v)))
+        .collect();
+    let _ = writeln!(
+        s,
+        "input values (from the reference; {}, angles in {}): {}",
+        m.units().length,
+        m.units().angle.name(),
+        values.join(", ")
+    );
+    if several {
+        let dofs: Vec<String> = m
+            .bodies()
+            .iter()
+            .zip(&a.body_dof)
+            .map(|(b, d)| format!("{} {d}", b.name))
+            .collect();
+        let _ = writeln!(
+            s,
+            "mobility {} (joint rates closing the loops); moving bodies' dof (twist spaces on the loop closure): {}; end-effector {:?}",
+            a.mobility,
+            dofs.join(", "),
+            m.bodies()[m.end_effector()].name
+        );
+    } else {
+        let _ = writeln!(
+            s,
+            "mobility {} (joint rates closing the loops), platform dof {} (6 − rank of the constraint wrenches; {} internal)",
+            a.mobility,
+            a.platform_dof,
+            a.mobility.saturating_sub(a.platform_dof)
+        );
+    }
+    let (kept, dropped) = a.closure_rank.gap();
+    let _ = writeln!(
+        s,
+        "loop closure: rank {} over {} free joint rates, gap {kept:.3e} kept / {dropped:.3e} dropped",
+        a.closure_rank.rank,
+        a.closure_rank.rank + a.mobility,
+    );
+    if a.leg_wrench_jacobians {
+        s += &jacobian_text(m, a);
+    } else {
+        s += &closure_io_text(m, a);
+    }
     for (i, (r, g)) in a.leg_ranks.iter().zip(&a.generic.legs).enumerate() {
         let _ = writeln!(
             s,

@@ -120,6 +120,7 @@ fn execute(command: Command) -> Result<String, CliError> {
             max_locks,
             lock,
             max_subsets,
+            body,
             sampling,
             json: as_json,
         } => {
@@ -130,7 +131,7 @@ fn execute(command: Command) -> Result<String, CliError> {
             };
             manipulator::modes(
                 &file,
-                pose.as_deref(),
+                (pose.as_deref(), body.as_deref()),
                 &selection,
                 max_subsets,
                 &sampling.settings(),
@@ -143,6 +144,7 @@ fn execute(command: Command) -> Result<String, CliError> {
             inputs,
             from,
             lock,
+            body,
             seed,
             json: as_json,
         } => manipulator::analyze(
@@ -151,6 +153,7 @@ fn execute(command: Command) -> Result<String, CliError> {
                 pose: pose.as_deref(),
                 inputs: inputs.as_deref(),
                 from: from.as_deref(),
+                body: body.as_deref(),
             },
             lock.as_deref(),
             &kinsyn::mechanism::SampleSettings {

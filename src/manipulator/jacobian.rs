@@ -177,8 +177,18 @@ fn joint_wrench(b: &DMatrix<f64>, s: &DMatrix<f64>, offset: &Vector3<f64>) -> Op
 impl Manipulator {
     /// The Jacobians `J_D`, `J_I` at joint values `q` with the `locked` inputs (indices into
     /// [`Manipulator::actuators`]) held.
+    ///
+    /// They are defined when every leg runs from the ground to the end-effector
+    /// ([`Manipulator::has_leg_wrench_jacobians`]). Otherwise (legs between other bodies: a
+    /// stack of modules, a platform of several bodies) a leg's wrenches do not act on the
+    /// end-effector, and the result has **no rows** (`jd` 0 × 6, `ji` 0 × free inputs), only
+    /// the free inputs, P and the legs' ranks; [`Manipulator::analyse`] then takes the
+    /// end-effector's freedoms from the loop-closure Jacobian.
     #[must_use]
     pub fn jacobians(&self, q: &[f64], locked: &[usize]) -> Jacobians {
+        if !self.has_leg_wrench_jacobians() {
+            return self.without_leg_wrenches(q, locked);
+        }
         let m = &self.mechanism;
         let scale = m.scale();
         let screws = m.joint_screws(q);
@@ -321,6 +331,75 @@ impl Manipulator {
         }
     }
 
+    /// The "Jacobians" of a manipulator whose legs do not all run from the ground to the
+    /// end-effector: no rows, the free inputs, P and each leg's rank.
+    fn without_leg_wrenches(&self, q: &[f64], locked: &[usize]) -> Jacobians {
+        let screws = self.mechanism.joint_screws(q);
+        let leg_ranks = self
+            .legs
+            .iter()
+            .map(|leg| {
+                let joints: Vec<usize> = leg.joints.clone().collect();
+                linalg::rank(
+                    &self.unitless_leg_twists(&screws, &joints),
+                    DEFAULT_RANK_TOLERANCE,
+                )
+                .rank
+            })
+            .collect();
+        let free: Vec<usize> = (0..self.actuators.len())
+            .filter(|a| !locked.contains(a))
+            .collect();
+        Jacobians {
+            point: self.point(q),
+            rows: Vec::new(),
+            jd: DMatrix::zeros(0, 6),
+            ji: DMatrix::zeros(0, free.len()),
+            free,
+            without_wrench: Vec::new(),
+            leg_ranks,
+        }
+    }
+
+    /// The end-effector's freedoms from the loop-closure Jacobian, for any manipulator: a basis
+    /// of its twists `(v_P; ω)` (columns, physical units) with the `locked` inputs held, and the
+    /// rank decision of the wrenches reciprocal to them (the dimensionless constraint wrench
+    /// system on the end-effector: an orthonormal basis, so its rank is six minus the
+    /// end-effector's dof, decided on its twist space).
+    pub(super) fn closure_output(&self, q: &[f64], locked: &[usize]) -> (DMatrix<f64>, Rank) {
+        let m = &self.mechanism;
+        let screws = m.joint_screws(q);
+        let (basis, _) = m.unitless_twist_space(self.platform, &screws, &self.lock_mask(locked));
+        let wrenches = screw::reciprocal_complement(&basis, DEFAULT_RANK_TOLERANCE);
+        let rank = linalg::rank(&wrenches, DEFAULT_RANK_TOLERANCE);
+        let physical = m.physical_twists(&basis);
+        let p = self.point(q);
+        let out = DMatrix::from_fn(6, physical.ncols(), |r, c| {
+            let w = Vector3::new(physical[(0, c)], physical[(1, c)], physical[(2, c)]);
+            let v = Vector3::new(physical[(3, c)], physical[(4, c)], physical[(5, c)]);
+            let vp = v + w.cross(&p);
+            [vp.x, vp.y, vp.z, w.x, w.y, w.z][r]
+        });
+        (out, rank)
+    }
+
+    /// The ranks an analysis judges the end-effector by, at `q` with the `locked` inputs held:
+    /// the rank of `J_D` and of its constraint rows. With leg-wrench Jacobians `j`, theirs
+    /// (dimensionless); otherwise those of the wrench systems reciprocal to the end-effector's
+    /// twists with every input held (the wrenches `J_D`'s rows would span) and with only the
+    /// `locked` inputs held (its constraint rows), from the loop-closure Jacobian.
+    pub(super) fn output_ranks(&self, q: &[f64], locked: &[usize], j: &Jacobians) -> (Rank, Rank) {
+        if self.has_leg_wrench_jacobians() {
+            let jd = self.wrench_rank(&j.jd, &j.point);
+            let (_, constraint) = self.twists_of(j);
+            return (jd, constraint);
+        }
+        let all: Vec<usize> = (0..self.actuators.len()).collect();
+        let (_, jd) = self.closure_output(q, &all);
+        let (_, constraint) = self.closure_output(q, locked);
+        (jd, constraint)
+    }
+
     /// The current screws of a leg's joints in the dimensionless form (columns of unit size:
     /// at the centre, translations over the length scale, prismatic rates in length-scale units).
     pub(super) fn unitless_leg_twists(
@@ -367,8 +446,15 @@ impl Manipulator {
     /// twists reciprocal to the constraint rows of `J_D` (a basis, columns; physical units), and
     /// the rank decision of those rows. Their number is the platform's local degrees of freedom,
     /// six minus the rank: one computation gives both.
+    ///
+    /// Without leg-wrench Jacobians ([`Manipulator::has_leg_wrench_jacobians`]) the twists are
+    /// the end-effector's twist space from the loop-closure Jacobian, and the rank that of the
+    /// wrenches reciprocal to them.
     #[must_use]
     pub fn platform_twists(&self, q: &[f64], locked: &[usize]) -> (DMatrix<f64>, Rank) {
+        if !self.has_leg_wrench_jacobians() {
+            return self.closure_output(q, locked);
+        }
         let j = self.jacobians(q, locked);
         self.twists_of(&j)
     }

@@ -33,8 +33,8 @@ pub use singularity::{Analysis, GenericRanks, Singularity, SingularityKind, rank
 use crate::chain::Displacement;
 use crate::mechanism::{JointSpec, Mechanism, MechanismError};
 use crate::notation::{Chain, JointKind, Primitive};
-use file::{AxisSpec, Description, DescriptionError};
-use nalgebra::{Point3, Rotation3, Vector3};
+use file::{AxisSpec, Description, DescriptionError, MultibodyDescription};
+use nalgebra::{DMatrix, Point3, Rotation3, Vector3};
 use std::ops::Range;
 
 /// Why a manipulator could not be built or analysed.
@@ -56,8 +56,25 @@ pub enum ManipulatorError {
 pub struct Leg {
     /// The chain as read (with its actuation marks).
     pub chain: Chain,
-    /// The leg's primitive joints in the mechanism, base to platform.
+    /// The leg's primitive joints in the mechanism, base to platform (`from` to `to`).
     pub joints: Range<usize>,
+    /// The body its first joint is on (a body of the mechanism; the ground is 0).
+    pub from: usize,
+    /// The body its last joint is on.
+    pub to: usize,
+}
+
+/// A moving body of a manipulator, as its description names it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Body {
+    /// Its name (`platform` for the one platform of a `/1` description).
+    pub name: String,
+    /// The body in the mechanism.
+    pub body: usize,
+    /// Its frame at the reference configuration (ground frame).
+    pub frame: Displacement,
+    /// Its reference point at the reference configuration, in the ground frame.
+    pub point: Vector3<f64>,
 }
 
 /// One input of a manipulator.
@@ -86,7 +103,9 @@ impl Actuator {
     }
 }
 
-/// A parallel manipulator: legs from the ground to one platform, with actuated joints.
+/// A parallel manipulator: legs from the ground to one platform, or more generally between named
+/// bodies (a `/2` description: stacked modules, platforms made of several bodies), with actuated
+/// joints and one moving body, the end-effector, analysed by default.
 #[derive(Debug, Clone)]
 pub struct Manipulator {
     name: String,
@@ -94,6 +113,13 @@ pub struct Manipulator {
     mechanism: Mechanism,
     legs: Vec<Leg>,
     actuators: Vec<Actuator>,
+    /// The ground's name.
+    ground: String,
+    /// The moving bodies, in description order.
+    bodies: Vec<Body>,
+    /// The end-effector: an index into `bodies`.
+    end_effector: usize,
+    /// The end-effector's body in the mechanism (`platform()`).
     platform: usize,
     /// P at the reference configuration, in the ground frame.
     point: Vector3<f64>,
@@ -107,10 +133,12 @@ pub struct Manipulator {
 const AXIS_TOLERANCE: f64 = 1e-6;
 
 impl Manipulator {
-    /// Reads and builds a manipulator from the JSON text of a description file.
+    /// Reads and builds a manipulator from the JSON text of a description file of either
+    /// format (`/1`: one platform; `/2`: named bodies).
     ///
     /// # Errors
-    /// See [`Description::from_json`] and [`Manipulator::new`].
+    /// See [`file::AnyDescription::from_json`], [`Manipulator::new`] and
+    /// [`Manipulator::from_bodies`].
     ///
     /// # Example
     /// The reconfigurable 3-UPS of paper 000 §5.1 has a platform of six dof; locking the first
@@ -133,7 +161,10 @@ impl Manipulator {
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
     pub fn from_json(text: &str) -> Result<Self, ManipulatorError> {
-        Self::new(&Description::from_json(text)?)
+        match file::AnyDescription::from_json(text)? {
+            file::AnyDescription::V1(d) => Self::new(&d),
+            file::AnyDescription::V2(d) => Self::from_bodies(&d),
+        }
     }
 
     /// Builds a manipulator from a description, resolving catalogue ids (and catalogue chains
@@ -146,7 +177,8 @@ impl Manipulator {
     }
 
     /// Builds a manipulator from a description, resolving catalogue ids (and catalogue chains
-    /// whose axes are left out) through `lookup`.
+    /// whose axes are left out) through `lookup`. The description is built as its `/2` form
+    /// ([`Description::to_multibody`]); errors name the fields of `/1`.
     ///
     /// # Errors
     /// A chain that does not parse or an unknown catalogue id, axes or points in the wrong
@@ -155,14 +187,55 @@ impl Manipulator {
     /// axes), revolutes of one parallel group (`Ra…Ra`) whose axes are not parallel, a one-joint leg whose base and platform points differ, actuated positions out of
     /// range, or no leg at all. Each error names its field.
     pub fn new_with(d: &Description, lookup: &dyn ChainLookup) -> Result<Self, ManipulatorError> {
-        let frame = platform_frame(d)?;
-        let mut builder = MechanismBuilder::new();
+        Self::build(&d.to_multibody(), lookup, Fields::V1)
+    }
+
+    /// Builds a manipulator from a description with named bodies (format `/2`), resolving
+    /// catalogue chains in the committed catalogue.
+    ///
+    /// # Errors
+    /// See [`Manipulator::from_bodies_with`].
+    pub fn from_bodies(d: &MultibodyDescription) -> Result<Self, ManipulatorError> {
+        Self::from_bodies_with(d, CommittedChains::get())
+    }
+
+    /// Builds a manipulator from a description with named bodies (format `/2`), resolving
+    /// catalogue chains through `lookup`.
+    ///
+    /// # Errors
+    /// Besides the leg errors of [`Manipulator::new_with`]: no moving body, too many bodies,
+    /// legs or joints (docs/limits.md), an empty or repeated body name, a leg naming a body
+    /// that does not exist or the same body twice, a moving body joined to the ground by no
+    /// chain of legs, an end-effector that is not a moving body (or left out when there are
+    /// several). Each error names its field (`legs[3].to`).
+    pub fn from_bodies_with(
+        d: &MultibodyDescription,
+        lookup: &dyn ChainLookup,
+    ) -> Result<Self, ManipulatorError> {
+        Self::build(d, lookup, Fields::V2)
+    }
+
+    /// The manipulator of a `/2` description, its errors named with the fields of the format
+    /// it was read in.
+    fn build(
+        d: &MultibodyDescription,
+        lookup: &dyn ChainLookup,
+        fields: Fields,
+    ) -> Result<Self, ManipulatorError> {
+        let layout = Layout::new(d, fields)?;
+        let mut builder = MechanismBuilder::new(&layout.names);
         let mut legs = Vec::new();
         let mut actuators = Vec::new();
         for (i, spec) in d.legs.iter().enumerate() {
-            let geometry = LegGeometry::new(i, spec, &frame, lookup)?;
-            let joints =
-                builder.add_serial_leg(MechanismBuilder::GROUND, PLATFORM, i + 1, &geometry);
+            let (from, to) = layout.ends[i];
+            let geometry = LegGeometry::new(
+                i,
+                spec,
+                (&layout.frames[from], &layout.frames[to]),
+                lookup,
+                fields,
+            )?;
+            let joints = builder.add_serial_leg(from, to, i + 1, &geometry);
             actuators.extend(geometry.actuated.iter().map(|&p| Actuator {
                 leg: i,
                 position: p,
@@ -172,20 +245,132 @@ impl Manipulator {
             legs.push(Leg {
                 chain: geometry.chain,
                 joints,
+                from,
+                to,
             });
         }
+        let joints = legs.last().map_or(0, |l| l.joints.end);
+        if fields == Fields::V2 && joints > MAX_JOINTS {
+            return Err(DescriptionError::new(
+                "legs",
+                format!(
+                    "{joints} primitive joints in all: at most {MAX_JOINTS} (docs/limits.md; the analysis grows with the cube of the number of joints)"
+                ),
+            )
+            .into());
+        }
+        let bodies: Vec<Body> = d
+            .bodies
+            .iter()
+            .enumerate()
+            .map(|(k, b)| {
+                let frame = layout.frames[k + 1];
+                Body {
+                    name: b.name.clone(),
+                    body: k + 1,
+                    frame,
+                    point: frame.transform_point(&Point3::from(b.point)).coords,
+                }
+            })
+            .collect();
+        let ee = &bodies[layout.end_effector];
         Ok(Manipulator {
             name: d.name.clone(),
             units: d.units.clone(),
             mechanism: builder.build()?,
             legs,
             actuators,
-            platform: PLATFORM,
-            point: frame
-                .transform_point(&Point3::from(d.platform.point))
-                .coords,
-            frame,
+            ground: d.ground.clone(),
+            platform: ee.body,
+            point: ee.point,
+            frame: ee.frame,
+            end_effector: layout.end_effector,
+            bodies,
         })
+    }
+
+    /// The same manipulator with another moving body as its end-effector (by name): every
+    /// analysis of the copy (pose, `--pose`, twist space, dof, motion pattern, modes) is of
+    /// that body.
+    ///
+    /// # Errors
+    /// A name that is not a moving body; the message lists them.
+    pub fn with_end_effector(&self, name: &str) -> Result<Self, String> {
+        let k = self.body_named(name).ok_or_else(|| {
+            let names: Vec<&str> = self.bodies.iter().map(|b| b.name.as_str()).collect();
+            format!(
+                "{name:?} is not a moving body of {} (moving bodies: {})",
+                self.name,
+                names.join(", ")
+            )
+        })?;
+        let mut copy = self.clone();
+        copy.end_effector = k;
+        copy.platform = self.bodies[k].body;
+        copy.point = self.bodies[k].point;
+        copy.frame = self.bodies[k].frame;
+        Ok(copy)
+    }
+
+    /// The moving bodies, in description order (one, `platform`, for a `/1` description).
+    #[must_use]
+    pub fn bodies(&self) -> &[Body] {
+        &self.bodies
+    }
+
+    /// The end-effector: an index into [`Manipulator::bodies`].
+    #[must_use]
+    pub fn end_effector(&self) -> usize {
+        self.end_effector
+    }
+
+    /// The ground's name (`ground` for a `/1` description).
+    #[must_use]
+    pub fn ground_name(&self) -> &str {
+        &self.ground
+    }
+
+    /// The moving body with this name: an index into [`Manipulator::bodies`].
+    #[must_use]
+    pub fn body_named(&self, name: &str) -> Option<usize> {
+        self.bodies.iter().position(|b| b.name == name)
+    }
+
+    /// Whether paper 000's leg-wrench Jacobians `J_D`, `J_I` ([`Manipulator::jacobians`]) are
+    /// defined: every leg runs from the ground to the end-effector, so that each leg's wrenches
+    /// act on the end-effector. Otherwise [`Manipulator::jacobians`] has no rows and
+    /// [`Manipulator::analyse`] judges the end-effector from the loop-closure Jacobian
+    /// (docs/manipulators.md, "Several moving bodies").
+    #[must_use]
+    pub fn has_leg_wrench_jacobians(&self) -> bool {
+        self.legs
+            .iter()
+            .all(|l| l.from == MechanismBuilder::GROUND && l.to == self.platform)
+    }
+
+    /// The twist space of moving body `body` (an index into [`Manipulator::bodies`]) at `q` with
+    /// the `locked` inputs held: a basis of its spatial twists `(ω; v)` (columns, velocity of
+    /// the point at the ground origin) and its local degrees of freedom.
+    #[must_use]
+    pub fn body_twists(&self, body: usize, q: &[f64], locked: &[usize]) -> (DMatrix<f64>, usize) {
+        self.mechanism
+            .twist_space(self.bodies[body].body, q, &self.lock_mask(locked))
+    }
+
+    /// The frame of moving body `body` (an index into [`Manipulator::bodies`]) at `q`.
+    #[must_use]
+    pub fn body_frame(&self, body: usize, q: &[f64]) -> Displacement {
+        let b = &self.bodies[body];
+        crate::mechanism::compose(&self.mechanism.poses(q)[b.body], &b.frame)
+    }
+
+    /// The reference point of moving body `body` at `q`, in the ground frame.
+    #[must_use]
+    pub fn body_point(&self, body: usize, q: &[f64]) -> Vector3<f64> {
+        let b = &self.bodies[body];
+        self.mechanism.poses(q)[b.body]
+            .transform_point(&Point3::from(b.point))
+            .coords
     }
 
     /// The manipulator's name.
@@ -218,7 +403,7 @@ impl Manipulator {
         &self.actuators
     }
 
-    /// The platform body.
+    /// The end-effector's body in the mechanism (the platform of a `/1` description).
     #[must_use]
     pub fn platform(&self) -> usize {
         self.platform
@@ -317,7 +502,7 @@ impl Manipulator {
     }
 }
 
-/// The most legs a description may have (docs/limits.md): twice the six of a Gough–Stewart
+/// The most legs a `/1` description may have (docs/limits.md): twice the six of a Gough–Stewart
 /// platform. Analysis time grows with the cube of the number of joints (one SVD of the
 /// loop-closure Jacobian per Newton step).
 pub const MAX_LEGS: usize = 12;
@@ -346,38 +531,227 @@ fn finite(p: &[f64; 3], field: &str) -> Result<(), DescriptionError> {
     }
 }
 
-/// The platform body of a manipulator's mechanism (the ground is body 0).
-const PLATFORM: usize = 1;
+/// The most moving bodies a `/2` description may have (docs/limits.md).
+pub const MAX_BODIES: usize = 12;
 
-/// Checks the description's leg count and platform fields, and gives the platform frame at the
-/// reference configuration (ground frame).
-fn platform_frame(d: &Description) -> Result<Displacement, ManipulatorError> {
-    if d.legs.is_empty() {
-        return Err(
-            DescriptionError::new("legs", "no leg: a manipulator needs at least one").into(),
-        );
+/// The most legs a `/2` description may have (docs/limits.md): legs there may be single joints
+/// between bodies, so the cost is bounded by [`MAX_JOINTS`] rather than by the legs.
+pub const MAX_LEGS_BETWEEN_BODIES: usize = 24;
+
+/// The most primitive joints a `/2` description may have in all (docs/limits.md): those of
+/// [`MAX_LEGS`] legs of six joints, the largest `/1` description.
+pub const MAX_JOINTS: usize = 72;
+
+/// Which format's field names an error uses: a `/1` description is built as its `/2` form, but
+/// its errors name the fields the user wrote (`platform.position`, `legs[0].base`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Fields {
+    V1,
+    V2,
+}
+
+impl Fields {
+    /// The field of moving body `k` (0-based in `bodies`).
+    fn body(self, k: usize, f: &str) -> String {
+        match self {
+            Fields::V1 => format!("platform.{f}"),
+            Fields::V2 => format!("bodies[{k}].{f}"),
+        }
     }
-    if d.legs.len() > MAX_LEGS {
-        return Err(DescriptionError::new(
-            "legs",
-            format!(
-                "{} legs: at most {MAX_LEGS} (docs/limits.md; the analysis grows with the cube of the number of joints)",
-                d.legs.len()
-            ),
-        )
-        .into());
+
+    /// The names of a leg's first and last points.
+    fn ends(self) -> (&'static str, &'static str) {
+        match self {
+            Fields::V1 => ("base", "platform"),
+            Fields::V2 => ("first", "last"),
+        }
     }
-    let angle = d.units.angle;
-    finite(&d.platform.position, "platform.position")?;
-    finite(&d.platform.orientation, "platform.orientation")?;
-    finite(&d.platform.point, "platform.point")?;
-    let rotation = Rotation3::from_scaled_axis(
-        Vector3::from(d.platform.orientation).map(|a| angle.to_radians(a)),
-    );
-    Ok(crate::spatial::displacement(
-        rotation,
-        Vector3::from(d.platform.position),
-    ))
+}
+
+/// The bodies of a description, checked: their names (the ground first, then the moving bodies
+/// in order: the mechanism's first bodies), reference frames (identity for the ground), each
+/// leg's two bodies, and the end-effector (an index into the moving bodies).
+struct Layout {
+    names: Vec<String>,
+    frames: Vec<Displacement>,
+    ends: Vec<(usize, usize)>,
+    end_effector: usize,
+}
+
+impl Layout {
+    fn new(d: &MultibodyDescription, fields: Fields) -> Result<Self, ManipulatorError> {
+        let err = |field: String, message: String| -> ManipulatorError {
+            DescriptionError::new(field, message).into()
+        };
+        if d.legs.is_empty() {
+            return Err(err(
+                "legs".into(),
+                "no leg: a manipulator needs at least one".into(),
+            ));
+        }
+        match fields {
+            Fields::V1 if d.legs.len() > MAX_LEGS => {
+                return Err(err(
+                    "legs".into(),
+                    format!(
+                        "{} legs: at most {MAX_LEGS} (docs/limits.md; the analysis grows with the cube of the number of joints)",
+                        d.legs.len()
+                    ),
+                ));
+            }
+            Fields::V2 if d.legs.len() > MAX_LEGS_BETWEEN_BODIES => {
+                return Err(err(
+                    "legs".into(),
+                    format!(
+                        "{} legs: at most {MAX_LEGS_BETWEEN_BODIES} (docs/limits.md)",
+                        d.legs.len()
+                    ),
+                ));
+            }
+            _ => {}
+        }
+        if d.bodies.is_empty() {
+            return Err(err(
+                "bodies".into(),
+                "no moving body: a manipulator needs at least one".into(),
+            ));
+        }
+        if d.bodies.len() > MAX_BODIES {
+            return Err(err(
+                "bodies".into(),
+                format!(
+                    "{} moving bodies: at most {MAX_BODIES} (docs/limits.md)",
+                    d.bodies.len()
+                ),
+            ));
+        }
+        if d.ground.trim().is_empty() {
+            return Err(err("ground".into(), "an empty name".into()));
+        }
+        let mut names = vec![d.ground.clone()];
+        let mut frames = vec![Displacement::identity()];
+        let angle = d.units.angle;
+        for (k, b) in d.bodies.iter().enumerate() {
+            let field = |f: &str| fields.body(k, f);
+            if b.name.trim().is_empty() {
+                return Err(err(field("name"), "an empty name".into()));
+            }
+            if b.name == d.ground {
+                return Err(err(
+                    field("name"),
+                    format!(
+                        "{:?} is the ground's name; every body needs its own",
+                        b.name
+                    ),
+                ));
+            }
+            if let Some(j) = d.bodies[..k].iter().position(|o| o.name == b.name) {
+                return Err(err(
+                    field("name"),
+                    format!(
+                        "{:?} names bodies[{j}] too; every body needs its own name",
+                        b.name
+                    ),
+                ));
+            }
+            finite(&b.position, &field("position"))?;
+            finite(&b.orientation, &field("orientation"))?;
+            finite(&b.point, &field("point"))?;
+            let rotation = Rotation3::from_scaled_axis(
+                Vector3::from(b.orientation).map(|a| angle.to_radians(a)),
+            );
+            names.push(b.name.clone());
+            frames.push(crate::spatial::displacement(
+                rotation,
+                Vector3::from(b.position),
+            ));
+        }
+        let all = || names.join(", ");
+        let mut ends = Vec::with_capacity(d.legs.len());
+        for (i, leg) in d.legs.iter().enumerate() {
+            let find = |name: &str, f: &str| {
+                names.iter().position(|n| n == name).ok_or_else(|| {
+                    err(
+                        format!("legs[{i}].{f}"),
+                        format!("{name:?} is not a body (bodies: {})", all()),
+                    )
+                })
+            };
+            let (from, to) = (find(&leg.from, "from")?, find(&leg.to, "to")?);
+            if from == to {
+                return Err(err(
+                    format!("legs[{i}].to"),
+                    format!(
+                        "{:?} again: a leg joins two distinct bodies, and its from is {:?} too",
+                        leg.to, leg.from
+                    ),
+                ));
+            }
+            ends.push((from, to));
+        }
+        // Every moving body must be joined to the ground by a chain of legs.
+        let mut reached = vec![false; names.len()];
+        reached[0] = true;
+        let mut grew = true;
+        while grew {
+            grew = false;
+            for &(a, b) in &ends {
+                if reached[a] != reached[b] {
+                    reached[a] = true;
+                    reached[b] = true;
+                    grew = true;
+                }
+            }
+        }
+        if let Some(k) = reached.iter().position(|r| !r) {
+            return Err(err(
+                format!("bodies[{}]", k - 1),
+                format!(
+                    "{:?} is joined to the ground {:?} by no chain of legs; every moving body needs one",
+                    names[k], d.ground
+                ),
+            ));
+        }
+        let moving = || names[1..].join(", ");
+        let end_effector = match &d.end_effector {
+            Some(name) if *name == d.ground => {
+                return Err(err(
+                    "end_effector".into(),
+                    format!("{name:?} is the ground; name a moving body ({})", moving()),
+                ));
+            }
+            Some(name) => d
+                .bodies
+                .iter()
+                .position(|b| b.name == *name)
+                .ok_or_else(|| {
+                    err(
+                        "end_effector".into(),
+                        format!(
+                            "{name:?} is not a moving body (moving bodies: {})",
+                            moving()
+                        ),
+                    )
+                })?,
+            None if d.bodies.len() == 1 => 0,
+            None => {
+                return Err(err(
+                    "end_effector".into(),
+                    format!(
+                        "missing: name the end-effector among the {} moving bodies ({})",
+                        d.bodies.len(),
+                        moving()
+                    ),
+                ));
+            }
+        };
+        Ok(Layout {
+            names,
+            frames,
+            ends,
+            end_effector,
+        })
+    }
 }
 
 /// One leg's geometry at the reference configuration, checked: its chain, primitive joints,
@@ -392,24 +766,27 @@ struct LegGeometry {
 }
 
 impl LegGeometry {
-    /// Leg `i` of a description, its platform point placed by the platform `frame`, catalogue
-    /// chains resolved through `lookup`. Errors name the field (`legs[i].axes[2]`).
+    /// Leg `i` of a description, its first point placed by the frame of its `from` body and
+    /// its last point by that of its `to` body (`frames`), catalogue chains resolved through
+    /// `lookup`. Errors name the field (`legs[i].axes[2]`) as the format `fields` calls it.
     fn new(
         i: usize,
-        spec: &file::LegSpec,
-        frame: &Displacement,
+        spec: &file::LegBetween,
+        frames: (&Displacement, &Displacement),
         lookup: &dyn ChainLookup,
+        fields: Fields,
     ) -> Result<Self, ManipulatorError> {
         let field = |f: &str| format!("legs[{i}].{f}");
-        finite(&spec.base, &field("base"))?;
-        finite(&spec.platform, &field("platform"))?;
+        let (first, last) = fields.ends();
+        finite(&spec.first, &field(first))?;
+        finite(&spec.last, &field(last))?;
         let (chain, entry_axes) = leg_chain(&spec.chain, spec.axes.is_none(), lookup)
             .map_err(|m| DescriptionError::new(field("chain"), m))?;
         let kinds: Vec<Primitive> = chain.primitives().map(|(p, _)| p).collect();
-        let base = Vector3::from(spec.base);
-        let end = frame.transform_point(&Point3::from(spec.platform)).coords;
-        let points = leg_points(&chain, spec, &base, &end, &field)?;
-        let axes = leg_axes(&chain, spec, entry_axes, &base, &end, &field)?;
+        let base = frames.0.transform_point(&Point3::from(spec.first)).coords;
+        let end = frames.1.transform_point(&Point3::from(spec.last)).coords;
+        let points = leg_points(&chain, spec, (&base, &end), &field, fields)?;
+        let axes = leg_axes(&chain, spec, entry_axes, (&base, &end), &field, fields)?;
         check_joint_axes(&chain, &axes)
             .map_err(|f| DescriptionError::new(field(&format!("axes[{}]", f.at)), f.why))?;
         leg::check_parallel_marks(&chain, &axes).map_err(|f| {
@@ -427,15 +804,15 @@ impl LegGeometry {
     }
 }
 
-/// One point per joint letter of a leg from `base` to `end`: the description's points between
-/// the first and the last, or points evenly spaced on the segment. A one-joint leg must have
-/// its base and platform points at the same place.
+/// One point per joint letter of a leg from `base` to `end` (its first and last points in the
+/// ground frame): the description's points between the first and the last, or points evenly
+/// spaced on the segment. A one-joint leg must have its two points at the same place.
 fn leg_points(
     chain: &Chain,
-    spec: &file::LegSpec,
-    base: &Vector3<f64>,
-    end: &Vector3<f64>,
+    spec: &file::LegBetween,
+    (base, end): (&Vector3<f64>, &Vector3<f64>),
     field: &dyn Fn(&str) -> String,
+    fields: Fields,
 ) -> Result<Vec<Vector3<f64>>, ManipulatorError> {
     let letters = chain.joints().len();
     let points: Vec<Vector3<f64>> = match &spec.points {
@@ -475,11 +852,18 @@ fn leg_points(
             .collect(),
     };
     if letters == 1 && (end - base).norm() > 1e-9 * (1.0 + base.norm()) {
-        return Err(DescriptionError::new(
-            field("platform"),
-            format!("the leg {chain} has one joint, so it does not reach the platform point unless base and platform are the same point"),
-        )
-        .into());
+        let message = match fields {
+            Fields::V1 => format!(
+                "the leg {chain} has one joint, so it does not reach the platform point unless base and platform are the same point"
+            ),
+            Fields::V2 => format!(
+                "the leg {chain} has one joint, so its first point (in the frame of {:?}) and its last (in the frame of {:?}) must be the same point at the reference configuration; they are {:.3e} apart",
+                spec.from,
+                spec.to,
+                (end - base).norm()
+            ),
+        };
+        return Err(DescriptionError::new(field(fields.ends().1), message).into());
     }
     Ok(points)
 }
@@ -488,11 +872,11 @@ fn leg_points(
 /// read in the leg frame from `base` to `end` ([`build::leg_frame`]).
 fn leg_axes(
     chain: &Chain,
-    spec: &file::LegSpec,
+    spec: &file::LegBetween,
     entry_axes: Option<String>,
-    base: &Vector3<f64>,
-    end: &Vector3<f64>,
+    (base, end): (&Vector3<f64>, &Vector3<f64>),
     field: &dyn Fn(&str) -> String,
+    fields: Fields,
 ) -> Result<Vec<Vector3<f64>>, ManipulatorError> {
     let primitives = chain.primitives().count();
     let along = end - base;
@@ -513,7 +897,7 @@ fn leg_axes(
                 .iter()
                 .enumerate()
                 .map(|(k, a)| {
-                    axis_vector(a, &along)
+                    axis_vector(a, &along, fields)
                         .map_err(|m| DescriptionError::new(field(&format!("axes[{k}]")), m))
                 })
                 .collect::<Result<_, _>>()?)
@@ -544,10 +928,10 @@ impl MechanismBuilder {
     /// The ground body.
     const GROUND: usize = 0;
 
-    /// The ground and the platform, no joint yet.
-    fn new() -> Self {
+    /// The named bodies (the ground first), no joint yet.
+    fn new(names: &[String]) -> Self {
         MechanismBuilder {
-            bodies: vec!["ground".into(), "platform".into()],
+            bodies: names.to_vec(),
             joints: Vec::new(),
         }
     }
@@ -626,12 +1010,15 @@ pub(crate) fn leg_chain(
     Ok((chain, axes))
 }
 
-fn axis_vector(a: &AxisSpec, along: &Vector3<f64>) -> Result<Vector3<f64>, String> {
+fn axis_vector(a: &AxisSpec, along: &Vector3<f64>, fields: Fields) -> Result<Vector3<f64>, String> {
     let v = match a {
         AxisSpec::Vector(v) => Vector3::from(*v),
         AxisSpec::Named(name) if name == "leg" => {
             if along.norm() < 1e-12 {
-                return Err("'leg' needs the base and platform points apart".into());
+                return Err(match fields {
+                    Fields::V1 => "'leg' needs the base and platform points apart".into(),
+                    Fields::V2 => "'leg' needs the first and last points apart".into(),
+                });
             }
             *along
         }

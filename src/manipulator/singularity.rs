@@ -50,6 +50,9 @@ pub struct GenericRanks {
     pub constraint: usize,
     /// The largest rank of each leg's joint twists.
     pub legs: Vec<usize>,
+    /// The fewest independent rates the free inputs have with the end-effector held
+    /// ([`Analysis::inputs_with_end_effector_held`]).
+    pub inputs_with_end_effector_held: usize,
 }
 
 /// Jacobians, mobility and singularities of a manipulator at one configuration.
@@ -77,6 +80,20 @@ pub struct Analysis {
     pub leg_ranks: Vec<Rank>,
     /// The ranks at generic configurations.
     pub generic: GenericRanks,
+    /// Whether `J_D`, `J_I` are paper 000's leg-wrench Jacobians (every leg from the ground to
+    /// the end-effector, [`Manipulator::has_leg_wrench_jacobians`]). When false, `jacobians`
+    /// has no rows, and `jd_rank`, `constraint_rank` and `platform_dof` come from the
+    /// loop-closure Jacobian ([`Manipulator::platform_twists`]): `jd_rank` is six minus the
+    /// end-effector's dof with every input held, `constraint_rank` six minus its dof with the
+    /// `locked` inputs held.
+    pub leg_wrench_jacobians: bool,
+    /// The independent rates the free inputs can have with the end-effector held still (from
+    /// the loop-closure Jacobian): more than at generic configurations is an inverse
+    /// singularity.
+    pub inputs_with_end_effector_held: usize,
+    /// Each moving body's local dof with the `locked` inputs held (the dimension of its twist
+    /// space), in the order of [`Manipulator::bodies`].
+    pub body_dof: Vec<usize>,
     /// Singularities found.
     pub singularities: Vec<Singularity>,
 }
@@ -108,8 +125,7 @@ impl Manipulator {
         let jacobians = self.jacobians(&q, locked);
         let closure = m.mobility(&q, &mask);
         let (mobility, closure_rank) = (closure.dof, closure.closure_rank);
-        let jd_rank = self.wrench_rank(&jacobians.jd, &jacobians.point);
-        let (_, constraint_rank) = self.twists_of(&jacobians);
+        let (jd_rank, constraint_rank) = self.output_ranks(&q, locked, &jacobians);
         let platform_dof = 6 - constraint_rank.rank;
         let screws = m.joint_screws(&q);
         let leg_ranks: Vec<Rank> = self
@@ -124,9 +140,33 @@ impl Manipulator {
             })
             .collect();
         let generic = self.generic_ranks(&q, locked, settings)?;
-        let singularities =
+        let inputs_with_end_effector_held = self.inputs_with_end_effector_held(&q, locked);
+        let mut singularities =
             self.singularities(&jacobians, &leg_ranks, &jd_rank, &constraint_rank, &generic);
+        if !self.has_leg_wrench_jacobians()
+            && inputs_with_end_effector_held > generic.inputs_with_end_effector_held
+        {
+            // Without leg wrenches, an inverse singularity is seen on the loop closure: inputs
+            // that move while the end-effector stays, more of them than generically.
+            singularities.insert(
+                0,
+                Singularity {
+                    kind: SingularityKind::Inverse,
+                    detail: format!(
+                        "with the end-effector held, the free inputs keep {inputs_with_end_effector_held} independent rate{} here, {} at generic configurations (loop-closure Jacobian)",
+                        if inputs_with_end_effector_held == 1 { "" } else { "s" },
+                        generic.inputs_with_end_effector_held
+                    ),
+                },
+            );
+        }
+        let body_dof = (0..self.bodies.len())
+            .map(|b| self.body_twists(b, &q, locked).1)
+            .collect();
         Ok(Analysis {
+            leg_wrench_jacobians: self.has_leg_wrench_jacobians(),
+            inputs_with_end_effector_held,
+            body_dof,
             locked: locked.to_vec(),
             q,
             jacobians,
@@ -165,11 +205,13 @@ impl Manipulator {
         let mut jd = 0;
         let mut legs = vec![0; self.legs.len()];
         let mut constraint_counts = [0usize; 7];
+        let mut held_inputs = usize::MAX;
         for sample in &assemblies {
             let j = self.jacobians(sample, locked);
-            jd = jd.max(self.wrench_rank(&j.jd, &j.point).rank);
-            let (_, c) = self.twists_of(&j);
+            let (d, c) = self.output_ranks(sample, locked, &j);
+            jd = jd.max(d.rank);
             constraint_counts[c.rank] += 1;
+            held_inputs = held_inputs.min(self.inputs_with_end_effector_held(sample, locked));
             for (g, &r) in legs.iter_mut().zip(&j.leg_ranks) {
                 *g = (*g).max(r);
             }
@@ -184,7 +226,23 @@ impl Manipulator {
             jd,
             constraint,
             legs,
+            inputs_with_end_effector_held: held_inputs,
         })
+    }
+
+    /// How many independent rates the free inputs have at `q` with the `locked` inputs and the
+    /// end-effector held ([`crate::mechanism::Mechanism::joint_freedom_with_body_held`]).
+    fn inputs_with_end_effector_held(&self, q: &[f64], locked: &[usize]) -> usize {
+        let joints: Vec<usize> = (0..self.actuators.len())
+            .filter(|a| !locked.contains(a))
+            .map(|a| self.actuators[a].joint)
+            .collect();
+        self.mechanism.joint_freedom_with_body_held(
+            self.platform,
+            q,
+            &self.lock_mask(locked),
+            &joints,
+        )
     }
 
     /// The singularities at a configuration, from its ranks against the generic ones.
@@ -238,24 +296,40 @@ impl Manipulator {
                 ),
             });
         }
+        let legs = self.has_leg_wrench_jacobians();
         if generic.jd < 6 {
             out.push(Singularity {
                 kind: SingularityKind::Direct,
-                detail: format!(
-                    "the held inputs and constraints never fix the platform: J_D of rank {} at every generic configuration (too few inputs, or an architecture singularity)",
-                    generic.jd
-                ),
+                detail: if legs {
+                    format!(
+                        "the held inputs and constraints never fix the platform: J_D of rank {} at every generic configuration (too few inputs, or an architecture singularity)",
+                        generic.jd
+                    )
+                } else {
+                    format!(
+                        "the held inputs never fix the end-effector: with every input held it keeps {} dof at every generic configuration (loop-closure Jacobian; too few inputs, or an architecture singularity)",
+                        6 - generic.jd
+                    )
+                },
             });
         }
         if jd_rank.rank < generic.jd {
             out.push(Singularity {
                 kind: SingularityKind::Direct,
-                detail: format!(
-                    "J_D of rank {} here, {} at generic configurations ({})",
-                    jd_rank.rank,
-                    generic.jd,
-                    rank_text(jd_rank)
-                ),
+                detail: if legs {
+                    format!(
+                        "J_D of rank {} here, {} at generic configurations ({})",
+                        jd_rank.rank,
+                        generic.jd,
+                        rank_text(jd_rank)
+                    )
+                } else {
+                    format!(
+                        "with every input held the end-effector keeps {} dof here, {} at generic configurations (loop-closure Jacobian)",
+                        6 - jd_rank.rank,
+                        6 - generic.jd
+                    )
+                },
             });
         }
         out

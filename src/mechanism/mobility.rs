@@ -97,3 +97,45 @@ impl Mechanism {
         linalg::span_basis_scaled(&(jf * rates), MOBILITY_TOLERANCE, Some(norm.max(1.0)))
     }
 }
+
+impl Mechanism {
+    /// How many independent rates the `joints` can have at `q` with the `locked` joints held and
+    /// `body` held still: the rank of their rates over the joint rates that keep every loop
+    /// closed and give `body` no twist (dimensionless, [`MOBILITY_TOLERANCE`]). For a
+    /// manipulator's inputs and its end-effector, a rank above the generic one is an inverse
+    /// (serial) singularity: inputs that move while the end-effector stays.
+    #[must_use]
+    pub fn joint_freedom_with_body_held(
+        &self,
+        body: usize,
+        q: &[f64],
+        locked: &[bool],
+        joints: &[usize],
+    ) -> usize {
+        let screws = self.joint_screws(q);
+        let free = self.free(locked);
+        let c = self.dimensionless(&self.closure_jacobian(&screws));
+        let b = self.dimensionless(&self.body_jacobian(body, &screws));
+        let rows = c.nrows() + 6;
+        let a = DMatrix::from_fn(rows, free.len(), |r, k| {
+            if r < c.nrows() {
+                c[(r, free[k])]
+            } else {
+                b[(r - c.nrows(), free[k])]
+            }
+        });
+        let (rates, _) = linalg::nullspace(&a, MOBILITY_TOLERANCE);
+        let picked: Vec<usize> = joints
+            .iter()
+            .filter_map(|j| free.iter().position(|f| f == j))
+            .collect();
+        if picked.is_empty() || rates.ncols() == 0 {
+            return 0;
+        }
+        let sub = DMatrix::from_fn(picked.len(), rates.ncols(), |r, k| rates[(picked[r], k)]);
+        // Rows of an orthonormal basis: the scale is 1.
+        linalg::span_basis_scaled(&sub, MOBILITY_TOLERANCE, Some(1.0))
+            .1
+            .rank
+    }
+}
