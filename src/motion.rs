@@ -410,6 +410,20 @@ impl FromStr for PatternName {
     }
 }
 
+/// A name equals its text form (`X(z)`, `2T3R`).
+impl PartialEq<str> for PatternName {
+    fn eq(&self, other: &str) -> bool {
+        other.parse::<PatternName>().is_ok_and(|n| n == *self)
+    }
+}
+
+/// A name equals its text form (`X(z)`, `2T3R`).
+impl PartialEq<&str> for PatternName {
+    fn eq(&self, other: &&str) -> bool {
+        self == *other
+    }
+}
+
 impl PartialOrd for PatternName {
     fn partial_cmp(&self, other: &Self) -> Option<std::cmp::Ordering> {
         Some(self.cmp(other))

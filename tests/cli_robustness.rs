@@ -300,7 +300,7 @@ fn a_file_build_writes_always_analyses() {
     for locked in [vec![], vec![0], vec![1]] {
         let mode = m.mode(&locked, &settings);
         assert!(mode.error.is_none(), "{locked:?}: {:?}", mode.error);
-        assert_ne!(mode.pattern, "?", "{locked:?}");
+        assert_ne!(mode.pattern_text(), "?", "{locked:?}");
     }
 }
 

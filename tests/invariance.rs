@@ -99,7 +99,7 @@ fn answers(m: &Manipulator, k: f64) -> Answers {
                 (
                     mode.lock_text.clone(),
                     mode.dof,
-                    format!("{} {parameters}", mode.pattern),
+                    format!("{} {parameters}", mode.pattern_text()),
                 )
             })
             .collect(),
@@ -182,7 +182,7 @@ fn the_multioperation_table_is_the_same_for_fifty_seeds() {
             modes
                 .modes
                 .iter()
-                .map(|mode| format!("{} {} {}", mode.lock_text, mode.dof, mode.pattern))
+                .map(|mode| format!("{} {} {}", mode.lock_text, mode.dof, mode.pattern_text()))
                 .collect::<Vec<_>>()
         };
         let first = table(0);

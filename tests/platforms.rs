@@ -78,7 +78,7 @@ fn a_three_rps_with_a_split_platform_has_four_dof() {
     assert!(
         a.singularities
             .iter()
-            .any(|s| s.detail.contains("never fix the end-effector"))
+            .any(|s| s.detail().contains("never fix the end-effector"))
     );
 }
 
@@ -121,7 +121,7 @@ fn summary(
         a.leg_ranks.iter().map(|r| r.rank).collect(),
         format!("{}", a.jacobians.jd),
         format!("{}", a.jacobians.ji),
-        mode.pattern,
+        mode.pattern_text(),
     )
 }
 

@@ -4,8 +4,8 @@ use super::{CliError, json};
 use indicatif::{ProgressBar, ProgressStyle};
 use kinsyn::manipulator::build::{BuildField, BuildSpec, build};
 use kinsyn::manipulator::{
-    Analysis, Manipulator, ManipulatorError, Mode, Modes, PatternModes, PositionRequest, RowKind,
-    file, rank_text,
+    Analysis, ContinuationFailure, Manipulator, ManipulatorError, Mode, Modes, PatternModes,
+    PositionError, PositionRequest, RowKind, file, rank_text,
 };
 use kinsyn::mechanism::SampleSettings;
 use kinsyn::motion::MIN_SEPARATION;
@@ -506,7 +506,7 @@ fn mode_detail(mode: &Mode) -> String {
     let _ = writeln!(
         s,
         "pattern: {} ({kind}{})",
-        mode.pattern,
+        mode.pattern_text(),
         mode.parameters
             .as_ref()
             .map(|p| format!("; {p}"))
@@ -547,7 +547,17 @@ pub fn configuration_at_pose(
     };
     m.solve_position(&m.reference(), &request)
         .map(|p| p.q)
-        .map_err(|e| CliError::Input(format!("{option} {text:?}: {e}")))
+        .map_err(|e| CliError::Input(format!("{option} {text:?}: {}", position_error(&e))))
+}
+
+/// A position error in words, with the option that helps when the start is too far.
+fn position_error(e: &ManipulatorError) -> String {
+    match e {
+        ManipulatorError::Position(PositionError::NotReached(
+            ContinuationFailure::TooManySteps { .. },
+        )) => format!("{e} (analyze --from)"),
+        _ => e.to_string(),
+    }
 }
 
 /// Where `kinsyn analyze` puts the manipulator: a start (the reference, or `--from`), then the
@@ -629,7 +639,7 @@ pub fn analyze(
             .collect();
         let p = m
             .solve_position(&start, &request)
-            .map_err(|e| CliError::Input(format!("{}: {e}", asked.join(" "))))?;
+            .map_err(|e| CliError::Input(format!("{}: {}", asked.join(" "), position_error(&e))))?;
         (p.q, p.steps, p.continuous)
     };
     let reached = Reached {
@@ -974,7 +984,7 @@ fn analysis_text(m: &Manipulator, a: &Analysis, reached: &Reached) -> String {
         let _ = writeln!(s, "no singularity");
     }
     for sing in &a.singularities {
-        let _ = writeln!(s, "singularity ({:?}): {}", sing.kind, sing.detail);
+        let _ = writeln!(s, "singularity ({:?}): {}", sing.kind, sing.detail());
     }
     s
 }

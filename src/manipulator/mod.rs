@@ -21,14 +21,18 @@ pub mod leg;
 pub mod lookup;
 mod modes;
 mod position;
+mod request;
 mod singularity;
 
 pub use jacobian::{Jacobians, RowKind, WrenchRow};
 pub use leg::{LegCheck, LegWarning, LegWarningKind};
 pub use lookup::{CatalogueChain, ChainLookup, CommittedChains};
 pub use modes::{MAX_INPUTS, Mode, Modes, PatternModes};
-pub use position::{PlatformGoal, Position, PositionRequest};
-pub use singularity::{Analysis, GenericRanks, Singularity, SingularityKind, rank_text};
+pub use position::{CONTINUATION_TRIES, PlatformGoal, Position, PositionRequest};
+pub use request::{ContinuationFailure, PositionError, RequestError};
+pub use singularity::{
+    Analysis, GenericRanks, Singularity, SingularityCause, SingularityKind, rank_text,
+};
 
 use crate::chain::Displacement;
 use crate::mechanism::{JointSpec, Mechanism, MechanismError};
@@ -46,9 +50,12 @@ pub enum ManipulatorError {
     /// The mechanism could not be built or assembled.
     #[error("{0}")]
     Mechanism(#[from] MechanismError),
-    /// A pose that the manipulator cannot reach.
+    /// A position that the manipulator cannot reach.
     #[error("{0}")]
-    Pose(String),
+    Position(#[from] PositionError),
+    /// A request naming what the manipulator does not have, or a value that is not one.
+    #[error("{0}")]
+    Request(#[from] RequestError),
 }
 
 /// One leg of a manipulator.
@@ -295,15 +302,14 @@ impl Manipulator {
     ///
     /// # Errors
     /// A name that is not a moving body; the message lists them.
-    pub fn with_end_effector(&self, name: &str) -> Result<Self, String> {
-        let k = self.body_named(name).ok_or_else(|| {
-            let names: Vec<&str> = self.bodies.iter().map(|b| b.name.as_str()).collect();
-            format!(
-                "{name:?} is not a moving body of {} (moving bodies: {})",
-                self.name,
-                names.join(", ")
-            )
-        })?;
+    pub fn with_end_effector(&self, name: &str) -> Result<Self, RequestError> {
+        let k = self
+            .body_named(name)
+            .ok_or_else(|| RequestError::UnknownBody {
+                name: name.to_string(),
+                manipulator: self.name.clone(),
+                known: self.bodies.iter().map(|b| b.name.clone()).collect(),
+            })?;
         let mut copy = self.clone();
         copy.end_effector = k;
         copy.platform = self.bodies[k].body;
@@ -445,7 +451,7 @@ impl Manipulator {
     ///
     /// # Errors
     /// A label that names no actuator.
-    pub fn parse_locks(&self, text: &str) -> Result<Vec<usize>, String> {
+    pub fn parse_locks(&self, text: &str) -> Result<Vec<usize>, RequestError> {
         let mut out = Vec::new();
         for label in text
             .split([',', ' '])
@@ -464,17 +470,14 @@ impl Manipulator {
     ///
     /// # Errors
     /// A label that names no actuator; the message lists the actuators.
-    pub fn actuator_named(&self, label: &str) -> Result<usize, String> {
+    pub fn actuator_named(&self, label: &str) -> Result<usize, RequestError> {
         self.actuators
             .iter()
             .position(|a| a.label().eq_ignore_ascii_case(label))
-            .ok_or_else(|| {
-                let all: Vec<String> = self.actuators.iter().map(Actuator::label).collect();
-                format!(
-                    "{label:?} is not an actuator of {} (actuators: {})",
-                    self.name,
-                    all.join(" ")
-                )
+            .ok_or_else(|| RequestError::UnknownActuator {
+                label: label.to_string(),
+                manipulator: self.name.clone(),
+                known: self.actuators.iter().map(Actuator::label).collect(),
             })
     }
 

@@ -15,7 +15,7 @@
 
 use super::Manipulator;
 use crate::mechanism::{SampleSettings, rotation_log};
-use crate::motion::{Classification, Group, GroupKind, Pattern};
+use crate::motion::{Classification, Group, GroupKind, Pattern, PatternName};
 use itertools::Itertools;
 use nalgebra::Vector3;
 use rayon::prelude::*;
@@ -31,9 +31,10 @@ pub struct Mode {
     pub lock_text: String,
     /// The platform's degrees of freedom.
     pub dof: usize,
-    /// The pattern's text form (`X(z)`, `1T2R`, ...), or `?` when the motion could not be
-    /// sampled.
-    pub pattern: String,
+    /// The pattern's name (`X(z)`, `1T2R`, ...), `None` when the motion could not be sampled
+    /// (written `?` in JSON).
+    #[serde(serialize_with = "name_or_unknown")]
+    pub pattern: Option<PatternName>,
     /// Whether the pattern is one of the 12 displacement groups.
     pub group: bool,
     /// The group's parameters in words, in the file's length unit: the axis point of R, H and
@@ -49,12 +50,22 @@ pub struct Mode {
     pub error: Option<String>,
 }
 
+impl Mode {
+    /// The pattern's name as text, `?` when the motion could not be sampled.
+    #[must_use]
+    pub fn pattern_text(&self) -> String {
+        self.pattern
+            .as_ref()
+            .map_or_else(|| "?".to_string(), ToString::to_string)
+    }
+}
+
 /// A pattern reached (a displacement subgroup with its parameters, or an `nTmR` pattern), with
 /// the minimal lock sets that reach it.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct PatternModes {
-    /// The pattern's text form.
-    pub pattern: String,
+    /// The pattern's name.
+    pub pattern: PatternName,
     /// The group's parameters in words (see [`Mode::parameters`]).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub parameters: Option<String>,
@@ -156,7 +167,7 @@ impl Manipulator {
                 locked: locked.to_vec(),
                 lock_text,
                 dof: c.dof,
-                pattern: c.pattern.to_string(),
+                pattern: Some(c.pattern.name()),
                 group: c.pattern.is_group(),
                 parameters: match &c.pattern {
                     Pattern::Group(g) => self.parameters(g),
@@ -169,7 +180,7 @@ impl Manipulator {
                 locked: locked.to_vec(),
                 lock_text,
                 dof: 0,
-                pattern: "?".into(),
+                pattern: None,
                 group: false,
                 parameters: None,
                 classification: None,
@@ -218,11 +229,11 @@ impl Manipulator {
     /// that the same subgroup reached by two lock sets is counted once whatever the unit.
     fn subgroup_key(&self, mode: &Mode) -> String {
         let Some(Pattern::Group(g)) = mode.classification.as_ref().map(|c| c.pattern) else {
-            return mode.pattern.clone();
+            return mode.pattern_text();
         };
         let m = &self.mechanism;
         let round = |x: f64| format!("{:.4}", (x * 1e4).round() / 1e4 + 0.0);
-        let mut key = mode.pattern.clone();
+        let mut key = mode.pattern_text();
         if let Some(p) = g.point {
             let d = (Vector3::from(p) - m.centre()) / m.scale();
             // An axis point: the one nearest the centre, so that any point of the axis gives it.
@@ -298,13 +309,13 @@ impl Manipulator {
     ///
     /// # Errors
     /// More than [`MAX_INPUTS`] inputs.
-    pub fn modes(&self, settings: &SampleSettings) -> Result<Modes, String> {
+    pub fn modes(&self, settings: &SampleSettings) -> Result<Modes, super::RequestError> {
         let n = self.actuators.len();
         if n > MAX_INPUTS {
-            return Err(format!(
-                "{} has {n} inputs; at most {MAX_INPUTS} can have all their lock subsets enumerated",
-                self.name
-            ));
+            return Err(super::RequestError::TooManyInputs {
+                manipulator: self.name.clone(),
+                inputs: n,
+            });
         }
         Ok(self.modes_from(&self.reference(), &self.lock_subsets(n), settings, &|| {}))
     }
@@ -381,8 +392,11 @@ impl Manipulator {
         let mut groups = Vec::new();
         let mut non_groups = Vec::new();
         for ((non_group, _), ms) in by_pattern {
+            let Some(pattern) = ms[0].pattern else {
+                continue; // unreachable: unsampled subsets are left out above
+            };
             let entry = PatternModes {
-                pattern: ms[0].pattern.clone(),
+                pattern,
                 parameters: ms[0].parameters.clone(),
                 dof: ms[0].dof,
                 subsets: ms.len(),
@@ -398,6 +412,17 @@ impl Manipulator {
             }
         }
         (groups, non_groups)
+    }
+}
+
+/// Writes a pattern name, or `?` for a motion that could not be sampled.
+fn name_or_unknown<S: serde::Serializer>(
+    name: &Option<PatternName>,
+    serializer: S,
+) -> Result<S::Ok, S::Error> {
+    match name {
+        Some(n) => n.serialize(serializer),
+        None => serializer.serialize_str("?"),
     }
 }
 

@@ -13,7 +13,7 @@
 //! steps reach straight from the start is returned and flagged as not continuous with it
 //! ([`Position::continuous`]).
 
-use super::{Manipulator, ManipulatorError};
+use super::{ContinuationFailure, Manipulator, ManipulatorError, PositionError, RequestError};
 use crate::chain::Displacement;
 use crate::mechanism::{Coordinate, Goal, compose, exp, inverse, log};
 use crate::screw::Twist;
@@ -78,7 +78,7 @@ const LARGEST_JOINT_STEP: f64 = 0.5;
 
 /// The most continuation steps tried (kept or halved) before the path is given up: values far
 /// from the start (a slider extended a thousand lengths) would otherwise take thousands.
-const CONTINUATION_TRIES: usize = 400;
+pub const CONTINUATION_TRIES: usize = 400;
 
 /// The smallest continuation step (as a fraction of the path) before the path is given up.
 const SMALLEST_STEP: f64 = 1.0 / 4096.0;
@@ -203,19 +203,15 @@ impl Manipulator {
                     dt = (dt * 2.0).min(1.0);
                     continue;
                 }
-                Err(_) if tries >= CONTINUATION_TRIES => format!(
-                    "the continuation from the start needs more than {CONTINUATION_TRIES} steps ({:.1}% of the way done): the values are far from the start; start nearer them (analyze --from)",
-                    100.0 * t
-                ),
+                Err(_) if tries >= CONTINUATION_TRIES => {
+                    ContinuationFailure::TooManySteps { done: t }
+                }
                 Err(e) => {
                     dt /= 2.0;
                     if dt >= SMALLEST_STEP {
                         continue;
                     }
-                    format!(
-                        "the continuation from the start stopped {:.1}% of the way, where {e}; the values lie beyond the workspace, or a singularity lies between",
-                        100.0 * t
-                    )
+                    ContinuationFailure::Stopped { done: t, why: e }
                 }
             };
             // The path cannot be followed: damped Newton steps straight from the start.
@@ -228,9 +224,7 @@ impl Manipulator {
                     continuous: false,
                 });
             }
-            return Err(ManipulatorError::Pose(format!(
-                "no assembly reached: {failure}"
-            )));
+            return Err(PositionError::NotReached(failure).into());
         }
         let (_, goal) = at(1.0);
         self.determined(&q, &mask, goal.as_ref())?;
@@ -254,12 +248,7 @@ impl Manipulator {
         }
         let undetermined = self.mechanism.freedom_left(self.platform, q, mask, goal);
         if undetermined > 0 {
-            return Err(ManipulatorError::Pose(format!(
-                "the values given leave the platform {undetermined} degree{} of freedom: give {undetermined} more input{} or platform coordinate{}",
-                if undetermined == 1 { "" } else { "s" },
-                if undetermined == 1 { "" } else { "s" },
-                if undetermined == 1 { "" } else { "s" },
-            )));
+            return Err(PositionError::Undetermined(undetermined).into());
         }
         Ok(())
     }
@@ -272,21 +261,22 @@ impl Manipulator {
     /// # Errors
     /// An item without `=`, a label that names no input, an input given twice, or a value that
     /// is not a finite number.
-    pub fn parse_inputs(&self, text: &str) -> Result<Vec<(usize, f64)>, String> {
+    pub fn parse_inputs(&self, text: &str) -> Result<Vec<(usize, f64)>, RequestError> {
         let mut out: Vec<(usize, f64)> = Vec::new();
         for item in text.split(',').map(str::trim).filter(|s| !s.is_empty()) {
             let Some((label, value)) = item.split_once('=') else {
-                return Err(format!(
-                    "{item:?} is not LABEL=VALUE (e.g. {}=0.1)",
-                    self.actuators
+                return Err(RequestError::NotLabelValue {
+                    item: item.to_string(),
+                    example: self
+                        .actuators
                         .first()
-                        .map_or_else(|| "P1.3".to_string(), super::Actuator::label)
-                ));
+                        .map_or_else(|| "P1.3".to_string(), super::Actuator::label),
+                });
             };
             let a = self.actuator_named(label.trim())?;
             let value = finite_number(value)?;
             if out.iter().any(|&(b, _)| b == a) {
-                return Err(format!("input {} given twice", self.actuators[a].label()));
+                return Err(RequestError::InputTwice(self.actuators[a].label()));
             }
             let value = match self.mechanism.joints()[self.actuators[a].joint].kind {
                 crate::notation::Primitive::R => self.units.angle.to_radians(value),
@@ -295,7 +285,7 @@ impl Manipulator {
             out.push((a, value));
         }
         if out.is_empty() {
-            return Err("no input value given (e.g. P1.3=0.1)".into());
+            return Err(RequestError::NoInput);
         }
         Ok(out)
     }
@@ -307,7 +297,7 @@ impl Manipulator {
     /// # Errors
     /// Not six numbers and not `name=value` items, an unknown or repeated name, or a value that
     /// is not a finite number.
-    pub fn parse_pose(&self, text: &str) -> Result<PlatformGoal, String> {
+    pub fn parse_pose(&self, text: &str) -> Result<PlatformGoal, RequestError> {
         let items: Vec<&str> = text.split(',').map(str::trim).collect();
         let angle = |c: Coordinate, v: f64| {
             if c.is_angle() {
@@ -320,13 +310,9 @@ impl Manipulator {
             let values = items
                 .iter()
                 .map(|v| finite_number(v))
-                .collect::<Result<Vec<f64>, String>>()?;
+                .collect::<Result<Vec<f64>, RequestError>>()?;
             if values.len() != 6 {
-                return Err(format!(
-                    "{} number{}: a whole pose is six numbers x,y,z,rx,ry,rz (or name some of them: z=1.1,rx=5)",
-                    values.len(),
-                    if values.len() == 1 { "" } else { "s" }
-                ));
+                return Err(RequestError::PoseCount(values.len()));
             }
             let named: Vec<(Coordinate, f64)> = Coordinate::ALL
                 .iter()
@@ -338,17 +324,15 @@ impl Manipulator {
         let mut values: Vec<(Coordinate, f64)> = Vec::new();
         for item in items.iter().filter(|s| !s.is_empty()) {
             let Some((name, value)) = item.split_once('=') else {
-                return Err(format!(
-                    "{item:?}: name every coordinate (x, y, z, rx, ry, rz), e.g. z=1.1"
-                ));
+                return Err(RequestError::UnnamedCoordinate((*item).to_string()));
             };
             let name = name.trim().to_ascii_lowercase();
             let c = Coordinate::ALL
                 .into_iter()
                 .find(|c| c.name() == name)
-                .ok_or_else(|| format!("{name:?} is not a coordinate: x, y, z, rx, ry or rz"))?;
+                .ok_or_else(|| RequestError::UnknownCoordinate(name.clone()))?;
             if values.iter().any(|&(d, _)| d == c) {
-                return Err(format!("{} given twice", c.name()));
+                return Err(RequestError::CoordinateTwice(c.name()));
             }
             values.push((c, angle(c, finite_number(value)?)));
         }
@@ -357,13 +341,10 @@ impl Manipulator {
 }
 
 /// A finite number, or a one-line error naming the text.
-fn finite_number(text: &str) -> Result<f64, String> {
+fn finite_number(text: &str) -> Result<f64, RequestError> {
     match text.trim().parse::<f64>() {
         Ok(x) if x.is_finite() && x.abs() <= super::LARGEST_COORDINATE => Ok(x),
-        Ok(x) if x.is_finite() => Err(format!(
-            "{x:e} is beyond ±{:e} (docs/limits.md)",
-            super::LARGEST_COORDINATE
-        )),
-        _ => Err(format!("{:?} is not a finite number", text.trim())),
+        Ok(x) if x.is_finite() => Err(RequestError::BeyondLimit(x)),
+        _ => Err(RequestError::NotANumber(text.trim().to_string())),
     }
 }

@@ -29,13 +29,120 @@ pub enum SingularityKind {
     Constraint,
 }
 
-/// A singularity found at a configuration.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+/// A singularity found at a configuration: its kind and what dropped, with the numbers. In
+/// JSON it is `{"kind", "detail"}`, the detail being the cause in words.
+#[derive(Debug, Clone, PartialEq)]
 pub struct Singularity {
     /// Which kind.
     pub kind: SingularityKind,
     /// What dropped, with the numbers.
-    pub detail: String,
+    pub cause: SingularityCause,
+}
+
+impl Singularity {
+    /// The cause in words (its [`Display`](std::fmt::Display)).
+    #[must_use]
+    pub fn detail(&self) -> String {
+        self.cause.to_string()
+    }
+}
+
+impl Serialize for Singularity {
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::SerializeStruct as _;
+        let mut st = serializer.serialize_struct("Singularity", 2)?;
+        st.serialize_field("kind", &self.kind)?;
+        st.serialize_field("detail", &self.detail())?;
+        st.end()
+    }
+}
+
+/// What makes a configuration singular, with the ranks here and at generic configurations.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum SingularityCause {
+    /// With the end-effector held the free inputs keep more independent rates than at generic
+    /// configurations (loop-closure Jacobian).
+    #[error(
+        "with the end-effector held, the free inputs keep {here} independent rate{s} here, {generic} at generic configurations (loop-closure Jacobian)",
+        s = if *here == 1 { "" } else { "s" }
+    )]
+    InputsFreeWithEndEffectorHeld {
+        /// Independent input rates here.
+        here: usize,
+        /// At generic configurations.
+        generic: usize,
+    },
+    /// An input's joint depends on the other joints of its leg: it has no effect on the
+    /// platform (an inverse singularity of the leg).
+    #[error(
+        "input {input} has no effect on the platform: its joint depends on the other joints of leg {leg} ({})",
+        rank_text(leg_rank)
+    )]
+    InputWithoutEffect {
+        /// The input's label.
+        input: String,
+        /// Its leg (1-based).
+        leg: usize,
+        /// The rank of the leg's joint twists here.
+        leg_rank: Rank,
+    },
+    /// A leg's joint twists lose rank.
+    #[error(
+        "leg {leg} ({chain}) has joint twists of rank {} here, {generic} at generic configurations ({})",
+        here.rank,
+        rank_text(here)
+    )]
+    LegRank {
+        /// The leg (1-based).
+        leg: usize,
+        /// Its chain.
+        chain: String,
+        /// The rank of its joint twists here.
+        here: Rank,
+        /// At generic configurations.
+        generic: usize,
+    },
+    /// The legs' constraint wrenches become dependent: the platform gains a motion.
+    #[error(
+        "constraint wrenches of rank {} here, {generic} at generic configurations: the platform gains {} dof ({})",
+        here.rank,
+        generic - here.rank,
+        rank_text(here)
+    )]
+    ConstraintRank {
+        /// The rank of the constraint rows here.
+        here: Rank,
+        /// At generic configurations.
+        generic: usize,
+    },
+    /// `J_D` (or, without leg-wrench Jacobians, the end-effector's freedom with every input
+    /// held) is deficient at every generic configuration: too few inputs, or an architecture
+    /// singularity.
+    #[error("{}", if *leg_wrenches {
+        format!("the held inputs and constraints never fix the platform: J_D of rank {generic} at every generic configuration (too few inputs, or an architecture singularity)")
+    } else {
+        format!("the held inputs never fix the end-effector: with every input held it keeps {} dof at every generic configuration (loop-closure Jacobian; too few inputs, or an architecture singularity)", 6 - generic)
+    })]
+    NeverFixed {
+        /// The generic rank of `J_D` (six minus the end-effector's freedom).
+        generic: usize,
+        /// Whether `J_D` is the leg-wrench Jacobian of paper 000 (else the loop-closure form).
+        leg_wrenches: bool,
+    },
+    /// `J_D` loses rank here: the platform moves with every input held.
+    #[error("{}", if *leg_wrenches {
+        format!("J_D of rank {} here, {generic} at generic configurations ({})", here.rank, rank_text(here))
+    } else {
+        format!("with every input held the end-effector keeps {} dof here, {} at generic configurations (loop-closure Jacobian)", 6 - here.rank, 6 - generic)
+    })]
+    JdRank {
+        /// The rank of `J_D` here.
+        here: Rank,
+        /// At generic configurations.
+        generic: usize,
+        /// Whether `J_D` is the leg-wrench Jacobian of paper 000 (else the loop-closure form).
+        leg_wrenches: bool,
+    },
 }
 
 /// The ranks of a manipulator at generic configurations: at random assemblies of the same
@@ -152,11 +259,10 @@ impl Manipulator {
                 0,
                 Singularity {
                     kind: SingularityKind::Inverse,
-                    detail: format!(
-                        "with the end-effector held, the free inputs keep {inputs_with_end_effector_held} independent rate{} here, {} at generic configurations (loop-closure Jacobian)",
-                        if inputs_with_end_effector_held == 1 { "" } else { "s" },
-                        generic.inputs_with_end_effector_held
-                    ),
+                    cause: SingularityCause::InputsFreeWithEndEffectorHeld {
+                        here: inputs_with_end_effector_held,
+                        generic: generic.inputs_with_end_effector_held,
+                    },
                 },
             );
         }
@@ -198,9 +304,7 @@ impl Manipulator {
             settings.seed,
         );
         if assemblies.is_empty() {
-            return Err(super::ManipulatorError::Pose(
-                "no random assembly around this configuration closes, so its generic ranks are unknown".into(),
-            ));
+            return Err(super::PositionError::NoGenericAssembly.into());
         }
         let mut jd = 0;
         let mut legs = vec![0; self.legs.len()];
@@ -260,12 +364,11 @@ impl Manipulator {
             if j.without_wrench.contains(&a) {
                 out.push(Singularity {
                     kind: SingularityKind::Inverse,
-                    detail: format!(
-                        "input {} has no effect on the platform: its joint depends on the other joints of leg {} ({})",
-                        act.label(),
-                        act.leg + 1,
-                        rank_text(&leg_ranks[act.leg])
-                    ),
+                    cause: SingularityCause::InputWithoutEffect {
+                        input: act.label(),
+                        leg: act.leg + 1,
+                        leg_rank: leg_ranks[act.leg].clone(),
+                    },
                 });
             }
         }
@@ -273,62 +376,41 @@ impl Manipulator {
             if here.rank < elsewhere {
                 out.push(Singularity {
                     kind: SingularityKind::Leg,
-                    detail: format!(
-                        "leg {} ({}) has joint twists of rank {} here, {} at generic configurations ({})",
-                        i + 1,
-                        self.legs[i].chain,
-                        here.rank,
-                        elsewhere,
-                        rank_text(here)
-                    ),
+                    cause: SingularityCause::LegRank {
+                        leg: i + 1,
+                        chain: self.legs[i].chain.to_string(),
+                        here: here.clone(),
+                        generic: elsewhere,
+                    },
                 });
             }
         }
         if constraint_rank.rank < generic.constraint {
             out.push(Singularity {
                 kind: SingularityKind::Constraint,
-                detail: format!(
-                    "constraint wrenches of rank {} here, {} at generic configurations: the platform gains {} dof ({})",
-                    constraint_rank.rank,
-                    generic.constraint,
-                    generic.constraint - constraint_rank.rank,
-                    rank_text(constraint_rank)
-                ),
+                cause: SingularityCause::ConstraintRank {
+                    here: constraint_rank.clone(),
+                    generic: generic.constraint,
+                },
             });
         }
         let legs = self.has_leg_wrench_jacobians();
         if generic.jd < 6 {
             out.push(Singularity {
                 kind: SingularityKind::Direct,
-                detail: if legs {
-                    format!(
-                        "the held inputs and constraints never fix the platform: J_D of rank {} at every generic configuration (too few inputs, or an architecture singularity)",
-                        generic.jd
-                    )
-                } else {
-                    format!(
-                        "the held inputs never fix the end-effector: with every input held it keeps {} dof at every generic configuration (loop-closure Jacobian; too few inputs, or an architecture singularity)",
-                        6 - generic.jd
-                    )
+                cause: SingularityCause::NeverFixed {
+                    generic: generic.jd,
+                    leg_wrenches: legs,
                 },
             });
         }
         if jd_rank.rank < generic.jd {
             out.push(Singularity {
                 kind: SingularityKind::Direct,
-                detail: if legs {
-                    format!(
-                        "J_D of rank {} here, {} at generic configurations ({})",
-                        jd_rank.rank,
-                        generic.jd,
-                        rank_text(jd_rank)
-                    )
-                } else {
-                    format!(
-                        "with every input held the end-effector keeps {} dof here, {} at generic configurations (loop-closure Jacobian)",
-                        6 - jd_rank.rank,
-                        6 - generic.jd
-                    )
+                cause: SingularityCause::JdRank {
+                    here: jd_rank.clone(),
+                    generic: generic.jd,
+                    leg_wrenches: legs,
                 },
             });
         }

@@ -1,0 +1,121 @@
+//! What a caller asks of a manipulator by name or in text — an actuator (`P1.3`), a moving body,
+//! input values (`P1.3=0.05`), a platform pose (`x,y,z,rx,ry,rz` or `z=1.1,rx=5`) — and why a
+//! request can be refused ([`RequestError`]), or a position not reached ([`PositionError`]).
+
+use super::position::CONTINUATION_TRIES;
+
+/// A request that names something the manipulator does not have, or a value that is not one.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum RequestError {
+    /// No actuator has this label.
+    #[error("{label:?} is not an actuator of {manipulator} (actuators: {})", known.join(" "))]
+    UnknownActuator {
+        /// The label asked for.
+        label: String,
+        /// The manipulator's name.
+        manipulator: String,
+        /// The labels of its actuators.
+        known: Vec<String>,
+    },
+    /// No moving body has this name.
+    #[error("{name:?} is not a moving body of {manipulator} (moving bodies: {})", known.join(", "))]
+    UnknownBody {
+        /// The name asked for.
+        name: String,
+        /// The manipulator's name.
+        manipulator: String,
+        /// The names of its moving bodies.
+        known: Vec<String>,
+    },
+    /// An input value item without `=`.
+    #[error("{item:?} is not LABEL=VALUE (e.g. {example}=0.1)")]
+    NotLabelValue {
+        /// The item.
+        item: String,
+        /// A label of this manipulator, for the example.
+        example: String,
+    },
+    /// The same input given two values.
+    #[error("input {0} given twice")]
+    InputTwice(String),
+    /// No input value at all.
+    #[error("no input value given (e.g. P1.3=0.1)")]
+    NoInput,
+    /// A pose given as plain numbers that are not six.
+    #[error(
+        "{0} number{s}: a whole pose is six numbers x,y,z,rx,ry,rz (or name some of them: z=1.1,rx=5)",
+        s = if *.0 == 1 { "" } else { "s" }
+    )]
+    PoseCount(usize),
+    /// A pose item without a name among named ones.
+    #[error("{0:?}: name every coordinate (x, y, z, rx, ry, rz), e.g. z=1.1")]
+    UnnamedCoordinate(String),
+    /// A name that is not one of x, y, z, rx, ry, rz.
+    #[error("{0:?} is not a coordinate: x, y, z, rx, ry or rz")]
+    UnknownCoordinate(String),
+    /// A coordinate given twice.
+    #[error("{0} given twice")]
+    CoordinateTwice(&'static str),
+    /// Text that is not a finite number.
+    #[error("{0:?} is not a finite number")]
+    NotANumber(String),
+    /// A number beyond the coordinates kinsyn computes with (docs/limits.md).
+    #[error("{0:e} is beyond ±{max:e} (docs/limits.md)", max = super::LARGEST_COORDINATE)]
+    BeyondLimit(f64),
+    /// More inputs than can have all their lock subsets enumerated.
+    #[error(
+        "{manipulator} has {inputs} inputs; at most {max} can have all their lock subsets enumerated",
+        max = super::MAX_INPUTS
+    )]
+    TooManyInputs {
+        /// The manipulator's name.
+        manipulator: String,
+        /// Its number of inputs.
+        inputs: usize,
+    },
+}
+
+/// Why a position (input values, a pose, or both) was not reached.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum PositionError {
+    /// Neither the continuation from the start nor Newton steps straight from it closed the
+    /// loops: the values lie beyond the workspace, or a singularity lies between.
+    #[error("no assembly reached: {0}")]
+    NotReached(ContinuationFailure),
+    /// The values given leave the platform free: it needs `0` more inputs or coordinates.
+    #[error(
+        "the values given leave the platform {0} degree{s} of freedom: give {0} more input{s} or platform coordinate{s}",
+        s = if *.0 == 1 { "" } else { "s" }
+    )]
+    Undetermined(usize),
+    /// No random assembly closes around the configuration, so its generic ranks are unknown.
+    #[error(
+        "no random assembly around this configuration closes, so its generic ranks are unknown"
+    )]
+    NoGenericAssembly,
+}
+
+/// Where a continuation stopped.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum ContinuationFailure {
+    /// It needed more than [`CONTINUATION_TRIES`] steps.
+    #[error(
+        "the continuation from the start needs more than {CONTINUATION_TRIES} steps ({:.1}% of the way done): the values are far from the start; start nearer them",
+        100.0 * .done
+    )]
+    TooManySteps {
+        /// The fraction of the path done.
+        done: f64,
+    },
+    /// A step could not be made smaller and still close the loops.
+    #[error(
+        "the continuation from the start stopped {:.1}% of the way, where {why}; the values lie beyond the workspace, or a singularity lies between",
+        100.0 * .done
+    )]
+    Stopped {
+        /// The fraction of the path done.
+        done: f64,
+        /// What failed at the last step.
+        why: String,
+    },
+}
