@@ -1,0 +1,347 @@
+//! The command line's grammar: subcommands, options and their help texts (clap derive). What
+//! each command does is in the sibling modules.
+
+use clap::{Args, Parser, Subcommand, ValueEnum};
+use std::path::PathBuf;
+
+/// Structural synthesis and kinematic analysis of parallel manipulators.
+///
+/// kinsyn enumerates the 6-dof serial chains of P and R joints of paper 000 (Ibarreche et al.,
+/// "Multioperation capacity of parallel manipulators basing on generic kinematic chain
+/// approach", §2), reads them in C/U/S letters with their parallel-axis groups, and compares
+/// the result row by row with the paper's printed Appendix.
+#[derive(Debug, Parser)]
+#[command(
+    name = "kinsyn",
+    version,
+    propagate_version = true,
+    subcommand_required = true,
+    arg_required_else_help = false
+)]
+#[command(
+    after_help = "Examples:\n  kinsyn catalogue summary\n  kinsyn catalogue list --family PPRRRR\n  kinsyn catalogue show T1-001\n  kinsyn catalogue show 'RaU(a,b)U(b,c)Rc'\n  kinsyn notation 'U(!,-)P!S'"
+)]
+pub(super) struct Cli {
+    #[command(subcommand)]
+    pub(super) command: Command,
+}
+
+#[derive(Debug, Subcommand)]
+pub(super) enum Command {
+    /// The catalogue of 6-dof leg chains (paper 000 §2, Tables 1–8).
+    #[command(subcommand, subcommand_required = true, arg_required_else_help = false)]
+    Catalogue(CatalogueCommand),
+    /// Find the verified chains that give a motion pattern, directly or by locking joints.
+    ///
+    /// Patterns: the 12 displacement groups E, T(u), R(u), H(u), T2(plane), C(u), G(plane), T3,
+    /// S, Y(u), X(u), D, with u one of x, y, z and plane one of xy, yz, xz (leave the parentheses
+    /// out for any direction), or a non-group pattern nTmR such as 3T1R. Directions are those of
+    /// the entry's reference configuration, where locked joints are held. Each hit lists its
+    /// minimal lock sets: joint positions in the entry's P/R word ('-' for none).
+    Query {
+        /// The pattern, e.g. T3, 'X(z)', 'G(xy)', S, 2T1R (quote parentheses in the shell).
+        #[arg(long)]
+        pattern: String,
+        /// Lock at most this many joints (0: the chain's own motion).
+        #[arg(long, default_value_t = 6)]
+        max_locks: usize,
+        /// Only this family: PPPRRR, PPRRRR, PRRRRR or RRRRRR.
+        #[arg(long)]
+        family: Option<String>,
+        /// Print JSON instead of text.
+        #[arg(long)]
+        json: bool,
+        #[command(flatten)]
+        reading: Reading,
+    },
+    /// Check a chain string and show what it means: letters, primitive joints, parallel
+    /// groups, actuated joints.
+    ///
+    /// Notation (docs/notation.md): letters P R C U S; a parallel group is a letter a, b, c
+    /// after the revolute it holds; '!' marks an actuated joint; C, U and S take one slot per
+    /// primitive joint in parentheses, e.g. U(a,-), S(-,-,b), C(!,-). 'Ca' marks the R of a C.
+    Notation {
+        /// The chain, e.g. 'RaU(a,b)U(b,c)Rc' or 'U(!,-)P!S' (quote it in the shell).
+        chain: String,
+        /// Print JSON instead of text.
+        #[arg(long)]
+        json: bool,
+    },
+    /// Multioperation capacity: the platform's dof and motion pattern for subsets of locked
+    /// inputs, then the displacement groups reached with their minimal lock sets.
+    ///
+    /// Each locked input is held at its value at the start configuration (the file's reference,
+    /// or --pose); the platform's finite motion is sampled from there by loop closure (Newton
+    /// steps along random compatible joint rates, seeded) and classified among the 12
+    /// displacement groups, or as nTmR when it is not a group (paper 000 §1, §5). Inputs are
+    /// labelled by kind, leg and joint: P1.3 is leg 1's third joint.
+    ///
+    /// The work is exponential in the number of inputs n: all the lock subsets are 2^n sampled
+    /// motions (64 for 6 inputs, 4096 for 12, 65536 for 16). One subset costs about 0.8 ms of
+    /// CPU (3-UPS) to 4 ms (6-UPS) with the default 3 samples, in proportion to --samples; the
+    /// subsets share the cores. --max-locks N samples Σ_{k≤N} C(n,k) subsets, --lock one;
+    /// more than --max-subsets are refused.
+    #[command(
+        after_help = "Examples:\n  kinsyn modes mechanisms/3-ups.json\n  kinsyn modes mechanisms/3-ups.json --lock R1.1,R2.1,R3.1\n  kinsyn modes mechanisms/6-ups.json --max-locks 2 --pose 0.05,0,1.1,0,5,10\n  kinsyn modes mechanisms/6-ups.json --json > modes.json"
+    )]
+    Modes {
+        /// A manipulator file (docs/mechanism-format.md), e.g. mechanisms/3-ups.json.
+        file: PathBuf,
+        /// The start configuration, in the forms of analyze --pose: x,y,z,rx,ry,rz (the platform
+        /// frame's origin and rotation vector, angles in the file's unit) or some coordinates by
+        /// name (z=1.1,rx=5), assembled with every input free; the locked inputs are held at
+        /// their values there. Default: the reference.
+        #[arg(long, allow_hyphen_values = true)]
+        pose: Option<String>,
+        /// Only the subsets with at most N inputs locked: Σ_{k≤N} C(n,k) of them.
+        #[arg(long, value_name = "N", conflicts_with = "lock")]
+        max_locks: Option<usize>,
+        /// Only this subset, printed in detail: labels as in analyze, e.g. 'R1.1,R2.1,R3.1'
+        /// ('-' for none).
+        #[arg(long, value_name = "SET", allow_hyphen_values = true)]
+        lock: Option<String>,
+        /// A moving body of a kinsyn-manipulator/2 file whose patterns to report instead of the
+        /// end-effector's.
+        #[arg(long, value_name = "NAME")]
+        body: Option<String>,
+        /// Refuse more lock subsets than this (each is a sampled motion of about 1–5 ms of CPU;
+        /// 4096 take about 16–20 s on a 6-UPS).
+        #[arg(long, value_name = "COUNT", default_value_t = super::manipulator::DEFAULT_MAX_SUBSETS,
+              value_parser = clap::value_parser!(u32).range(1..=i64::from(super::manipulator::MAX_SUBSETS_CEILING)))]
+        max_subsets: u32,
+        #[command(flatten)]
+        sampling: Sampling,
+        /// Print JSON instead of text: every subset, its classification and the patterns with
+        /// all their minimal lock sets.
+        #[arg(long)]
+        json: bool,
+    },
+    /// Jacobians `J_D` and `J_I` (paper 000 eqs. 11, 18–21), mobility and singularities at a pose.
+    ///
+    /// Rows of `J_D` are wrenches (f; `m_P`) at the platform point P acting on (`v_P`; ω): one per
+    /// free input (its `J_I` entry), one per locked input and one per leg constraint wrench (zero
+    /// `J_I` rows: the constraint equations, eq. 22). The platform dof is six minus the rank of
+    /// the constraint rows. Every rank is decided on a dimensionless copy (lengths over the
+    /// mechanism's characteristic length) and printed with its gap. Singularities are ranks
+    /// below those at random assemblies of the same mechanism around the pose (generic ranks):
+    /// inverse (an input without effect), leg (a leg loses rank), constraint (the constraint
+    /// wrenches lose rank: the platform gains a motion), direct (`J_D` loses rank).
+    Analyze {
+        /// A manipulator file (docs/mechanism-format.md).
+        file: PathBuf,
+        /// The platform pose: six numbers x,y,z,rx,ry,rz (the platform frame's origin, then its
+        /// rotation vector, angles in the file's unit, like the file's platform.position and
+        /// platform.orientation), or some of them by name, e.g. 'z=1.1,rx=5,ry=-3' for a
+        /// 3-dof platform: the others (its parasitic motion) are solved. Default: the file's
+        /// reference pose.
+        #[arg(long, allow_hyphen_values = true)]
+        pose: Option<String>,
+        /// Input values (forward kinematics), e.g. 'P1.3=0.05,P2.3=-0.02': joint values from
+        /// the reference configuration, lengths in the file's unit, angles in its angle unit.
+        /// Inputs not named keep their values at the start. With --pose too, both are met.
+        #[arg(long, allow_hyphen_values = true)]
+        inputs: Option<String>,
+        /// Start from the configuration at this pose (same forms as --pose) instead of the
+        /// reference: --pose and --inputs are reached by continuation from the start, so the
+        /// start chooses the assembly mode when there are several.
+        #[arg(long, allow_hyphen_values = true)]
+        from: Option<String>,
+        /// Inputs to lock, e.g. 'R1.1,R2.1,R3.1' (labels as in kinsyn modes); they are held at
+        /// their values at the start.
+        #[arg(long)]
+        lock: Option<String>,
+        /// A moving body of a kinsyn-manipulator/2 file to analyse instead of the end-effector
+        /// (its pose is then the one --pose, --from and P refer to).
+        #[arg(long, value_name = "NAME")]
+        body: Option<String>,
+        /// Seed of the random assemblies that give the generic ranks.
+        #[arg(long, default_value_t = 2026)]
+        seed: u64,
+        /// Print JSON instead of text.
+        #[arg(long)]
+        json: bool,
+    },
+    /// Write a manipulator file with a symmetric geometry whose legs are one chain.
+    ///
+    /// Legs stand on a base circle, one every 360°/n, and reach a platform circle above it, so
+    /// they lie in different planes (paper 000 §3). The chain's axis letters x, y, z (from the
+    /// catalogue, or --axes) are read in each leg's frame: z along the leg, y horizontal, x = y × z.
+    #[command(
+        after_help = "Examples:\n  kinsyn build --legs 3 --chain 'U(!,-)P!S' --name 3-UPS\n  kinsyn build --legs 3 --chain RP!S --axes yzxyz --name 3-RPS\n  kinsyn build --legs 6 --chain T4-034 --actuated 3 --twist 20 --alternate"
+    )]
+    Build {
+        #[command(flatten)]
+        spec: BuildArgs,
+        /// Write to this file instead of standard output.
+        #[arg(long, short)]
+        output: Option<PathBuf>,
+    },
+}
+
+/// The geometry and legs of `kinsyn build` (docs/mechanism-format.md).
+#[derive(Debug, Args)]
+pub(super) struct BuildArgs {
+    /// Number of legs, 3 to 6.
+    #[arg(long, default_value_t = 3)]
+    pub(super) legs: usize,
+    /// The leg: a catalogue id (T4-034) or a chain in notation, '!' marking inputs.
+    #[arg(long)]
+    pub(super) chain: String,
+    /// Axis letters x, y, z per primitive joint in the leg frame (default: the catalogue's).
+    #[arg(long)]
+    pub(super) axes: Option<String>,
+    /// Actuated primitive joints, 1-based, comma separated (instead of '!' marks).
+    #[arg(long, value_delimiter = ',')]
+    pub(super) actuated: Option<Vec<usize>>,
+    /// Radius of the base circle.
+    #[arg(long, default_value_t = 1.0, allow_hyphen_values = true)]
+    pub(super) base_radius: f64,
+    /// Radius of the platform circle.
+    #[arg(long, default_value_t = 0.5, allow_hyphen_values = true)]
+    pub(super) platform_radius: f64,
+    /// Height of the platform above the base.
+    #[arg(long, default_value_t = 1.0, allow_hyphen_values = true)]
+    pub(super) height: f64,
+    /// Degrees each platform point is turned from its leg's base point about the vertical.
+    #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
+    pub(super) twist: f64,
+    /// Turn legs 2, 4, 6 the other way: pairs the platform points of a six-legged
+    /// Gough–Stewart platform (the regular-hexagon form is singular everywhere).
+    #[arg(long)]
+    pub(super) alternate: bool,
+    /// The manipulator's name (default n-LETTERS).
+    #[arg(long)]
+    pub(super) name: Option<String>,
+}
+
+impl From<BuildArgs> for kinsyn::manipulator::build::BuildSpec {
+    fn from(a: BuildArgs) -> Self {
+        kinsyn::manipulator::build::BuildSpec {
+            legs: a.legs,
+            chain: a.chain,
+            axes: a.axes,
+            actuated: a.actuated,
+            base_radius: a.base_radius,
+            platform_radius: a.platform_radius,
+            height: a.height,
+            twist: a.twist,
+            alternate: a.alternate,
+            name: a.name,
+        }
+    }
+}
+
+/// The most `--samples` per motion: 64 walks, about 20 times the default cost of a subset,
+/// far more evidence than a group claim needs (two samples 1e-3 apart, docs/verification.md).
+pub(super) const MAX_SAMPLES: i64 = 64;
+
+/// How finite motion is sampled (seeded, reproducible).
+#[derive(Debug, Args)]
+pub(super) struct Sampling {
+    /// Seed of the random walks (continuous random step lengths and directions).
+    #[arg(long, default_value_t = 2026)]
+    pub(super) seed: u64,
+    /// Configurations sampled per motion, 2 to 64: a group is recognised by its twist space
+    /// staying the same at samples at least 1e-3 apart; each sample is a random walk, so a
+    /// subset's cost grows in proportion.
+    #[arg(long, default_value_t = 3, value_parser = clap::value_parser!(u16).range(2..=MAX_SAMPLES))]
+    pub(super) samples: u16,
+}
+
+impl Sampling {
+    pub(super) fn settings(&self) -> kinsyn::mechanism::SampleSettings {
+        kinsyn::mechanism::SampleSettings {
+            seed: self.seed,
+            samples: usize::from(self.samples),
+            ..Default::default()
+        }
+    }
+}
+
+#[derive(Debug, Subcommand)]
+pub(super) enum CatalogueCommand {
+    /// Enumerate the chains and write chains.json, chains.csv and README.md.
+    ///
+    /// The files are byte-for-byte reproducible; the committed catalogue/ is what this writes
+    /// with the default reading.
+    Generate {
+        /// Folder to write into (created if missing).
+        #[arg(long, default_value = "catalogue")]
+        out: PathBuf,
+        #[command(flatten)]
+        reading: Reading,
+    },
+    /// Counts per Appendix table: published, printed, generated (letters only and letters +
+    /// parallel marks), and the differences from the printed Appendix by kind.
+    Summary {
+        /// Print JSON instead of text.
+        #[arg(long)]
+        json: bool,
+        #[command(flatten)]
+        reading: Reading,
+    },
+    /// List catalogue entries, one per line: id, notation, P/R word, axes, provenance.
+    List {
+        /// Only this family: PPPRRR, PPRRRR, PRRRRR or RRRRRR.
+        #[arg(long)]
+        family: Option<String>,
+        /// Only entries first found in this Appendix table (1, 2, 3, 4, 7 or 8).
+        #[arg(long)]
+        table: Option<u8>,
+        /// Print JSON instead of text.
+        #[arg(long)]
+        json: bool,
+        #[command(flatten)]
+        reading: Reading,
+    },
+    /// Show one entry, by id (e.g. T2-017) or by notation (e.g. 'PPUU' or 'PPU(-,a)U(a,-)').
+    ///
+    /// A notation is matched with its parallel marks. Letters without marks find the entry with
+    /// no parallel group, or, if there is none, every entry with those letters.
+    Show {
+        /// Entry id or chain notation.
+        query: String,
+        /// Also classify the motion with these joints locked (positions in the entry's word,
+        /// e.g. 45 or 1,2,3).
+        #[arg(long)]
+        lock: Option<String>,
+        /// Print JSON instead of text.
+        #[arg(long)]
+        json: bool,
+        #[command(flatten)]
+        reading: Reading,
+    },
+    /// The entries the numerical check rejects (not 3T3R), with rank, singular values and idle
+    /// joints (the table kept in docs/deviations.md).
+    Rejected {
+        #[command(flatten)]
+        reading: Reading,
+    },
+    /// Every difference between the enumeration and the printed Appendix, row by row, with
+    /// its evidence (the table kept in docs/deviations.md).
+    Compare {
+        /// Print JSON instead of a Markdown table.
+        #[arg(long)]
+        json: bool,
+        #[command(flatten)]
+        reading: Reading,
+    },
+}
+
+/// The options of the paper reading (docs/synthesis.md).
+#[derive(Debug, Args)]
+pub(super) struct Reading {
+    /// How far apart two parallel prismatic guides may be: 'separated' (default: allowed when
+    /// a revolute not parallel to them lies between them) or 'perpendicular' (never parallel).
+    #[arg(long, value_enum, default_value_t = PrismaticsArg::Separated)]
+    pub(super) prismatics: PrismaticsArg,
+    /// Do not apply §2.3's "three parallel R need a guide along them" to chains with a P.
+    #[arg(long)]
+    pub(super) no_triple_guide: bool,
+}
+
+#[derive(Debug, Clone, Copy, ValueEnum)]
+pub(super) enum PrismaticsArg {
+    Separated,
+    Perpendicular,
+}
