@@ -76,7 +76,9 @@ fn generate_writes_the_committed_files() {
     let out = dir.path().join("cat");
     let o = kinsyn(&["catalogue", "generate", "--out", out.to_str().unwrap()]);
     assert!(o.status.success(), "{}", stderr(&o));
-    let committed = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../..").join("catalogue");
+    let committed = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../..")
+        .join("catalogue");
     for name in ["chains.json", "chains.csv", "README.md"] {
         assert_eq!(
             std::fs::read(out.join(name)).unwrap(),

@@ -18,7 +18,9 @@ fn succeed(args: &[&str]) -> String {
 
 /// The committed 3-UPS description as a JSON value, to be broken one field at a time.
 fn three_ups() -> Value {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..").join("mechanisms/3-ups.json");
+    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../..")
+        .join("mechanisms/3-ups.json");
     serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap()
 }
 
@@ -569,7 +571,9 @@ fn review_findings_stay_fixed() {
 
 /// The committed file `name` of mechanisms/ with `edit` applied, written to a file in `dir`.
 fn edited(dir: &tempfile::TempDir, name: &str, edit: impl FnOnce(&mut Value)) -> PathBuf {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..").join(format!("mechanisms/{name}.json"));
+    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../..")
+        .join(format!("mechanisms/{name}.json"));
     let mut v: Value = serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap();
     edit(&mut v);
     write(dir, &format!("{name}-edited.json"), &v.to_string())
@@ -607,7 +611,10 @@ fn a_singular_leg_is_warned_on_stderr_and_in_json() {
         let leg = &mut v["legs"][0];
         let mid: Vec<f64> = (0..3)
             .map(|i| {
-                f64::midpoint(leg["base"][i].as_f64().unwrap(), leg["platform"][i].as_f64().unwrap())
+                f64::midpoint(
+                    leg["base"][i].as_f64().unwrap(),
+                    leg["platform"][i].as_f64().unwrap(),
+                )
             })
             .collect();
         leg["points"] = serde_json::json!([mid]);

@@ -38,7 +38,11 @@ fn write(dir: &Path, name: &str, bytes: &[u8]) -> PathBuf {
 
 /// The 3-UPS description with `edit` applied to its JSON.
 fn edited(dir: &Path, name: &str, edit: impl FnOnce(&mut serde_json::Value)) -> PathBuf {
-    let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../mechanisms/3-ups.json")).unwrap();
+    let text = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../mechanisms/3-ups.json"
+    ))
+    .unwrap();
     let mut v: serde_json::Value = serde_json::from_str(&text).unwrap();
     edit(&mut v);
     write(dir, name, serde_json::to_string(&v).unwrap().as_bytes())
@@ -46,6 +50,10 @@ fn edited(dir: &Path, name: &str, edit: impl FnOnce(&mut serde_json::Value)) -> 
 
 /// More than fifty bad inputs across every command: each is refused with exit 2 and one line.
 #[test]
+#[expect(
+    clippy::too_many_lines,
+    reason = "one list of cases (arguments and the text the refusal must name), one per line"
+)]
 fn every_bad_input_is_one_line_and_exit_2() {
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path();

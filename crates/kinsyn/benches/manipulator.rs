@@ -14,7 +14,10 @@ use std::hint::black_box;
 use std::time::Duration;
 
 fn load(name: &str) -> Manipulator {
-    let path = format!("{}/../../mechanisms/{name}.json", env!("CARGO_MANIFEST_DIR"));
+    let path = format!(
+        "{}/../../mechanisms/{name}.json",
+        env!("CARGO_MANIFEST_DIR")
+    );
     let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"));
     Manipulator::from_json(&text).unwrap_or_else(|e| panic!("{path}: {e}"))
 }

@@ -115,6 +115,9 @@ impl Svd {
 /// orthonormal to 1e-12; otherwise the SVD of the matrix with
 /// its columns reversed is tried, and last a one-sided Jacobi SVD. A matrix with a non-finite
 /// entry goes straight to the Jacobi SVD (nalgebra's does not terminate on it).
+///
+/// # Panics
+/// Never: nalgebra's SVD is asked for both U and V, and returns both.
 #[must_use]
 pub fn svd(m: &DMatrix<f64>) -> Svd {
     let (rows, cols) = m.shape();
@@ -273,6 +276,11 @@ pub fn rank6(m: &Matrix6xX<f64>, tolerance: f64) -> usize {
         return 0;
     }
     let k = d.iter().filter(|&&x| x > tolerance * d[0]).count();
+    #[expect(
+        clippy::cast_possible_truncation,
+        clippy::cast_possible_wrap,
+        reason = "k counts pivots of a six-column matrix, 1 to 6"
+    )]
     let lower = |k: usize| {
         let kk = k as f64;
         3.0 * d[k - 1] / (4f64.powi(k as i32) + 6.0 * kk - 1.0).sqrt() / (6f64.sqrt() * d[0])
@@ -388,6 +396,11 @@ mod tests {
     /// independent directions relative to their own largest value (1e-12 > 1e-9 × 1e-6), one
     /// relative to the scale 1 of an orthonormal basis (1e-12 < 1e-9 × 1).
     #[test]
+    #[expect(
+        clippy::float_cmp,
+        reason = "the scale is the largest singular value passed through unchanged: of a \
+                  diagonal matrix, its entry 1e-6 bit for bit"
+    )]
     fn rank_is_relative_to_the_scale_given() {
         let m = DMatrix::from_diagonal(&DVector::from_vec(vec![1e-6, 1e-12]));
         let own = svd(&m).rank(1e-9, None);

@@ -251,6 +251,11 @@ impl Direction {
     /// Names a unit direction: along an axis when one component is ±1 (within 1e-6), else
     /// rounded to thousandths, so that one direction always gets the same name.
     #[must_use]
+    #[expect(
+        clippy::cast_possible_truncation,
+        reason = "a unit vector's components in thousandths are within ±1000 (`as` saturates \
+                  beyond and reads NaN as 0)"
+    )]
     pub fn of(d: &[f64; 3]) -> Self {
         if let Some(a) = Axis::ALL
             .into_iter()
@@ -277,11 +282,15 @@ impl Direction {
     fn plane_text(self) -> String {
         match self {
             Direction::Along(a) => ["yz", "xz", "xy"][a.index()].to_string(),
-            oblique => format!("n={}", oblique.text()),
+            Direction::Oblique(_) => format!("n={}", self.text()),
         }
     }
 
     /// Reads the components of `[a,b,c]` (the oblique form).
+    #[expect(
+        clippy::cast_possible_truncation,
+        reason = "components are checked to be within ±1, so thousandths within ±1000"
+    )]
     fn parse_oblique(text: &str) -> Option<Self> {
         let inner = text.strip_prefix('[')?.strip_suffix(']')?;
         let c: Vec<f64> = inner

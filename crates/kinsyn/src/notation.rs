@@ -178,7 +178,7 @@ impl AxisWord {
     }
 
     /// The directions, joint by joint.
-    #[must_use] 
+    #[must_use]
     pub fn axes(&self) -> impl ExactSizeIterator<Item = Axis> + '_ {
         // Only x, y and z are ever stored.
         self.0.bytes().map(|b| Axis::ALL[usize::from(b - b'x')])
@@ -499,6 +499,96 @@ fn parse_slot(text: &str, column: usize) -> Result<Mark, NotationError> {
     Ok(mark)
 }
 
+/// The marks of a joint written with slots, `U(a,b!)`: one slot per primitive joint of the
+/// letter (a C's prismatic then its revolute, a U's two revolutes, an S's three). `open` is the
+/// index of the `(` in `chars`; `column` and `letter` are the joint's. Returns the index just
+/// past the `)`.
+fn parse_slots(
+    chars: &[(usize, char)],
+    open: usize,
+    column: usize,
+    letter: char,
+    joint: &mut Joint,
+    slot_columns: &mut [usize],
+) -> Result<usize, NotationError> {
+    let open_column = chars[open].0;
+    let close = chars[open..]
+        .iter()
+        .position(|&(_, c)| c == ')')
+        .map(|k| open + k)
+        .ok_or(NotationError::Unclosed {
+            column: open_column,
+        })?;
+    let inner = &chars[open + 1..close];
+    let mut slots: Vec<(usize, String)> = vec![(
+        inner.first().map_or(open_column + 1, |x| x.0),
+        String::new(),
+    )];
+    for &(col, ch) in inner {
+        if ch == ',' {
+            slots.push((col + 1, String::new()));
+        } else {
+            slots.last_mut().expect("one slot at least").1.push(ch);
+        }
+    }
+    if slots.len() != joint.marks.len() {
+        return Err(NotationError::SlotCount {
+            column,
+            letter,
+            expected: joint.marks.len(),
+            found: slots.len(),
+        });
+    }
+    for (k, (col, text)) in slots.iter().enumerate() {
+        joint.marks[k] = parse_slot(text, *col)?;
+        slot_columns[k] = *col;
+    }
+    Ok(close + 1)
+}
+
+/// The short form of a mark, `[group][!]` directly after P, R or C (`Ra!`, `Cb`): the mark of
+/// the joint's one axis, or the group of a C's revolute (an actuated C needs slots, `C(!,-)`).
+/// `start` is the index just past the letter; returns the index just past the mark (`start`
+/// when there is none).
+fn parse_short_marks(
+    chars: &[(usize, char)],
+    start: usize,
+    letter: char,
+    joint: &mut Joint,
+    slot_columns: &mut [usize],
+) -> Result<usize, NotationError> {
+    let mut i = start;
+    let mut text = String::new();
+    while i < chars.len()
+        && (group_index(chars[i].1).is_some() || chars[i].1 == '!')
+        && text.len() < 2
+    {
+        text.push(chars[i].1);
+        i += 1;
+    }
+    if !text.is_empty() {
+        let col = chars[start].0;
+        let mark = parse_slot(&text, col)?;
+        match joint.kind {
+            JointKind::P | JointKind::R => {
+                joint.marks[0] = mark;
+                slot_columns[0] = col;
+            }
+            JointKind::C if !mark.actuated => {
+                joint.marks[1] = mark;
+                slot_columns[1] = col;
+            }
+            _ => {
+                return Err(NotationError::NeedsSlots {
+                    column: col,
+                    letter,
+                });
+            }
+        }
+    }
+    Ok(i)
+}
+
 impl FromStr for Chain {
     type Err = NotationError;
 
@@ -527,71 +617,13 @@ impl FromStr for Chain {
                 );
             };
             i += 1;
-            let n = kind.primitives().len();
             let mut joint = Joint::plain(kind);
-            let mut slot_columns = vec![column; n];
-            if i < chars.len() && chars[i].1 == '(' {
-                let open = chars[i].0;
-                let close = chars[i..]
-                    .iter()
-                    .position(|&(_, c)| c == ')')
-                    .map(|k| i + k)
-                    .ok_or(NotationError::Unclosed { column: open })?;
-                let inner = &chars[i + 1..close];
-                let mut slots: Vec<(usize, String)> =
-                    vec![(inner.first().map_or(open + 1, |x| x.0), String::new())];
-                for &(col, ch) in inner {
-                    if ch == ',' {
-                        slots.push((col + 1, String::new()));
-                    } else {
-                        slots.last_mut().expect("one slot at least").1.push(ch);
-                    }
-                }
-                if slots.len() != n {
-                    return Err(NotationError::SlotCount {
-                        column,
-                        letter: c,
-                        expected: n,
-                        found: slots.len(),
-                    });
-                }
-                for (k, (col, text)) in slots.iter().enumerate() {
-                    joint.marks[k] = parse_slot(text, *col)?;
-                    slot_columns[k] = *col;
-                }
-                i = close + 1;
+            let mut slot_columns = vec![column; kind.primitives().len()];
+            i = if i < chars.len() && chars[i].1 == '(' {
+                parse_slots(&chars, i, column, c, &mut joint, &mut slot_columns)?
             } else {
-                // Short form: [group][!] directly after P, R or C.
-                let start = i;
-                let mut text = String::new();
-                while i < chars.len()
-                    && (group_index(chars[i].1).is_some() || chars[i].1 == '!')
-                    && text.len() < 2
-                {
-                    text.push(chars[i].1);
-                    i += 1;
-                }
-                if !text.is_empty() {
-                    let col = chars[start].0;
-                    let mark = parse_slot(&text, col)?;
-                    match kind {
-                        JointKind::P | JointKind::R => {
-                            joint.marks[0] = mark;
-                            slot_columns[0] = col;
-                        }
-                        JointKind::C if !mark.actuated => {
-                            joint.marks[1] = mark;
-                            slot_columns[1] = col;
-                        }
-                        _ => {
-                            return Err(NotationError::NeedsSlots {
-                                column: col,
-                                letter: c,
-                            });
-                        }
-                    }
-                }
-            }
+                parse_short_marks(&chars, i, c, &mut joint, &mut slot_columns)?
+            };
             parsed.push(Parsed {
                 joint,
                 column,
@@ -669,21 +701,19 @@ impl Chain {
     /// checked.
     #[must_use]
     pub fn from_joints(mut joints: Vec<Joint>) -> Self {
-        let mut order: Vec<u8> = Vec::new();
-        for j in &joints {
-            for m in &j.marks {
-                if let Some(g) = m.group
-                    && !order.contains(&g)
-                {
-                    order.push(g);
-                }
-            }
-        }
-        for j in &mut joints {
-            for m in &mut j.marks {
-                if let Some(g) = m.group {
-                    m.group = Some(order.iter().position(|&x| x == g).expect("seen above") as u8);
-                }
+        // The new number of each group given, by its given number: the count of groups seen
+        // before its first mark.
+        let mut renumbered: [Option<u8>; 256] = [None; 256];
+        let mut next: u8 = 0;
+        for m in joints.iter_mut().flat_map(|j| &mut j.marks) {
+            if let Some(g) = m.group {
+                let new = *renumbered[usize::from(g)].get_or_insert_with(|| {
+                    let new = next;
+                    // Wraps only after the 256th group, when no group is left to number.
+                    next = next.wrapping_add(1);
+                    new
+                });
+                m.group = Some(new);
             }
         }
         Chain { joints }

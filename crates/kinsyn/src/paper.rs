@@ -257,6 +257,49 @@ pub fn describe_key(k: RowKey) -> String {
     }
 }
 
+/// One way a printed chain's letters can be read from its row's P/R word: the axes, the
+/// admissibility rules they break, whether the revolute directions follow the table's pattern,
+/// and whether the letters are rule 3's fewest joints for those axes.
+struct Way {
+    axes: Vec<rules::AxisIndex>,
+    violations: Vec<rules::Violation>,
+    in_pattern: bool,
+    fewest: bool,
+}
+
+/// Every way `letters` can be read from `word` (any axis assignment whose readings, fewest
+/// joints or any grouping, include those letters), one per distinct combination of broken
+/// rules, pattern and fewest, in assignment order.
+fn ways_to_read(word: &[crate::notation::Primitive], letters: &str, spec: &Table) -> Vec<Way> {
+    let mut ways: Vec<Way> = Vec::new();
+    for axes in synthesis::all_assignments(word) {
+        let fewest = rules::readings(word, &axes)
+            .iter()
+            .any(|c| c.letters() == letters);
+        if !fewest
+            && !rules::readings_with(word, &axes, rules::Grouping::Any)
+                .iter()
+                .any(|c| c.letters() == letters)
+        {
+            continue;
+        }
+        let in_pattern = revolute_counts(word, &axes) == spec.axis_counts;
+        let violations = rules::violations(word, &axes, &Options::default());
+        if !ways
+            .iter()
+            .any(|w| w.violations == violations && w.in_pattern == in_pattern && w.fewest == fewest)
+        {
+            ways.push(Way {
+                axes,
+                violations,
+                in_pattern,
+                fewest,
+            });
+        }
+    }
+    ways
+}
+
 /// Why a printed chain is not generated from the row's word: the least-violating axis
 /// assignment that reads as those letters, and what it breaks.
 fn explain_missing(table: u8, word_text: &str, letters: &str) -> (DifferenceKind, String) {
@@ -270,41 +313,9 @@ fn explain_missing(table: u8, word_text: &str, letters: &str) -> (DifferenceKind
     }
     let word = synthesis::parse_word(word_text).expect("appendix words are P/R words");
     let spec: &Table = synthesis::tables::table(table).expect("appendix tables exist");
-    // Every way the letters can be read from the word: which axes, which admissibility rules
-    // they break, and whether rule 3's fewest joints hold. The undominated ways are the
-    // evidence (a way is dominated when another breaks a subset of its rules).
-    struct Way {
-        axes: Vec<rules::AxisIndex>,
-        violations: Vec<rules::Violation>,
-        in_pattern: bool,
-        fewest: bool,
-    }
-    let mut ways: Vec<Way> = Vec::new();
-    for axes in synthesis::all_assignments(&word) {
-        let fewest = rules::readings(&word, &axes)
-            .iter()
-            .any(|c| c.letters() == letters);
-        if !fewest
-            && !rules::readings_with(&word, &axes, rules::Grouping::Any)
-                .iter()
-                .any(|c| c.letters() == letters)
-        {
-            continue;
-        }
-        let in_pattern = revolute_counts(&word, &axes) == spec.axis_counts;
-        let violations = rules::violations(&word, &axes, &Options::default());
-        if !ways
-            .iter()
-            .any(|w| w.violations == violations && w.in_pattern == in_pattern && w.fewest == fewest)
-        {
-            ways.push(Way {
-                axes,
-                violations,
-                in_pattern,
-                fewest,
-            });
-        }
-    }
+    // The undominated ways are the evidence (a way is dominated when another breaks a subset
+    // of its rules).
+    let ways = ways_to_read(&word, letters, spec);
     if ways.is_empty() {
         return (
             DifferenceKind::NotReadable,

@@ -91,7 +91,12 @@ pub fn round_significant(x: f64, digits: i32) -> f64 {
     if x == 0.0 || !x.is_finite() {
         return x;
     }
-    let scale = 10f64.powi(digits - 1 - x.abs().log10().floor() as i32);
+    #[expect(
+        clippy::cast_possible_truncation,
+        reason = "the decimal exponent of a finite non-zero f64 is within ±324"
+    )]
+    let exponent = x.abs().log10().floor() as i32;
+    let scale = 10f64.powi(digits - 1 - exponent);
     (x * scale).round() / scale
 }
 

@@ -13,7 +13,9 @@ fn committed_catalogue_is_reproduced_byte_for_byte() {
     Catalogue::generate(&Options::default())
         .write(dir.path())
         .unwrap();
-    let committed = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..").join("catalogue");
+    let committed = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../..")
+        .join("catalogue");
     for name in ["chains.json", "chains.csv", "README.md"] {
         let fresh = std::fs::read(dir.path().join(name)).unwrap();
         let old =

@@ -11,7 +11,8 @@ use std::path::{Path, PathBuf};
 /// Runs `check` on every file of `fuzz/corpus/<target>/` and fails with the names of the files
 /// whose check panicked.
 fn replay(target: &str, check: fn(&[u8])) {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../..")
         .join("fuzz/corpus")
         .join(target);
     let mut files: Vec<PathBuf> = std::fs::read_dir(&dir)

@@ -177,7 +177,7 @@ fn ups_leg(
     let (a, g) = attachment(d, i, p, r);
     let alpha = match &d.legs[i].axes.as_ref().unwrap()[0] {
         kinsyn::manipulator::file::AxisSpec::Vector(v) => Vector3::from(*v).normalize(),
-        other => panic!("{other:?}"),
+        other @ kinsyn::manipulator::file::AxisSpec::Named(_) => panic!("{other:?}"),
     };
     let uc = (g - a).normalize();
     let beta = alpha.cross(&uc).normalize();
@@ -192,7 +192,11 @@ fn three_ups_jacobians_are_eqs_12_to_19() {
     // arbitrary). Evaluated at random poses from the geometry alone.
     let d = description("3-ups");
     let m = load("3-ups");
-    let labels: Vec<String> = m.actuators().iter().map(kinsyn::manipulator::Actuator::label).collect();
+    let labels: Vec<String> = m
+        .actuators()
+        .iter()
+        .map(kinsyn::manipulator::Actuator::label)
+        .collect();
     assert_eq!(labels, ["R1.1", "P1.3", "R2.1", "P2.3", "R3.1", "P3.3"]);
     let mut rng = ChaCha8Rng::seed_from_u64(13);
     for _ in 0..5 {
@@ -667,6 +671,7 @@ fn a_leg_singular_reference_has_one_dof_and_is_flagged() {
     // whose lines are not concurrent leave it no instantaneous motion: platform dof 0 (not 3),
     // while the joint rates keep 3 internal motions. The old code printed "platform dof 3
     // (twist space) = 0 (wrenches)" and no singularity.
+    use kinsyn::manipulator::SingularityKind::{Inverse, Leg};
     let mut d = description("3-rrr-planar");
     for leg in &mut d.legs {
         leg.points = None;
@@ -683,7 +688,6 @@ fn a_leg_singular_reference_has_one_dof_and_is_flagged() {
             .1,
         0
     );
-    use kinsyn::manipulator::SingularityKind::{Inverse, Leg};
     for kind in [Inverse, Leg] {
         assert_eq!(
             a.singularities.iter().filter(|s| s.kind == kind).count(),
@@ -1163,6 +1167,10 @@ fn modes_from_a_displaced_pose_hold_the_locks_at_their_values_there() {
 /// doubles (`-0.10333333333333336`): a description written by `Description::to_json` did not
 /// read back to itself. Numbers must be read correctly rounded.
 #[test]
+#[expect(
+    clippy::float_cmp,
+    reason = "the point of the test: a number is read bit for bit as Rust parses it"
+)]
 fn a_description_reads_its_numbers_exactly_and_its_own_json_back() {
     use kinsyn::manipulator::file::Description;
     let committed = std::fs::read_to_string("../../mechanisms/3-rps.json").unwrap();

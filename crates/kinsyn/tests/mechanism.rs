@@ -59,7 +59,9 @@ fn a_spatial_four_bar_with_parallel_axes_is_overconstrained_but_mobile() {
     // null space of the closure Jacobian still gives 1 (the planar motion): mobility is not
     // counted but computed.
     let m = four_bar();
-    let spatial = 6 * (m.body_count() as i64 - 1) - 5 * m.joints().len() as i64;
+    let bodies = i64::try_from(m.body_count()).unwrap();
+    let joints = i64::try_from(m.joints().len()).unwrap();
+    let spatial = 6 * (bodies - 1) - 5 * joints;
     assert_eq!(spatial, -2);
     assert_eq!(m.mobility(&[0.0; 4], &[false; 4]).dof, 1);
 }

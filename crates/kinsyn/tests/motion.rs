@@ -34,7 +34,7 @@ fn pattern(c: &SerialChain, seed: u64) -> Pattern {
 fn group(p: &Pattern) -> kinsyn::motion::Group {
     match p {
         Pattern::Group(g) => *g,
-        other => panic!("expected a group, got {other}"),
+        other @ Pattern::NonGroup { .. } => panic!("expected a group, got {other}"),
     }
 }
 
@@ -227,7 +227,7 @@ proptest! {
         let q2 = configurations(&c, &Settings::default(), seed + 2);
         let kind = |p: &Pattern| match p {
             Pattern::Group(g) => g.kind.symbol().to_string(),
-            other => other.to_string(),
+            other @ Pattern::NonGroup { .. } => other.to_string(),
         };
         for mask in 0u32..64 {
             let a = locked_motion(&c, mask, &q1, &Settings::default()).pattern;

@@ -103,8 +103,11 @@ fn table_1_matches_row_by_row_except_misprints() {
 
 /// The Markdown table between the markers of docs/deviations.md.
 fn documented() -> Vec<String> {
-    let doc = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../docs/deviations.md"))
-        .expect("docs/deviations.md");
+    let doc = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../docs/deviations.md"
+    ))
+    .expect("docs/deviations.md");
     let begin = doc
         .find("<!-- differences:begin -->")
         .expect("begin marker");
@@ -174,6 +177,8 @@ fn kept_group_structures(directions: &str) -> usize {
 #[test]
 fn variant_counts_against_the_paper() {
     use kinsyn::synthesis::{Candidate, enumerate};
+    // §2.4: "... a total of 16 different combinations are derived" (Table 6).
+    const PAPER_TABLE_6: usize = 16;
     let candidates: Vec<Candidate> = enumerate(&Options::default());
     let variants = |t: u8, row: usize| {
         candidates
@@ -197,10 +202,9 @@ fn variant_counts_against_the_paper() {
     // §2.4: "In Table 5 all the variants ... A total of 10 variants are obtained."
     assert_eq!(kept_group_structures("aabbcc"), 10);
     assert_eq!(variants(7, 1), 10);
-    // §2.4: "... a total of 16 different combinations are derived" (Table 6). Expected
-    // deviation (docs/deviations.md, "Variant sub-rows"): the pattern 3+2+1 keeps 22 distinct
-    // structures of parallel groups, and the enumeration has all of them.
-    const PAPER_TABLE_6: usize = 16;
+    // §2.4: Table 6 has PAPER_TABLE_6 combinations. Expected deviation (docs/deviations.md,
+    // "Variant sub-rows"): the pattern 3+2+1 keeps 22 distinct structures of parallel groups,
+    // and the enumeration has all of them.
     assert_eq!(kept_group_structures("aaabbc"), 22);
     assert_ne!(variants(8, 1), PAPER_TABLE_6);
     assert_eq!(variants(8, 1), kept_group_structures("aaabbc"));

@@ -126,7 +126,9 @@ fn three_rps_solves_its_parasitic_motion() {
             let (a, b) = attachments(&d, i);
             let u = Vector3::from(match d.legs[i].axes.as_ref().unwrap()[0] {
                 kinsyn::manipulator::file::AxisSpec::Vector(ref v) => *v,
-                _ => panic!("the 3-RPS file gives vectors"),
+                kinsyn::manipulator::file::AxisSpec::Named(_) => {
+                    panic!("the 3-RPS file gives vectors")
+                }
             });
             let off_plane = (p + r * b - a).dot(&u);
             assert!(

@@ -135,7 +135,7 @@ mod fast_rank {
         #[test]
         fn rank6_equals_svd_rank(k in 0usize..=6, seed in proptest::collection::vec(-1.0f64..1.0, 72), scale in -12i32..3) {
             let a = DMatrix::from_fn(6, k, |r, c| seed[r * 6 + c]);
-            let b = DMatrix::from_fn(k, 6, |r, c| seed[36 + r * 6 + c] * 10f64.powi(scale * (c as i32 % 2)));
+            let b = DMatrix::from_fn(k, 6, |r, c| seed[36 + r * 6 + c] * 10f64.powi(scale * i32::try_from(c % 2).unwrap()));
             let m = &a * &b;
             let fixed = Matrix6xX::from_column_slice(m.as_slice());
             let svd_rank = screw::rank(&m, 1e-9).rank;

@@ -130,8 +130,11 @@ fn every_entry_reaches_d_and_e_and_queries_find_hand_derived_cases() {
 
 #[test]
 fn every_rejected_entry_is_documented() {
-    let doc = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../docs/deviations.md"))
-        .unwrap();
+    let doc = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../docs/deviations.md"
+    ))
+    .unwrap();
     let begin = doc.find("<!-- not-3t3r:begin -->").expect("begin marker");
     let end = doc.find("<!-- not-3t3r:end -->").expect("end marker");
     let documented: Vec<&str> = doc[begin..end]

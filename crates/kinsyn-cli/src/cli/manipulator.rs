@@ -262,7 +262,9 @@ pub fn modes(
         return Ok(json(&value));
     }
     let mut s = modes_header(&m, &modes, pose, selection);
-    if let Selection::Lock(_) = selection { s += &mode_detail(&modes.modes[0]) } else {
+    if let Selection::Lock(_) = selection {
+        s += &mode_detail(&modes.modes[0]);
+    } else {
         s += &modes_by_dof(&modes);
         s += &capacity_text(&modes);
     }
@@ -875,7 +877,10 @@ fn closure_io_text(m: &Manipulator, a: &Analysis) -> String {
     s
 }
 
-fn analysis_text(m: &Manipulator, a: &Analysis, reached: &Reached) -> String {
+/// The opening lines of `analyze`: the configuration analysed (the end-effector's point P and
+/// rotation vector, the locked inputs), how it was reached from the start, and the input
+/// values.
+fn configuration_text(m: &Manipulator, a: &Analysis, reached: &Reached) -> String {
     let mut s = String::new();
     let frame = m.platform_frame(&a.q);
     let rv = kinsyn::mechanism::rotation_log(&frame.rotation);
@@ -928,6 +933,12 @@ fn analysis_text(m: &Manipulator, a: &Analysis, reached: &Reached) -> String {
         m.units().angle.name(),
         values.join(", ")
     );
+    s
+}
+
+fn analysis_text(m: &Manipulator, a: &Analysis, reached: &Reached) -> String {
+    let mut s = configuration_text(m, a, reached);
+    let several = m.bodies().len() > 1;
     if several {
         let dofs: Vec<String> = m
             .bodies()

@@ -47,6 +47,10 @@ pub(super) fn notation(text: &str, as_json: bool) -> Result<String, CliError> {
         chain.primitive_word(),
         primitives.join(" ")
     );
+    #[expect(
+        clippy::cast_possible_truncation,
+        reason = "one entry per group number, a u8: at most 256"
+    )]
     let groups: Vec<String> = chain
         .parallel_groups()
         .iter()

@@ -1,6 +1,7 @@
 //! What reaches the user: results on stdout that stop quietly when the reader goes away, and
 //! errors and warnings on stderr that are always one line and never drive the terminal.
 
+use std::fmt::Write as _;
 use std::io::{self, Write};
 
 /// `message` made safe for one line of a terminal: line breaks, escape sequences and every
@@ -13,7 +14,7 @@ pub fn one_line(message: &str) -> String {
         if c.is_control() {
             s.extend(c.escape_debug());
         } else if is_format(c) {
-            s.push_str(&format!("\\u{{{:x}}}", u32::from(c)));
+            let _ = write!(s, "\\u{{{:x}}}", u32::from(c));
         } else {
             s.push(c);
         }

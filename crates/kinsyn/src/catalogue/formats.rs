@@ -78,6 +78,10 @@ impl Catalogue {
     }
 
     /// `chains.json`: the entries with the generator's metadata.
+    ///
+    /// # Panics
+    /// Never: the catalogue is plain data, and its only map keys (pattern names) are strings,
+    /// so JSON can always represent it.
     #[must_use]
     pub fn to_json(&self) -> String {
         #[derive(Serialize)]

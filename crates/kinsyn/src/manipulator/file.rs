@@ -284,7 +284,7 @@ impl AnyDescription {
             return Description::from_json(text).map(AnyDescription::V1);
         }
         if value.get("platform").is_some() && value.get("bodies").is_none() {
-            return Err(DescriptionError::not_a_description(format!(
+            return Err(DescriptionError::not_a_description(&format!(
                 "\"format\" is \"{FORMAT_2}\", expected \"{FORMAT}\" for a description with a \"platform\" and no \"bodies\" (docs/mechanism-format.md)"
             )));
         }
@@ -323,7 +323,7 @@ impl MultibodyDescription {
 /// The JSON value of `text`, checked to be an object whose `format` is one of `accepted`.
 fn json_object(text: &str, accepted: &[&str]) -> Result<serde_json::Value, DescriptionError> {
     let value: serde_json::Value = serde_json::from_str(text)
-        .map_err(|e| DescriptionError::not_a_description(format!("not JSON: {e}")))?;
+        .map_err(|e| DescriptionError::not_a_description(&format!("not JSON: {e}")))?;
     let expected = accepted
         .iter()
         .map(|f| format!("\"{f}\""))
@@ -332,15 +332,15 @@ fn json_object(text: &str, accepted: &[&str]) -> Result<serde_json::Value, Descr
     match value.get("format") {
         Some(serde_json::Value::String(f)) if accepted.contains(&f.as_str()) => Ok(value),
         Some(serde_json::Value::String(other)) => Err(DescriptionError::not_a_description(
-            format!("\"format\" is {other:?}, expected {expected}"),
+            &format!("\"format\" is {other:?}, expected {expected}"),
         )),
-        Some(other) => Err(DescriptionError::not_a_description(format!(
+        Some(other) => Err(DescriptionError::not_a_description(&format!(
             "\"format\" is {other}, expected {expected}"
         ))),
         None if !value.is_object() => Err(DescriptionError::not_a_description(
-            "JSON, but not an object".to_string(),
+            "JSON, but not an object",
         )),
-        None => Err(DescriptionError::not_a_description(format!(
+        None => Err(DescriptionError::not_a_description(&format!(
             "no \"format\": {expected}"
         ))),
     }
@@ -432,7 +432,7 @@ impl DescriptionError {
     /// Text that is not a manipulator description at all (not JSON, or JSON without this
     /// format's marker): the field is `file`, the message says why.
     #[must_use]
-    pub fn not_a_description(why: String) -> Self {
+    pub fn not_a_description(why: &str) -> Self {
         DescriptionError::new("file", format!("{NOT_A_DESCRIPTION} ({why})"))
     }
 

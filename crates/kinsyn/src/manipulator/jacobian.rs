@@ -32,6 +32,7 @@
 
 use super::Manipulator;
 use crate::linalg::{self, DEFAULT_RANK_TOLERANCE, Rank};
+use crate::mechanism::Mechanism;
 use crate::notation::Primitive;
 use crate::screw::{self, Wrench};
 use nalgebra::{DMatrix, DVector, Vector3};
@@ -174,6 +175,80 @@ fn joint_wrench(b: &DMatrix<f64>, s: &DMatrix<f64>, offset: &Vector3<f64>) -> Op
     Some(w1 - sn * z.x)
 }
 
+/// A row of `J_D` from a dimensionless wrench `w` (about the centre, lengths over the scale):
+/// the physical wrench and its row `(f; m_P)`, the moment about P (at `offset` from the centre,
+/// in length-scale units), both scaled to a unit force, or to a unit moment for a couple.
+fn physical_row(m: &Mechanism, w: &DVector<f64>, offset: &Vector3<f64>) -> (Wrench, [f64; 6]) {
+    let at_p = moment_at(w, offset);
+    let size = at_p.norm();
+    let f = Vector3::new(at_p[0], at_p[1], at_p[2]);
+    let mp = Vector3::new(at_p[3], at_p[4], at_p[5]) * m.scale();
+    let norm = if f.norm() > COUPLE_TOLERANCE * size {
+        f.norm()
+    } else {
+        mp.norm()
+    };
+    let wrench = m.physical_wrench(w.as_slice());
+    let wrench = Wrench {
+        f: wrench.f / norm,
+        m: wrench.m / norm,
+    };
+    let (f, mp) = (f / norm, mp / norm);
+    (wrench, [f.x, f.y, f.z, mp.x, mp.y, mp.z])
+}
+
+/// The wrenches of a leg with unitless joint twists `t` (one column per joint): for a leg of
+/// six independent joints (certified by `rank6`), the wrenches of all its joints at once, the
+/// rows of `(Δ T)⁻¹` (`w_j · $_k = δ_jk`), and no constraint wrench; otherwise no such inverse
+/// (the joints' wrenches are then found as reciprocal complements, joint by joint) and the
+/// leg's constraint wrenches, a basis of the wrenches reciprocal to all its joints.
+fn leg_wrenches(t: &DMatrix<f64>) -> (Option<DMatrix<f64>>, DMatrix<f64>) {
+    let dual = (t.ncols() == 6
+        && linalg::rank6(
+            &nalgebra::Matrix6xX::from_column_slice(t.as_slice()),
+            DEFAULT_RANK_TOLERANCE,
+        ) == 6)
+        .then(|| swap_blocks(t).try_inverse())
+        .flatten();
+    let structural = if dual.is_some() {
+        DMatrix::zeros(6, 0)
+    } else {
+        screw::reciprocal_complement(t, DEFAULT_RANK_TOLERANCE)
+    };
+    (dual, structural)
+}
+
+/// The constraint rows of leg `leg`: each wrench the leg's joints transmit whatever the inputs
+/// (a column of `structural`, dimensionless) as a row of `J_D` ([`physical_row`]), its sign
+/// chosen so that its first non-negligible component about P is positive.
+fn constraint_rows(
+    m: &Mechanism,
+    structural: &DMatrix<f64>,
+    offset: &Vector3<f64>,
+    leg: usize,
+) -> Vec<WrenchRow> {
+    (0..structural.ncols())
+        .map(|c| {
+            let w = structural.column(c).into_owned();
+            let (_, mut row) = physical_row(m, &w, offset);
+            let unitless = moment_at(&w, offset);
+            let first = unitless
+                .iter()
+                .copied()
+                .find(|x| x.abs() > 1e-9 * unitless.norm());
+            if first.is_some_and(|x| x < 0.0) {
+                row = row.map(|x| -x);
+            }
+            WrenchRow {
+                kind: RowKind::Constraint { leg },
+                wrench: row,
+                input: 0.0,
+                unitless_input: 0.0,
+            }
+        })
+        .collect()
+}
+
 impl Manipulator {
     /// The Jacobians `J_D`, `J_I` at joint values `q` with the `locked` inputs (indices into
     /// [`Manipulator::actuators`]) held.
@@ -200,44 +275,10 @@ impl Manipulator {
         let mut constraints = Vec::new();
         let mut without_wrench = Vec::new();
         let mut leg_ranks = Vec::with_capacity(self.legs.len());
-        // A row from a dimensionless wrench: the physical wrench and its row (f; m_P), with a
-        // unit force (a unit moment for a couple).
-        let physical = |w: &DVector<f64>| -> (Wrench, [f64; 6]) {
-            let at_p = moment_at(w, &offset);
-            let size = at_p.norm();
-            let f = Vector3::new(at_p[0], at_p[1], at_p[2]);
-            let mp = Vector3::new(at_p[3], at_p[4], at_p[5]) * scale;
-            let norm = if f.norm() > COUPLE_TOLERANCE * size {
-                f.norm()
-            } else {
-                mp.norm()
-            };
-            let wrench = m.physical_wrench(w.as_slice());
-            let wrench = Wrench {
-                f: wrench.f / norm,
-                m: wrench.m / norm,
-            };
-            let (f, mp) = (f / norm, mp / norm);
-            (wrench, [f.x, f.y, f.z, mp.x, mp.y, mp.z])
-        };
         for (i, leg) in self.legs.iter().enumerate() {
             let joints: Vec<usize> = leg.joints.clone().collect();
             let t = self.unitless_leg_twists(&screws, &joints);
-            // A leg of six independent joints (certified by `rank6`): the wrenches of all its
-            // joints at once, the rows of (Δ T)⁻¹ (w_j · $_k = δ_jk). Otherwise reciprocal
-            // complements, joint by joint.
-            let dual = (t.ncols() == 6
-                && linalg::rank6(
-                    &nalgebra::Matrix6xX::from_column_slice(t.as_slice()),
-                    DEFAULT_RANK_TOLERANCE,
-                ) == 6)
-                .then(|| swap_blocks(&t).try_inverse())
-                .flatten();
-            let structural = if dual.is_some() {
-                DMatrix::zeros(6, 0)
-            } else {
-                screw::reciprocal_complement(&t, DEFAULT_RANK_TOLERANCE)
-            };
+            let (dual, structural) = leg_wrenches(&t);
             leg_ranks.push(6 - structural.ncols());
             for (a, act) in self
                 .actuators
@@ -245,7 +286,9 @@ impl Manipulator {
                 .enumerate()
                 .filter(|(_, a)| a.leg == i)
             {
-                let wrench = if let Some(inverse) = &dual { Some(inverse.row(act.position).transpose()) } else {
+                let wrench = if let Some(inverse) = &dual {
+                    Some(inverse.row(act.position).transpose())
+                } else {
                     let others = t.clone().remove_column(act.position);
                     let b = screw::reciprocal_complement(&others, DEFAULT_RANK_TOLERANCE);
                     joint_wrench(&b, &structural, &offset)
@@ -254,7 +297,7 @@ impl Manipulator {
                     without_wrench.push(a);
                     continue;
                 };
-                let (physical_wrench, mut row) = physical(&w);
+                let (physical_wrench, mut row) = physical_row(m, &w, &offset);
                 let mut input = screw::reciprocal_product(&physical_wrench, &screws[act.joint]);
                 let screw_a = t.column(act.position);
                 let mut unitless_input = (w.rows(0, 3).dot(&screw_a.rows(3, 3))
@@ -281,24 +324,7 @@ impl Manipulator {
                     });
                 }
             }
-            for c in 0..structural.ncols() {
-                let w = structural.column(c).into_owned();
-                let (_, mut row) = physical(&w);
-                let unitless = moment_at(&w, &offset);
-                let first = unitless
-                    .iter()
-                    .copied()
-                    .find(|x| x.abs() > 1e-9 * unitless.norm());
-                if first.is_some_and(|x| x < 0.0) {
-                    row = row.map(|x| -x);
-                }
-                constraints.push(WrenchRow {
-                    kind: RowKind::Constraint { leg: i },
-                    wrench: row,
-                    input: 0.0,
-                    unitless_input: 0.0,
-                });
-            }
+            constraints.extend(constraint_rows(m, &structural, &offset, i));
         }
         let free: Vec<usize> = (0..self.actuators.len())
             .filter(|a| !locked.contains(a))

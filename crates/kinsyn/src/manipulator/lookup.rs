@@ -97,7 +97,9 @@ impl ChainLookup for CommittedChains {
             .entries
             .iter()
             .find(|e| e.id.eq_ignore_ascii_case(query.trim()));
-        let row = if let Some(row) = by_id { row } else {
+        let row = if let Some(row) = by_id {
+            row
+        } else {
             let chain: Chain = query.parse().ok()?;
             let text = chain.without_actuation().to_string();
             self.entries.iter().find(|e| e.notation == text)?

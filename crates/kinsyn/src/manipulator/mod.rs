@@ -585,138 +585,11 @@ struct Layout {
 
 impl Layout {
     fn new(d: &MultibodyDescription, fields: Fields) -> Result<Self, ManipulatorError> {
-        let err = |field: String, message: String| -> ManipulatorError {
-            DescriptionError::new(field, message).into()
-        };
-        if d.legs.is_empty() {
-            return Err(err(
-                "legs".into(),
-                "no leg: a manipulator needs at least one".into(),
-            ));
-        }
-        match fields {
-            Fields::V1 if d.legs.len() > MAX_LEGS => {
-                return Err(err(
-                    "legs".into(),
-                    format!(
-                        "{} legs: at most {MAX_LEGS} (docs/limits.md; the analysis grows with the cube of the number of joints)",
-                        d.legs.len()
-                    ),
-                ));
-            }
-            Fields::V2 if d.legs.len() > MAX_LEGS_BETWEEN_BODIES => {
-                return Err(err(
-                    "legs".into(),
-                    format!(
-                        "{} legs: at most {MAX_LEGS_BETWEEN_BODIES} (docs/limits.md)",
-                        d.legs.len()
-                    ),
-                ));
-            }
-            _ => {}
-        }
-        if d.bodies.is_empty() {
-            return Err(err(
-                "bodies".into(),
-                "no moving body: a manipulator needs at least one".into(),
-            ));
-        }
-        if d.bodies.len() > MAX_BODIES {
-            return Err(err(
-                "bodies".into(),
-                format!(
-                    "{} moving bodies: at most {MAX_BODIES} (docs/limits.md)",
-                    d.bodies.len()
-                ),
-            ));
-        }
-        if d.ground.trim().is_empty() {
-            return Err(err("ground".into(), "an empty name".into()));
-        }
-        let mut names = vec![d.ground.clone()];
-        let mut frames = vec![Displacement::identity()];
-        let angle = d.units.angle;
-        for (k, b) in d.bodies.iter().enumerate() {
-            let field = |f: &str| fields.body(k, f);
-            if b.name.trim().is_empty() {
-                return Err(err(field("name"), "an empty name".into()));
-            }
-            if b.name == d.ground {
-                return Err(err(
-                    field("name"),
-                    format!(
-                        "{:?} is the ground's name; every body needs its own",
-                        b.name
-                    ),
-                ));
-            }
-            if let Some(j) = d.bodies[..k].iter().position(|o| o.name == b.name) {
-                return Err(err(
-                    field("name"),
-                    format!(
-                        "{:?} names bodies[{j}] too; every body needs its own name",
-                        b.name
-                    ),
-                ));
-            }
-            finite(&b.position, &field("position"))?;
-            finite(&b.orientation, &field("orientation"))?;
-            finite(&b.point, &field("point"))?;
-            let rotation = Rotation3::from_scaled_axis(
-                Vector3::from(b.orientation).map(|a| angle.to_radians(a)),
-            );
-            names.push(b.name.clone());
-            frames.push(crate::spatial::displacement(
-                rotation,
-                Vector3::from(b.position),
-            ));
-        }
-        let all = || names.join(", ");
-        let mut ends = Vec::with_capacity(d.legs.len());
-        for (i, leg) in d.legs.iter().enumerate() {
-            let find = |name: &str, f: &str| {
-                names.iter().position(|n| n == name).ok_or_else(|| {
-                    err(
-                        format!("legs[{i}].{f}"),
-                        format!("{name:?} is not a body (bodies: {})", all()),
-                    )
-                })
-            };
-            let (from, to) = (find(&leg.from, "from")?, find(&leg.to, "to")?);
-            if from == to {
-                return Err(err(
-                    format!("legs[{i}].to"),
-                    format!(
-                        "{:?} again: a leg joins two distinct bodies, and its from is {:?} too",
-                        leg.to, leg.from
-                    ),
-                ));
-            }
-            ends.push((from, to));
-        }
-        // Every moving body must be joined to the ground by a chain of legs.
-        let mut reached = vec![false; names.len()];
-        reached[0] = true;
-        let mut grew = true;
-        while grew {
-            grew = false;
-            for &(a, b) in &ends {
-                if reached[a] != reached[b] {
-                    reached[a] = true;
-                    reached[b] = true;
-                    grew = true;
-                }
-            }
-        }
-        if let Some(k) = reached.iter().position(|r| !r) {
-            return Err(err(
-                format!("bodies[{}]", k - 1),
-                format!(
-                    "{:?} is joined to the ground {:?} by no chain of legs; every moving body needs one",
-                    names[k], d.ground
-                ),
-            ));
-        }
+        let err = field_error;
+        check_sizes(d, fields)?;
+        let (names, frames) = body_frames(d, fields)?;
+        let ends = leg_ends(d, &names)?;
+        check_grounded(d, &names, &ends)?;
         let moving = || names[1..].join(", ");
         let end_effector = match &d.end_effector {
             Some(name) if *name == d.ground => {
@@ -757,6 +630,176 @@ impl Layout {
             end_effector,
         })
     }
+}
+
+/// An error in the description's `field`.
+fn field_error(field: String, message: String) -> ManipulatorError {
+    DescriptionError::new(field, message).into()
+}
+
+/// Checks the sizes of a description against docs/limits.md: at least one leg, at most
+/// [`MAX_LEGS`] legs in a `/1` description or [`MAX_LEGS_BETWEEN_BODIES`] in a `/2` one; at
+/// least one moving body and at most [`MAX_BODIES`]; and a named ground.
+fn check_sizes(d: &MultibodyDescription, fields: Fields) -> Result<(), ManipulatorError> {
+    let err = field_error;
+    if d.legs.is_empty() {
+        return Err(err(
+            "legs".into(),
+            "no leg: a manipulator needs at least one".into(),
+        ));
+    }
+    match fields {
+        Fields::V1 if d.legs.len() > MAX_LEGS => {
+            return Err(err(
+                "legs".into(),
+                format!(
+                    "{} legs: at most {MAX_LEGS} (docs/limits.md; the analysis grows with the cube of the number of joints)",
+                    d.legs.len()
+                ),
+            ));
+        }
+        Fields::V2 if d.legs.len() > MAX_LEGS_BETWEEN_BODIES => {
+            return Err(err(
+                "legs".into(),
+                format!(
+                    "{} legs: at most {MAX_LEGS_BETWEEN_BODIES} (docs/limits.md)",
+                    d.legs.len()
+                ),
+            ));
+        }
+        _ => {}
+    }
+    if d.bodies.is_empty() {
+        return Err(err(
+            "bodies".into(),
+            "no moving body: a manipulator needs at least one".into(),
+        ));
+    }
+    if d.bodies.len() > MAX_BODIES {
+        return Err(err(
+            "bodies".into(),
+            format!(
+                "{} moving bodies: at most {MAX_BODIES} (docs/limits.md)",
+                d.bodies.len()
+            ),
+        ));
+    }
+    if d.ground.trim().is_empty() {
+        return Err(err("ground".into(), "an empty name".into()));
+    }
+    Ok(())
+}
+
+/// The bodies' names, each its own, and reference frames (the pose of each body's frame in the
+/// ground's), the ground first with the identity.
+fn body_frames(
+    d: &MultibodyDescription,
+    fields: Fields,
+) -> Result<(Vec<String>, Vec<Displacement>), ManipulatorError> {
+    let err = field_error;
+    let mut names = vec![d.ground.clone()];
+    let mut frames = vec![Displacement::identity()];
+    let angle = d.units.angle;
+    for (k, b) in d.bodies.iter().enumerate() {
+        let field = |f: &str| fields.body(k, f);
+        if b.name.trim().is_empty() {
+            return Err(err(field("name"), "an empty name".into()));
+        }
+        if b.name == d.ground {
+            return Err(err(
+                field("name"),
+                format!(
+                    "{:?} is the ground's name; every body needs its own",
+                    b.name
+                ),
+            ));
+        }
+        if let Some(j) = d.bodies[..k].iter().position(|o| o.name == b.name) {
+            return Err(err(
+                field("name"),
+                format!(
+                    "{:?} names bodies[{j}] too; every body needs its own name",
+                    b.name
+                ),
+            ));
+        }
+        finite(&b.position, &field("position"))?;
+        finite(&b.orientation, &field("orientation"))?;
+        finite(&b.point, &field("point"))?;
+        let rotation =
+            Rotation3::from_scaled_axis(Vector3::from(b.orientation).map(|a| angle.to_radians(a)));
+        names.push(b.name.clone());
+        frames.push(crate::spatial::displacement(
+            rotation,
+            Vector3::from(b.position),
+        ));
+    }
+    Ok((names, frames))
+}
+
+/// The two bodies each leg joins (indices into `names`, the ground 0), checked to be bodies
+/// and distinct.
+fn leg_ends(
+    d: &MultibodyDescription,
+    names: &[String],
+) -> Result<Vec<(usize, usize)>, ManipulatorError> {
+    let err = field_error;
+    let all = || names.join(", ");
+    let mut ends = Vec::with_capacity(d.legs.len());
+    for (i, leg) in d.legs.iter().enumerate() {
+        let find = |name: &str, f: &str| {
+            names.iter().position(|n| n == name).ok_or_else(|| {
+                err(
+                    format!("legs[{i}].{f}"),
+                    format!("{name:?} is not a body (bodies: {})", all()),
+                )
+            })
+        };
+        let (from, to) = (find(&leg.from, "from")?, find(&leg.to, "to")?);
+        if from == to {
+            return Err(err(
+                format!("legs[{i}].to"),
+                format!(
+                    "{:?} again: a leg joins two distinct bodies, and its from is {:?} too",
+                    leg.to, leg.from
+                ),
+            ));
+        }
+        ends.push((from, to));
+    }
+    Ok(ends)
+}
+
+/// Checks that every moving body is joined to the ground by a chain of legs (the legs' `ends`
+/// connect it to body 0), so that nothing floats free of the mechanism.
+fn check_grounded(
+    d: &MultibodyDescription,
+    names: &[String],
+    ends: &[(usize, usize)],
+) -> Result<(), ManipulatorError> {
+    let mut reached = vec![false; names.len()];
+    reached[0] = true;
+    let mut grew = true;
+    while grew {
+        grew = false;
+        for &(a, b) in ends {
+            if reached[a] != reached[b] {
+                reached[a] = true;
+                reached[b] = true;
+                grew = true;
+            }
+        }
+    }
+    if let Some(k) = reached.iter().position(|r| !r) {
+        return Err(field_error(
+            format!("bodies[{}]", k - 1),
+            format!(
+                "{:?} is joined to the ground {:?} by no chain of legs; every moving body needs one",
+                names[k], d.ground
+            ),
+        ));
+    }
+    Ok(())
 }
 
 /// One leg's geometry at the reference configuration, checked: its chain, primitive joints,

@@ -21,6 +21,7 @@ use nalgebra::Vector3;
 use rayon::prelude::*;
 use serde::Serialize;
 use std::collections::BTreeMap;
+use std::fmt::Write as _;
 
 /// The platform's motion with one subset of the inputs locked.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -244,10 +245,10 @@ impl Manipulator {
                 }
                 None => d,
             };
-            key += &format!(" [{}, {}, {}]", round(d.x), round(d.y), round(d.z));
+            let _ = write!(key, " [{}, {}, {}]", round(d.x), round(d.y), round(d.z));
         }
         if let Some(h) = g.pitch {
-            key += &format!(" {}", round(h / m.scale()));
+            let _ = write!(key, " {}", round(h / m.scale()));
         }
         key
     }
@@ -288,9 +289,7 @@ impl Manipulator {
     /// motion is the same whichever other subsets are sampled with it, and whatever the thread
     /// count.
     fn subset_settings(locked: &[usize], settings: &SampleSettings) -> SampleSettings {
-        let mask: u64 = locked
-            .iter()
-            .fold(0, |m, &a| m | 1u64.rotate_left(a as u32));
+        let mask: u64 = locked.iter().fold(0, |m, &a| m | 1u64 << (a % 64));
         SampleSettings {
             seed: settings.seed ^ mask.wrapping_mul(0x9e37_79b9_7f4a_7c15),
             ..*settings
@@ -416,6 +415,10 @@ impl Manipulator {
 }
 
 /// Writes a pattern name, or `?` for a motion that could not be sampled.
+#[expect(
+    clippy::ref_option,
+    reason = "serde's `serialize_with` passes the field, an `Option`, by reference"
+)]
 fn name_or_unknown<S: serde::Serializer>(
     name: &Option<PatternName>,
     serializer: S,
@@ -446,7 +449,14 @@ fn number(x: f64, scale: f64) -> String {
     if x.abs() < 1e-6 * scale {
         return "0".into();
     }
-    let digits = (6 - (x.abs().log10().floor() as i32) - 1).clamp(0, 12) as usize;
+    #[expect(
+        clippy::cast_possible_truncation,
+        reason = "the decimal exponent of a finite f64 is within ±324 (`as` saturates for an \
+                  infinite one, which the clamp below absorbs)"
+    )]
+    let exponent = x.abs().log10().floor() as i32;
+    #[expect(clippy::cast_sign_loss, reason = "clamped to 0..=12")]
+    let digits = (6 - exponent - 1).clamp(0, 12) as usize;
     let text = format!("{x:.digits$}");
     if text.contains('.') {
         text.trim_end_matches('0').trim_end_matches('.').to_string()

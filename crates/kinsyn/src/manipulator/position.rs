@@ -130,37 +130,7 @@ impl Manipulator {
             mask[self.actuators[a].joint] = true;
         }
         let start_frame = self.platform_frame(start);
-        let at = |t: f64| -> (Vec<f64>, Option<Goal>) {
-            let mut q0 = start.to_vec();
-            for &(a, value) in &request.inputs {
-                let j = self.actuators[a].joint;
-                q0[j] = start[j] + t * (value - start[j]);
-            }
-            let goal = match &request.platform {
-                None => None,
-                Some(PlatformGoal::Pose(pose)) => {
-                    // The frame moves along the screw from its start pose to the goal.
-                    let screw = log(&compose(pose, &inverse(&start_frame))).to_vector() * t;
-                    let frame = compose(&exp(&Twist::from_vector(&screw)), &start_frame);
-                    Some(Goal::Pose {
-                        body: self.platform,
-                        displacement: compose(&frame, &inverse(&self.frame)),
-                    })
-                }
-                Some(PlatformGoal::Coordinates(values)) => Some(Goal::Coordinates {
-                    body: self.platform,
-                    frame: self.frame,
-                    values: values
-                        .iter()
-                        .map(|&(c, v)| {
-                            let from = c.of(&start_frame);
-                            (c, from + t * (v - from))
-                        })
-                        .collect(),
-                }),
-            };
-            (q0, goal)
-        };
+        let at = |t: f64| self.path_point(start, &start_frame, request, t);
         let mut q = start.to_vec();
         let (mut t, mut dt, mut steps) = (0.0_f64, 1.0_f64, 0);
         let with_inputs = |t: f64, q: &[f64]| {
@@ -234,6 +204,48 @@ impl Manipulator {
             steps,
             continuous: true,
         })
+    }
+
+    /// The point at fraction `t` (0 at `start`, 1 at the values asked for) of the straight path
+    /// of the continuation: the joint values with each input moved linearly from its start
+    /// value, and the platform's goal, its frame moved along the screw from the start pose to
+    /// the pose asked for (or its coordinates moved linearly).
+    fn path_point(
+        &self,
+        start: &[f64],
+        start_frame: &Displacement,
+        request: &PositionRequest,
+        t: f64,
+    ) -> (Vec<f64>, Option<Goal>) {
+        let mut q0 = start.to_vec();
+        for &(a, value) in &request.inputs {
+            let j = self.actuators[a].joint;
+            q0[j] = start[j] + t * (value - start[j]);
+        }
+        let goal = match &request.platform {
+            None => None,
+            Some(PlatformGoal::Pose(pose)) => {
+                // The frame moves along the screw from its start pose to the goal.
+                let screw = log(&compose(pose, &inverse(start_frame))).to_vector() * t;
+                let frame = compose(&exp(&Twist::from_vector(&screw)), start_frame);
+                Some(Goal::Pose {
+                    body: self.platform,
+                    displacement: compose(&frame, &inverse(&self.frame)),
+                })
+            }
+            Some(PlatformGoal::Coordinates(values)) => Some(Goal::Coordinates {
+                body: self.platform,
+                frame: self.frame,
+                values: values
+                    .iter()
+                    .map(|&(c, v)| {
+                        let from = c.of(start_frame);
+                        (c, from + t * (v - from))
+                    })
+                    .collect(),
+            }),
+        };
+        (q0, goal)
     }
 
     /// Checks that the locks and the goal leave the platform no freedom at `q`.

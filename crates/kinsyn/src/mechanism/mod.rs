@@ -389,7 +389,10 @@ pub(crate) fn characteristic_of(points: &[Vector3<f64>]) -> (Vector3<f64>, f64) 
         .sum::<f64>()
         / n)
         .sqrt();
-    let extent = points.iter().map(nalgebra::Matrix::norm).fold(0.0, f64::max);
+    let extent = points
+        .iter()
+        .map(nalgebra::Matrix::norm)
+        .fold(0.0, f64::max);
     if rms > 1e-12 * extent && rms > 1e-150 {
         (centroid, rms)
     } else {

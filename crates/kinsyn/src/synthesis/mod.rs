@@ -59,6 +59,11 @@ pub fn parse_word(word: &str) -> Option<Vec<Primitive>> {
 
 /// The word with each revolute marked by its parallel group, e.g. `PPRaRaRR`.
 #[must_use]
+#[expect(
+    clippy::cast_possible_truncation,
+    reason = "a parallel group holds at least two of the word's revolutes, so a six-joint word \
+              of the tables has at most three (the notation's a, b, c)"
+)]
 pub fn variant_label(word: &[Primitive], groups: &[Vec<usize>]) -> String {
     let joints = word
         .iter()
@@ -162,6 +167,9 @@ fn assignments<'a>(
 /// ([`rules::violations`]), and each admissible one is read in C/U/S letters
 /// ([`rules::readings`]). The tables are fixed (six-joint words, at most three P), so the
 /// whole enumeration takes about 3–6 ms (`cargo bench --bench synthesis`).
+///
+/// # Panics
+/// Never: every word of the built-in Appendix tables is a P/R word.
 #[must_use]
 pub fn enumerate(options: &Options) -> Vec<Candidate> {
     let mut out = Vec::new();

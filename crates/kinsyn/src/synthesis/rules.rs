@@ -51,8 +51,6 @@ pub fn axis_word(axes: &[AxisIndex]) -> AxisWord {
 /// are kept.
 #[must_use]
 pub fn revolute_patterns(n: usize, counts: [u8; 3]) -> Vec<Vec<AxisIndex>> {
-    let mut out = Vec::new();
-    let mut seq = Vec::with_capacity(n);
     fn rec(n: usize, counts: [u8; 3], seq: &mut Vec<AxisIndex>, out: &mut Vec<Vec<AxisIndex>>) {
         if seq.len() == n {
             let mut c = [0u8; 3];
@@ -72,6 +70,8 @@ pub fn revolute_patterns(n: usize, counts: [u8; 3]) -> Vec<Vec<AxisIndex>> {
             seq.pop();
         }
     }
+    let mut out = Vec::new();
+    let mut seq = Vec::with_capacity(n);
     rec(n, counts, &mut seq, &mut out);
     out
 }
@@ -333,6 +333,11 @@ pub fn readings(word: &[Primitive], axes: &[AxisIndex]) -> Vec<Chain> {
 #[must_use]
 pub fn readings_with(word: &[Primitive], axes: &[AxisIndex], grouping: Grouping) -> Vec<Chain> {
     let groups = parallel_groups(word, axes);
+    #[expect(
+        clippy::cast_possible_truncation,
+        reason = "a parallel group holds at least two of the word's revolutes, so a six-joint \
+                  word of the tables has at most three (the notation's a, b, c)"
+    )]
     let mark = |i: usize| Mark {
         group: groups.iter().position(|g| g.contains(&i)).map(|g| g as u8),
         actuated: false,
