@@ -488,7 +488,7 @@ impl Manipulator {
     /// actuators held.
     ///
     /// # Errors
-    /// [`ManipulatorError::Pose`] when the loops cannot be closed at that pose.
+    /// [`ManipulatorError::Position`] when the loops cannot be closed at that pose.
     pub fn assemble_at(
         &self,
         position: Vector3<f64>,

@@ -115,7 +115,7 @@ impl Manipulator {
     /// ```
     ///
     /// # Errors
-    /// [`ManipulatorError::Pose`] when the continuation cannot go on: the values asked for lie
+    /// [`ManipulatorError::Position`] when the continuation cannot go on: the values asked for lie
     /// beyond the workspace, or a singularity lies on the way (the message gives how far it
     /// got and the residual), or when the request leaves the platform free to move (fewer
     /// values than degrees of freedom).
