@@ -781,14 +781,18 @@ fn rank_json(r: &kinsyn::screw::Rank, generic: Option<usize>) -> serde_json::Val
     })
 }
 
-fn jacobian_text(m: &Manipulator, a: &Analysis) -> String {
-    let mut s = String::new();
-    let inputs: Vec<String> = a
-        .jacobians
+/// The labels of the inputs left free in an analysis.
+fn free_labels(m: &Manipulator, a: &Analysis) -> Vec<String> {
+    a.jacobians
         .free
         .iter()
         .map(|&i| m.actuators()[i].label())
-        .collect();
+        .collect()
+}
+
+fn jacobian_text(m: &Manipulator, a: &Analysis) -> String {
+    let mut s = String::new();
+    let inputs = free_labels(m, a);
     let _ = writeln!(
         s,
         "J_D [v_P; ω] = J_I [{}]   (rows: wrenches (f; m_P) at P; J_I column of the row's input)",
@@ -860,12 +864,7 @@ fn closure_io_text(m: &Manipulator, a: &Analysis) -> String {
         "  with the locked inputs held, the end-effector has {} dof: constraint wrenches of rank {} (generic {})",
         a.platform_dof, a.constraint_rank.rank, a.generic.constraint
     );
-    let free: Vec<String> = a
-        .jacobians
-        .free
-        .iter()
-        .map(|&i| m.actuators()[i].label())
-        .collect();
+    let free = free_labels(m, a);
     let _ = writeln!(
         s,
         "  with the end-effector held, the free inputs [{}] keep {} independent rate{} (generic {})",

@@ -358,18 +358,7 @@ impl Manipulator {
     /// end-effector: no rows, the free inputs, P and each leg's rank.
     fn without_leg_wrenches(&self, q: &[f64], locked: &[usize]) -> Jacobians {
         let screws = self.mechanism.joint_screws(q);
-        let leg_ranks = self
-            .legs
-            .iter()
-            .map(|leg| {
-                let joints: Vec<usize> = leg.joints.clone().collect();
-                linalg::rank(
-                    &self.unitless_leg_twists(&screws, &joints),
-                    DEFAULT_RANK_TOLERANCE,
-                )
-                .rank
-            })
-            .collect();
+        let leg_ranks = self.leg_ranks(&screws).iter().map(|r| r.rank).collect();
         let free: Vec<usize> = (0..self.actuators.len())
             .filter(|a| !locked.contains(a))
             .collect();
@@ -421,6 +410,20 @@ impl Manipulator {
         let (_, jd) = self.closure_output(q, &all);
         let (_, constraint) = self.closure_output(q, locked);
         (jd, constraint)
+    }
+
+    /// The rank of each leg's joint twists (dimensionless) at the current joint `screws`.
+    pub(super) fn leg_ranks(&self, screws: &[screw::Twist]) -> Vec<linalg::Rank> {
+        self.legs
+            .iter()
+            .map(|leg| {
+                let joints: Vec<usize> = leg.joints.clone().collect();
+                linalg::rank(
+                    &self.unitless_leg_twists(screws, &joints),
+                    DEFAULT_RANK_TOLERANCE,
+                )
+            })
+            .collect()
     }
 
     /// The current screws of a leg's joints in the dimensionless form (columns of unit size:

@@ -9,7 +9,7 @@
 
 use super::Manipulator;
 use super::jacobian::Jacobians;
-use crate::linalg::{self, DEFAULT_RANK_TOLERANCE, Rank};
+use crate::linalg::Rank;
 use crate::mechanism::SampleSettings;
 use serde::Serialize;
 
@@ -235,17 +235,7 @@ impl Manipulator {
         let (jd_rank, constraint_rank) = self.output_ranks(&q, locked, &jacobians);
         let platform_dof = 6 - constraint_rank.rank;
         let screws = m.joint_screws(&q);
-        let leg_ranks: Vec<Rank> = self
-            .legs
-            .iter()
-            .map(|leg| {
-                let joints: Vec<usize> = leg.joints.clone().collect();
-                linalg::rank(
-                    &self.unitless_leg_twists(&screws, &joints),
-                    DEFAULT_RANK_TOLERANCE,
-                )
-            })
-            .collect();
+        let leg_ranks: Vec<Rank> = self.leg_ranks(&screws);
         let generic = self.generic_ranks(&q, locked, settings)?;
         let inputs_with_end_effector_held = self.inputs_with_end_effector_held(&q, locked);
         let mut singularities =
