@@ -1,0 +1,464 @@
+//! `kinsyn analyze`: a configuration placed by pose, input values and start, and its mobility,
+//! Jacobians, ranks and singularities as text or JSON.
+
+use super::{clean, leg_warnings, load_with_body, warn};
+use crate::cli::{CliError, json};
+use kinsyn::manipulator::{
+    Analysis, ContinuationFailure, Manipulator, ManipulatorError, PositionError, PositionRequest,
+    RowKind, rank_text,
+};
+use kinsyn::mechanism::SampleSettings;
+use std::fmt::Write as _;
+use std::path::Path;
+
+/// The platform pose of `--pose TEXT` (or another option named `option`) for `m`, assembled
+/// from the reference configuration with the `locked` inputs held.
+pub fn configuration_at_pose(
+    m: &Manipulator,
+    option: &str,
+    text: &str,
+    locked: &[usize],
+) -> Result<Vec<f64>, CliError> {
+    let request = PositionRequest {
+        platform: Some(
+            m.parse_pose(text)
+                .map_err(|e| CliError::Input(format!("{option} {text:?}: {e}")))?,
+        ),
+        held: locked.to_vec(),
+        ..PositionRequest::default()
+    };
+    m.solve_position(&m.reference(), &request)
+        .map(|p| p.q)
+        .map_err(|e| CliError::Input(format!("{option} {text:?}: {}", position_error(&e))))
+}
+
+/// A position error in words, with the option that helps when the start is too far.
+fn position_error(e: &ManipulatorError) -> String {
+    match e {
+        ManipulatorError::Position(PositionError::NotReached(
+            ContinuationFailure::TooManySteps { .. },
+        )) => format!("{e} (analyze --from)"),
+        _ => e.to_string(),
+    }
+}
+
+/// Where `kinsyn analyze` puts the manipulator: a start (the reference, or `--from`), then the
+/// input values and platform coordinates asked for, reached by continuation from it.
+#[derive(Debug, Default)]
+pub struct Placement<'a> {
+    /// `--pose`: a whole or partial platform pose.
+    pub pose: Option<&'a str>,
+    /// `--inputs`: input values.
+    pub inputs: Option<&'a str>,
+    /// `--from`: the pose of the start configuration.
+    pub from: Option<&'a str>,
+    /// `--body`: the moving body analysed instead of the description's end-effector.
+    pub body: Option<&'a str>,
+}
+
+/// How the configuration analysed was reached, for the report.
+struct Reached {
+    /// "the reference configuration" or "--from …".
+    start: String,
+    /// Whether the start was given (`--from`) rather than the reference.
+    start_given: bool,
+    /// Continuation steps from the start (0 when nothing was asked).
+    steps: usize,
+    /// Whether the configuration is the one continuous with the start.
+    continuous: bool,
+}
+
+/// `kinsyn analyze`.
+pub fn analyze(
+    path: &Path,
+    placement: &Placement<'_>,
+    lock: Option<&str>,
+    settings: &SampleSettings,
+    as_json: bool,
+) -> Result<String, CliError> {
+    let m = load_with_body(path, placement.body)?;
+    let locked = match lock {
+        Some(text) => m
+            .parse_locks(text)
+            .map_err(|e| CliError::Input(format!("--lock {text:?}: {e}")))?,
+        None => Vec::new(),
+    };
+    let (start, start_text) = match placement.from {
+        Some(text) => (
+            configuration_at_pose(&m, "--from", text, &[])?,
+            format!("--from {text}"),
+        ),
+        None => (m.reference(), "the reference configuration".to_string()),
+    };
+    let mut request = PositionRequest {
+        held: locked.clone(),
+        ..PositionRequest::default()
+    };
+    if let Some(text) = placement.inputs {
+        request.inputs = m
+            .parse_inputs(text)
+            .map_err(|e| CliError::Input(format!("--inputs {text:?}: {e}")))?;
+        // Without a pose, inputs not named keep their values at the start; with one, they
+        // are free, and the pose and the named inputs are met together.
+        if placement.pose.is_none() {
+            request.held.extend(
+                (0..m.actuators().len()).filter(|a| !request.inputs.iter().any(|&(b, _)| b == *a)),
+            );
+        }
+    }
+    if let Some(text) = placement.pose {
+        request.platform = Some(
+            m.parse_pose(text)
+                .map_err(|e| CliError::Input(format!("--pose {text:?}: {e}")))?,
+        );
+    }
+    let (q, steps, continuous) = if request.inputs.is_empty() && request.platform.is_none() {
+        (start, 0, true)
+    } else {
+        let asked: Vec<String> = [("--inputs", placement.inputs), ("--pose", placement.pose)]
+            .iter()
+            .filter_map(|(o, t)| t.map(|t| format!("{o} {t:?}")))
+            .collect();
+        let p = m
+            .solve_position(&start, &request)
+            .map_err(|e| CliError::Input(format!("{}: {}", asked.join(" "), position_error(&e))))?;
+        (p.q, p.steps, p.continuous)
+    };
+    let reached = Reached {
+        start: start_text,
+        start_given: placement.from.is_some(),
+        steps,
+        continuous,
+    };
+    let a = m
+        .analyse(&q, &locked, settings)
+        .map_err(|e| CliError::Input(e.to_string()))?;
+    let warnings = leg_warnings(&m);
+    warn(path, &warnings);
+    if as_json {
+        return Ok(json(&analysis_json(&m, &a, &reached, &warnings)));
+    }
+    Ok(analysis_text(&m, &a, &reached))
+}
+
+/// The input values at `q` in the file's units (lengths, or angles in its angle unit), with
+/// their labels: `P1.3 = 0.050000`.
+fn input_values(m: &Manipulator, q: &[f64]) -> Vec<(String, f64)> {
+    m.actuators()
+        .iter()
+        .map(|a| {
+            let value = q[a.joint];
+            let shown = match a.kind {
+                kinsyn::notation::Primitive::R => m.units().angle.from_radians(value),
+                kinsyn::notation::Primitive::P => value,
+            };
+            (a.label(), shown)
+        })
+        .collect()
+}
+
+fn row_label(m: &Manipulator, kind: RowKind) -> String {
+    match kind {
+        RowKind::Actuation { actuator } => format!("input {}", m.actuators()[actuator].label()),
+        RowKind::Locked { actuator } => format!("locked {}", m.actuators()[actuator].label()),
+        RowKind::Constraint { leg } => format!("constraint leg {}", leg + 1),
+    }
+}
+
+fn analysis_json(
+    m: &Manipulator,
+    a: &Analysis,
+    reached: &Reached,
+    warnings: &[String],
+) -> serde_json::Value {
+    let frame = m.platform_frame(&a.q);
+    let rv = kinsyn::mechanism::rotation_log(&frame.rotation);
+    let rows: Vec<serde_json::Value> = a
+        .jacobians
+        .rows
+        .iter()
+        .map(|r| serde_json::json!({"row": row_label(m, r.kind), "jd": r.wrench, "ji": r.input}))
+        .collect();
+    serde_json::json!({
+        "manipulator": m.name(),
+        "units": m.units(),
+        "locked": m.lock_text(&a.locked),
+        "point": [a.jacobians.point.x, a.jacobians.point.y, a.jacobians.point.z],
+        "platform_position": [frame.translation.x, frame.translation.y, frame.translation.z],
+        "platform_rotation_vector_rad": [rv.x, rv.y, rv.z],
+        "joint_values": a.q,
+        "input_values": input_values(m, &a.q).into_iter().map(|(k, v)| (k, serde_json::json!(v))).collect::<serde_json::Map<String, serde_json::Value>>(),
+        "reached_from": reached.start,
+        "continuation_steps": reached.steps,
+        "continuous_with_start": reached.continuous,
+        "mobility": a.mobility,
+        "closure_rank": rank_json(&a.closure_rank, None),
+        "platform_dof": a.platform_dof,
+        "inputs": a.jacobians.free.iter().map(|&i| m.actuators()[i].label()).collect::<Vec<_>>(),
+        "rows": rows,
+        "jd_rank": rank_json(&a.jd_rank, Some(a.generic.jd)),
+        "constraint_rank": rank_json(&a.constraint_rank, Some(a.generic.constraint)),
+        "leg_ranks": a.leg_ranks.iter().zip(&a.generic.legs).map(|(r, &g)| rank_json(r, Some(g))).collect::<Vec<_>>(),
+        "generic_assemblies": a.generic.assemblies,
+        "singularities": a.singularities,
+        "warnings": warnings,
+        "end_effector": m.bodies()[m.end_effector()].name,
+        "bodies": bodies_json(m, a),
+        "leg_wrench_jacobians": a.leg_wrench_jacobians,
+        "inputs_with_end_effector_held": {
+            "here": a.inputs_with_end_effector_held,
+            "generic": a.generic.inputs_with_end_effector_held,
+        },
+    })
+}
+
+/// Each moving body at the configuration analysed: its name, dof with the locked inputs held,
+/// frame origin, rotation vector (radians) and reference point.
+fn bodies_json(m: &Manipulator, a: &Analysis) -> serde_json::Value {
+    let bodies: Vec<serde_json::Value> = m
+        .bodies()
+        .iter()
+        .enumerate()
+        .map(|(k, b)| {
+            let frame = m.body_frame(k, &a.q);
+            let rv = kinsyn::mechanism::rotation_log(&frame.rotation);
+            let p = m.body_point(k, &a.q);
+            serde_json::json!({
+                "name": b.name,
+                "end_effector": k == m.end_effector(),
+                "dof": a.body_dof[k],
+                "position": [frame.translation.x, frame.translation.y, frame.translation.z],
+                "rotation_vector_rad": [rv.x, rv.y, rv.z],
+                "point": [p.x, p.y, p.z],
+            })
+        })
+        .collect();
+    serde_json::Value::Array(bodies)
+}
+
+/// A rank decision with its gap and the generic rank it is compared with.
+fn rank_json(r: &kinsyn::screw::Rank, generic: Option<usize>) -> serde_json::Value {
+    let (kept, dropped) = r.gap();
+    serde_json::json!({
+        "rank": r.rank,
+        "generic": generic,
+        "tolerance": r.tolerance,
+        "gap": {"smallest_kept": kept, "largest_dropped": dropped},
+        "singular_values": r.singular_values,
+    })
+}
+
+/// The labels of the inputs left free in an analysis.
+fn free_labels(m: &Manipulator, a: &Analysis) -> Vec<String> {
+    a.jacobians
+        .free
+        .iter()
+        .map(|&i| m.actuators()[i].label())
+        .collect()
+}
+
+fn jacobian_text(m: &Manipulator, a: &Analysis) -> String {
+    let mut s = String::new();
+    let inputs = free_labels(m, a);
+    let _ = writeln!(
+        s,
+        "J_D [v_P; ω] = J_I [{}]   (rows: wrenches (f; m_P) at P; J_I column of the row's input)",
+        inputs.join(" ")
+    );
+    for r in &a.jacobians.rows {
+        let cells: Vec<String> = r
+            .wrench
+            .iter()
+            .map(|&x| format!("{:>10.6}", clean(x)))
+            .collect();
+        let _ = writeln!(
+            s,
+            "  {:<20} [{}] | {:.6}",
+            row_label(m, r.kind),
+            cells.join(" "),
+            r.input
+        );
+    }
+    let _ = writeln!(
+        s,
+        "J_D: {} (generic {})",
+        rank_text(&a.jd_rank),
+        a.generic.jd
+    );
+    let _ = writeln!(
+        s,
+        "constraint rows: {} (generic {})",
+        rank_text(&a.constraint_rank),
+        a.generic.constraint
+    );
+    s
+}
+
+/// What replaces `J_D`, `J_I` when the legs do not all run from the ground to the end-effector:
+/// why they are not defined, and the end-effector's input–output freedoms from the loop
+/// closure (docs/manipulators.md, "Several moving bodies").
+fn closure_io_text(m: &Manipulator, a: &Analysis) -> String {
+    let mut s = String::new();
+    let ee = m.platform();
+    let off: Vec<String> = m
+        .legs()
+        .iter()
+        .enumerate()
+        .filter(|(_, l)| l.from != m.mechanism().ground() || l.to != ee)
+        .map(|(i, l)| {
+            format!(
+                "leg {} {} → {}",
+                i + 1,
+                m.mechanism().body_name(l.from),
+                m.mechanism().body_name(l.to)
+            )
+        })
+        .collect();
+    let _ = writeln!(
+        s,
+        "J_D, J_I: not defined: paper 000's leg wrenches act on the end-effector only when every leg runs from the ground to it, and {} do not; from the loop-closure Jacobian instead:",
+        off.join(", ")
+    );
+    let plural = |n: usize| if n == 1 { "" } else { "s" };
+    let held = 6 - a.jd_rank.rank;
+    let generic_held = 6 - a.generic.jd;
+    let _ = writeln!(
+        s,
+        "  with every input held, the end-effector keeps {held} dof (generic {generic_held}; 0 when the inputs fix it)"
+    );
+    let _ = writeln!(
+        s,
+        "  with the locked inputs held, the end-effector has {} dof: constraint wrenches of rank {} (generic {})",
+        a.platform_dof, a.constraint_rank.rank, a.generic.constraint
+    );
+    let free = free_labels(m, a);
+    let _ = writeln!(
+        s,
+        "  with the end-effector held, the free inputs [{}] keep {} independent rate{} (generic {})",
+        free.join(" "),
+        a.inputs_with_end_effector_held,
+        plural(a.inputs_with_end_effector_held),
+        a.generic.inputs_with_end_effector_held
+    );
+    s
+}
+
+/// The opening lines of `analyze`: the configuration analysed (the end-effector's point P and
+/// rotation vector, the locked inputs), how it was reached from the start, and the input
+/// values.
+fn configuration_text(m: &Manipulator, a: &Analysis, reached: &Reached) -> String {
+    let mut s = String::new();
+    let frame = m.platform_frame(&a.q);
+    let rv = kinsyn::mechanism::rotation_log(&frame.rotation);
+    let p = a.jacobians.point;
+    let several = m.bodies().len() > 1;
+    let title = if several {
+        format!(
+            "{}, end-effector {:?}",
+            m.name(),
+            m.bodies()[m.end_effector()].name
+        )
+    } else {
+        m.name().to_string()
+    };
+    let _ = writeln!(
+        s,
+        "{title}: P = [{:.6}, {:.6}, {:.6}] {}; platform rotation vector [{:.6}, {:.6}, {:.6}] rad; locked: {}",
+        clean(p.x),
+        clean(p.y),
+        clean(p.z),
+        m.units().length,
+        clean(rv.x),
+        clean(rv.y),
+        clean(rv.z),
+        m.lock_text(&a.locked)
+    );
+    if !reached.continuous {
+        let _ = writeln!(
+            s,
+            "reached from {} by damped Newton steps, not by continuation: the path of the values from the start leaves the workspace or meets a singularity, so this may be another assembly mode than the start's",
+            reached.start
+        );
+    } else if reached.steps > 0 || reached.start_given {
+        let _ = writeln!(
+            s,
+            "reached from {} in {} continuation step{}: the assembly continuous with it (another start, --from POSE, may give another assembly)",
+            reached.start,
+            reached.steps,
+            if reached.steps == 1 { "" } else { "s" }
+        );
+    }
+    let values: Vec<String> = input_values(m, &a.q)
+        .iter()
+        .map(|(label, v)| format!("{label} = {:.6}", clean(*v)))
+        .collect();
+    let _ = writeln!(
+        s,
+        "input values (from the reference; {}, angles in {}): {}",
+        m.units().length,
+        m.units().angle.name(),
+        values.join(", ")
+    );
+    s
+}
+
+fn analysis_text(m: &Manipulator, a: &Analysis, reached: &Reached) -> String {
+    let mut s = configuration_text(m, a, reached);
+    let several = m.bodies().len() > 1;
+    if several {
+        let dofs: Vec<String> = m
+            .bodies()
+            .iter()
+            .zip(&a.body_dof)
+            .map(|(b, d)| format!("{} {d}", b.name))
+            .collect();
+        let _ = writeln!(
+            s,
+            "mobility {} (joint rates closing the loops); moving bodies' dof (twist spaces on the loop closure): {}; end-effector {:?}",
+            a.mobility,
+            dofs.join(", "),
+            m.bodies()[m.end_effector()].name
+        );
+    } else {
+        let _ = writeln!(
+            s,
+            "mobility {} (joint rates closing the loops), platform dof {} (6 − rank of the constraint wrenches; {} internal)",
+            a.mobility,
+            a.platform_dof,
+            a.mobility.saturating_sub(a.platform_dof)
+        );
+    }
+    let (kept, dropped) = a.closure_rank.gap();
+    let _ = writeln!(
+        s,
+        "loop closure: rank {} over {} free joint rates, gap {kept:.3e} kept / {dropped:.3e} dropped",
+        a.closure_rank.rank,
+        a.closure_rank.rank + a.mobility,
+    );
+    if a.leg_wrench_jacobians {
+        s += &jacobian_text(m, a);
+    } else {
+        s += &closure_io_text(m, a);
+    }
+    for (i, (r, g)) in a.leg_ranks.iter().zip(&a.generic.legs).enumerate() {
+        let _ = writeln!(
+            s,
+            "leg {} joint twists: {} (generic {g})",
+            i + 1,
+            rank_text(r)
+        );
+    }
+    if a.generic.constraint == 6 && a.locked.is_empty() {
+        let _ = writeln!(
+            s,
+            "note: the constraint wrenches have rank 6 at every generic configuration: with every input free the platform cannot move (a structure, not a manipulator)"
+        );
+    }
+    if a.singularities.is_empty() {
+        let _ = writeln!(s, "no singularity");
+    }
+    for sing in &a.singularities {
+        let _ = writeln!(s, "singularity ({:?}): {}", sing.kind, sing.detail());
+    }
+    s
+}

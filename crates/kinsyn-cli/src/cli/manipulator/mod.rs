@@ -1,0 +1,162 @@
+//! `kinsyn build`, `kinsyn modes`, `kinsyn analyze`: manipulators from description files. This
+//! module reads a file (`load`, refusing what is not a description) and builds one (`build`);
+//! `modes` and `analyze` are in their own files.
+
+mod analyze;
+mod modes;
+
+pub use analyze::{Placement, analyze};
+pub use modes::{DEFAULT_MAX_SUBSETS, MAX_SUBSETS_CEILING, Selection, modes};
+
+use super::CliError;
+use kinsyn::manipulator::build::{BuildField, BuildSpec, build};
+use kinsyn::manipulator::{Manipulator, ManipulatorError, file};
+use std::io::Read as _;
+use std::path::Path;
+
+/// The largest manipulator file read, in bytes: the largest description within the limits of
+/// docs/limits.md (12 legs of 6 joints, written out with every optional field) is under
+/// 64 KiB; anything much larger is not a description.
+pub const MAX_FILE_BYTES: u64 = 1 << 20;
+
+/// Reads and builds a manipulator file; errors name the file and the field. A path that is
+/// not a regular file, a file over [`MAX_FILE_BYTES`], or text that is not UTF-8 or not a
+/// description is refused as "not a kinsyn manipulator file" before it is parsed further.
+pub fn load(path: &Path) -> Result<Manipulator, CliError> {
+    let shown = path.display();
+    let refuse =
+        |why: String| CliError::Input(format!("{shown} is {} ({why})", file::NOT_A_DESCRIPTION));
+    let metadata = std::fs::metadata(path).map_err(|e| CliError::Input(format!("{shown}: {e}")))?;
+    if !metadata.is_file() {
+        return Err(refuse(if metadata.is_dir() {
+            "a directory".into()
+        } else {
+            "not a regular file".into()
+        }));
+    }
+    if metadata.len() > MAX_FILE_BYTES {
+        return Err(refuse(format!(
+            "{} bytes; description files are at most {} bytes",
+            metadata.len(),
+            MAX_FILE_BYTES
+        )));
+    }
+    let mut bytes = Vec::new();
+    std::fs::File::open(path)
+        .and_then(|f| f.take(MAX_FILE_BYTES + 1).read_to_end(&mut bytes))
+        .map_err(|e| CliError::Input(format!("{shown}: {e}")))?;
+    if bytes.len() as u64 > MAX_FILE_BYTES {
+        return Err(refuse(format!(
+            "more than {MAX_FILE_BYTES} bytes; description files are at most that"
+        )));
+    }
+    let text = String::from_utf8(bytes).map_err(|e| {
+        refuse(format!(
+            "not UTF-8 text: invalid byte at offset {}",
+            e.utf8_error().valid_up_to()
+        ))
+    })?;
+    Manipulator::from_json(&text).map_err(|e| match &e {
+        ManipulatorError::Description(d) if d.is_not_a_description() => {
+            CliError::Input(format!("{shown} is {}", d.message))
+        }
+        _ => CliError::Input(format!("{shown}: {e}")),
+    })
+}
+
+/// [`load`], with the moving body `body` (`--body NAME`) as the end-effector when given.
+fn load_with_body(path: &Path, body: Option<&str>) -> Result<Manipulator, CliError> {
+    let m = load(path)?;
+    match body {
+        None => Ok(m),
+        Some(name) => m
+            .with_end_effector(name)
+            .map_err(|e| CliError::Input(format!("--body {name:?}: {e}"))),
+    }
+}
+
+/// The leg warnings of `m` (docs/mechanism-format.md, "Leg checks").
+fn leg_warnings(m: &Manipulator) -> Vec<String> {
+    m.leg_warnings().iter().map(ToString::to_string).collect()
+}
+
+/// Prints each warning on stderr as one line `warning: FILE: …`. Called once the command has
+/// succeeded, so that an error stays the only line on stderr.
+fn warn(path: &Path, warnings: &[String]) {
+    for w in warnings {
+        super::terminal::warning(&format!("{}: {w}", path.display()));
+    }
+}
+
+/// The `kinsyn build` option that sets a [`BuildSpec`] field.
+fn build_flag(field: BuildField) -> String {
+    match field {
+        BuildField::Legs => "--legs",
+        BuildField::Chain => "--chain",
+        BuildField::Axes => "--axes",
+        BuildField::Actuated => "--actuated",
+        BuildField::BaseRadius => "--base-radius",
+        BuildField::PlatformRadius => "--platform-radius",
+        BuildField::Height => "--height",
+        BuildField::Twist => "--twist",
+    }
+    .to_string()
+}
+
+/// `kinsyn build`: writes a description (to `output`, or returns it for stdout).
+pub fn build_command(spec: &BuildSpec, output: Option<&Path>) -> Result<String, CliError> {
+    let description = build(spec).map_err(|e| CliError::Input(e.describe(build_flag)))?;
+    // Check that what is written can be read back and built.
+    let m = Manipulator::new(&description).map_err(|e| {
+        CliError::Input(format!(
+            "--chain {:?} in this geometry makes no usable manipulator: {e}",
+            spec.chain.trim()
+        ))
+    })?;
+    // `build` refuses legs that are not generic; the file as read back must agree.
+    if let Some(w) = m.leg_warnings().first() {
+        return Err(CliError::Input(format!(
+            "--chain {:?}: {w}",
+            spec.chain.trim()
+        )));
+    }
+    let text = description.to_json();
+    match output {
+        Some(path) => {
+            std::fs::write(path, &text)
+                .map_err(|e| std::io::Error::new(e.kind(), format!("{}: {e}", path.display())))?;
+            let mobility = m.mechanism().mobility(&m.reference(), &[]).dof;
+            let (twists, _) = m.platform_twists(&m.reference(), &[]);
+            let dof = twists.ncols();
+            Ok(format!(
+                "wrote {} ({}: {} legs, {} inputs; mobility {mobility}, platform dof {dof} at the reference pose)\n",
+                path.display(),
+                description.name,
+                description.legs.len(),
+                m.actuators().len()
+            ))
+        }
+        None => Ok(text),
+    }
+}
+
+/// A value printed with six decimals, without a "-0.000000" for round-off.
+fn clean(x: f64) -> f64 {
+    if x.abs() < 5e-7 { 0.0 } else { x }
+}
+
+/// The moving bodies' names, comma separated, the end-effector marked.
+fn body_names(m: &Manipulator) -> String {
+    m.bodies()
+        .iter()
+        .enumerate()
+        .map(|(k, b)| {
+            if k == m.end_effector() {
+                format!("{} (end-effector)", b.name)
+            } else {
+                b.name.clone()
+            }
+        })
+        .collect::<Vec<_>>()
+        .join(", ")
+}

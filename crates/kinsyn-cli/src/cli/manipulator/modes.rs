@@ -1,0 +1,401 @@
+//! `kinsyn modes`: the lock subsets chosen, sampled with a progress bar, and the patterns
+//! reached — a summary per dof, one subset in detail, or JSON.
+
+use super::analyze::configuration_at_pose;
+use super::{body_names, clean, leg_warnings, load_with_body, warn};
+use crate::cli::{CliError, json};
+use indicatif::{ProgressBar, ProgressStyle};
+use kinsyn::manipulator::{Manipulator, Mode, Modes, PatternModes};
+use kinsyn::mechanism::SampleSettings;
+use kinsyn::motion::MIN_SEPARATION;
+use std::fmt::Write as _;
+use std::path::Path;
+
+/// Which lock subsets `kinsyn modes` samples.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Selection {
+    /// Every subset of the n inputs: 2^n.
+    All,
+    /// The subsets with at most this many inputs locked (`--max-locks`).
+    MaxLocks(usize),
+    /// One subset, given by its labels (`--lock`), printed in detail.
+    Lock(String),
+}
+
+/// The default of `modes --max-subsets`: 4096 sampled motions, about 16–20 s of CPU for legs
+/// like the 6-UPS's (4–5 ms per subset measured, docs/limits-modes.md), and every subset of up
+/// to 12 inputs.
+pub const DEFAULT_MAX_SUBSETS: u32 = 4096;
+
+/// The largest `--max-subsets`: 2^16, every subset of 16 inputs (the old limit of 16 inputs),
+/// about 4–6 minutes of CPU at 4–5 ms per subset.
+pub const MAX_SUBSETS_CEILING: u32 = 1 << 16;
+
+/// The lock sets printed per pattern in text; `--json` lists them all.
+const LOCK_SETS_SHOWN: usize = 6;
+
+/// The patterns printed per dof and per list of the summary in text; `--json` lists them all.
+const PATTERNS_SHOWN: usize = 12;
+
+/// The configuration the modes are sampled from: the file's reference configuration, or the
+/// assembly with the platform frame at `pose` (`x,y,z,rx,ry,rz` as for `analyze --pose`) with
+/// every input free, so that each subset's locked inputs are held at their values there.
+fn start_configuration(m: &Manipulator, pose: Option<&str>) -> Result<Vec<f64>, CliError> {
+    match pose {
+        None => Ok(m.reference()),
+        Some(text) => configuration_at_pose(m, "--pose", text, &[]),
+    }
+}
+
+/// The lock subsets a selection asks for, refused when they are more than `max_subsets`
+/// (each is one sampled motion; the refusal says how to ask for fewer).
+fn selected_subsets(
+    path: &Path,
+    m: &Manipulator,
+    selection: &Selection,
+    max_subsets: u32,
+) -> Result<Vec<Vec<usize>>, CliError> {
+    let n = m.actuators().len();
+    let max_locks = match selection {
+        Selection::Lock(text) => {
+            let locked = m
+                .parse_locks(text)
+                .map_err(|e| CliError::Input(format!("--lock {text:?}: {e}")))?;
+            return Ok(vec![locked]);
+        }
+        Selection::All => n,
+        Selection::MaxLocks(k) => *k,
+    };
+    let count = m.lock_subset_count(max_locks);
+    let limit = u128::from(max_subsets);
+    if count <= limit {
+        return Ok(m.lock_subsets(max_locks));
+    }
+    let scope = match selection {
+        Selection::MaxLocks(k) => format!("with at most {k} locked"),
+        _ => format!("(all 2^{n})"),
+    };
+    // The most locks whose subsets stay within the limit (0 always does: one subset).
+    let fits = (0..n)
+        .take_while(|&k| m.lock_subset_count(k) <= limit)
+        .last()
+        .unwrap_or(0);
+    Err(CliError::Input(format!(
+        "{}: {n} inputs give {count} lock subsets {scope}, more than --max-subsets {max_subsets} (each is a sampled motion of about 1–5 ms of CPU, docs/limits.md); use --max-locks {fits} ({} subsets) or --lock SET, or raise --max-subsets (at most {MAX_SUBSETS_CEILING})",
+        path.display(),
+        m.lock_subset_count(fits)
+    )))
+}
+
+/// A progress bar over `count` lock subsets on stderr. indicatif hides it (draws nothing) when
+/// stderr is not a terminal, so pipes, files and tests see only the output and the errors.
+fn subset_progress(count: usize) -> ProgressBar {
+    let bar = ProgressBar::new(count as u64);
+    if let Ok(style) = ProgressStyle::with_template(
+        "{msg} [{bar:30}] {pos}/{len} lock subsets, {elapsed} elapsed, about {eta} left",
+    ) {
+        bar.set_style(style.progress_chars("=> "));
+    }
+    bar.set_message("modes");
+    bar
+}
+
+/// `kinsyn modes`: the platform's motion for the selected lock subsets, with the locked inputs
+/// held at their values at the start configuration (the reference, or `--pose`).
+pub fn modes(
+    path: &Path,
+    (pose, body): (Option<&str>, Option<&str>),
+    selection: &Selection,
+    max_subsets: u32,
+    settings: &SampleSettings,
+    as_json: bool,
+) -> Result<String, CliError> {
+    let m = load_with_body(path, body)?;
+    let subsets = selected_subsets(path, &m, selection, max_subsets)?;
+    let start = start_configuration(&m, pose)?;
+    let modes = if subsets.len() > 1 {
+        let bar = subset_progress(subsets.len());
+        let modes = m.modes_from(&start, &subsets, settings, &|| bar.inc(1));
+        bar.finish_and_clear();
+        modes
+    } else {
+        m.modes_from(&start, &subsets, settings, &|| {})
+    };
+    let warnings = leg_warnings(&m);
+    warn(path, &warnings);
+    if as_json {
+        let mut value = modes_json(&modes, pose, selection, &warnings);
+        if let Some(object) = value.as_object_mut() {
+            object.insert(
+                "end_effector".into(),
+                serde_json::json!(m.bodies()[m.end_effector()].name),
+            );
+        }
+        return Ok(json(&value));
+    }
+    let mut s = modes_header(&m, &modes, pose, selection);
+    if let Selection::Lock(_) = selection {
+        s += &mode_detail(&modes.modes[0]);
+    } else {
+        s += &modes_by_dof(&modes);
+        s += &capacity_text(&modes);
+    }
+    Ok(s)
+}
+
+/// `modes --json`: every sampled subset and pattern, with the request (start pose, subsets) and
+/// the leg warnings.
+fn modes_json(
+    modes: &Modes,
+    pose: Option<&str>,
+    selection: &Selection,
+    warnings: &[String],
+) -> serde_json::Value {
+    let mut value = serde_json::to_value(modes).unwrap_or_default();
+    if let Some(object) = value.as_object_mut() {
+        object.insert("pose".into(), serde_json::json!(pose));
+        object.insert(
+            "max_locks".into(),
+            serde_json::json!(match selection {
+                Selection::MaxLocks(k) => Some(k),
+                _ => None,
+            }),
+        );
+        object.insert(
+            "lock".into(),
+            serde_json::json!(match selection {
+                Selection::Lock(_) => modes.modes.first().map(|m| m.lock_text.clone()),
+                _ => None,
+            }),
+        );
+        object.insert("warnings".into(), serde_json::json!(warnings));
+    }
+    value
+}
+
+/// The first lines of `modes`: the manipulator, its inputs, the subsets sampled and how, and
+/// the start configuration where the locks hold.
+fn modes_header(
+    m: &Manipulator,
+    modes: &Modes,
+    pose: Option<&str>,
+    selection: &Selection,
+) -> String {
+    let count = modes.modes.len();
+    let scope = match selection {
+        Selection::All => String::new(),
+        Selection::MaxLocks(k) => format!(" with at most {k} locked"),
+        Selection::Lock(_) => format!(" ({})", modes.modes[0].lock_text),
+    };
+    let mut s = String::new();
+    let _ = writeln!(
+        s,
+        "{}: {} inputs ({}), {count} lock subset{}{scope}; finite motion sampled by loop closure ({} samples, seed {})",
+        modes.manipulator,
+        modes.actuators.len(),
+        modes.actuators.join(" "),
+        if count == 1 { "" } else { "s" },
+        modes.settings.samples,
+        modes.settings.seed
+    );
+    let p = modes.start_position;
+    let r = nalgebra::Vector3::from(modes.start_rotation_vector_rad);
+    let (r, angle) = match m.units().angle {
+        kinsyn::manipulator::file::AngleUnit::Deg => (r.map(f64::to_degrees), "deg"),
+        kinsyn::manipulator::file::AngleUnit::Rad => (r, "rad"),
+    };
+    if m.bodies().len() > 1 {
+        let _ = writeln!(
+            s,
+            "patterns of the end-effector {:?} (moving bodies: {}; --body NAME for another)",
+            m.bodies()[m.end_effector()].name,
+            body_names(m)
+        );
+    }
+    let _ = writeln!(
+        s,
+        "start: {}: platform frame at [{:.6}, {:.6}, {:.6}] {}, rotation vector [{:.6}, {:.6}, {:.6}] {angle}; locked inputs held at their values there",
+        pose.map_or_else(
+            || "the reference configuration".to_string(),
+            |t| format!("--pose {t}")
+        ),
+        clean(p[0]),
+        clean(p[1]),
+        clean(p[2]),
+        m.units().length,
+        clean(r.x),
+        clean(r.y),
+        clean(r.z),
+    );
+    s
+}
+
+/// At most [`LOCK_SETS_SHOWN`] lock sets, ` | ` between them, then how many more `--json` lists.
+fn lock_sets_text(sets: &[String]) -> String {
+    let mut text = sets
+        .iter()
+        .take(LOCK_SETS_SHOWN)
+        .map(String::as_str)
+        .collect::<Vec<_>>()
+        .join(" | ");
+    if sets.len() > LOCK_SETS_SHOWN {
+        let _ = write!(
+            text,
+            " … and {} more (see --json)",
+            sets.len() - LOCK_SETS_SHOWN
+        );
+    }
+    text
+}
+
+/// One line per pattern, at most [`PATTERNS_SHOWN`], then how many more `--json` lists.
+fn pattern_lines<T>(s: &mut String, patterns: &[T], line: impl Fn(&T) -> String) {
+    for p in patterns.iter().take(PATTERNS_SHOWN) {
+        let _ = writeln!(s, "  {}", line(p));
+    }
+    if patterns.len() > PATTERNS_SHOWN {
+        let _ = writeln!(
+            s,
+            "  … and {} more patterns (see --json)",
+            patterns.len() - PATTERNS_SHOWN
+        );
+    }
+}
+
+/// A pattern's parameters in parentheses, or nothing.
+fn parameters_text(p: &PatternModes) -> String {
+    p.parameters
+        .as_ref()
+        .map(|x| format!(" ({x})"))
+        .unwrap_or_default()
+}
+
+/// The patterns reached, by platform dof from the most to none: for each, how many subsets give
+/// it and its minimal lock sets; then the subsets whose motion could not be sampled.
+fn modes_by_dof(modes: &Modes) -> String {
+    let mut s = String::new();
+    let mut dofs: Vec<usize> = modes
+        .groups
+        .iter()
+        .chain(&modes.non_groups)
+        .map(|p| p.dof)
+        .collect();
+    dofs.sort_unstable_by(|a, b| b.cmp(a));
+    dofs.dedup();
+    let plural = |k: usize| if k == 1 { "" } else { "s" };
+    let kinds = [(&modes.groups, "group"), (&modes.non_groups, "")];
+    for dof in dofs {
+        // Groups first, then nTmR patterns, each with its kind.
+        let here: Vec<(&PatternModes, &str)> = kinds
+            .iter()
+            .flat_map(|&(list, kind)| list.iter().filter(|p| p.dof == dof).map(move |p| (p, kind)))
+            .collect();
+        let subsets: usize = here.iter().map(|(p, _)| p.subsets).sum();
+        let _ = writeln!(
+            s,
+            "\ndof {dof}: {subsets} subset{}, {} pattern{}",
+            plural(subsets),
+            here.len(),
+            plural(here.len())
+        );
+        pattern_lines(&mut s, &here, |(p, kind)| {
+            format!(
+                "{:<8} {kind:<5} {:>5} subset{:<1}  lock {}{}",
+                p.pattern,
+                p.subsets,
+                plural(p.subsets),
+                lock_sets_text(&p.lock_sets),
+                parameters_text(p)
+            )
+        });
+    }
+    let failed: Vec<&Mode> = modes.modes.iter().filter(|m| m.error.is_some()).collect();
+    if let Some(first) = failed.first() {
+        let _ = writeln!(
+            s,
+            "\n{} of {} subsets could not be sampled (pattern ?, listed in --json); the first, lock {}: {}",
+            failed.len(),
+            modes.modes.len(),
+            first.lock_text,
+            first.error.as_deref().unwrap_or_default()
+        );
+    }
+    s
+}
+
+/// The multioperation capacity: the displacement subgroups reached with their parameters and
+/// minimal lock sets, the kinds among the 12, and the non-group patterns.
+fn capacity_text(modes: &Modes) -> String {
+    let mut s = String::new();
+    let _ = writeln!(
+        s,
+        "\nmultioperation capacity: {} displacement subgroup{} reached, of {} of the 12 kinds ({}):",
+        modes.groups.len(),
+        if modes.groups.len() == 1 { "" } else { "s" },
+        modes.group_kinds.len(),
+        if modes.group_kinds.is_empty() {
+            "none".to_string()
+        } else {
+            modes.group_kinds.join(" ")
+        }
+    );
+    let line = |g: &PatternModes| {
+        format!(
+            "{:<8} lock {}{}",
+            g.pattern,
+            lock_sets_text(&g.lock_sets),
+            parameters_text(g)
+        )
+    };
+    pattern_lines(&mut s, &modes.groups, line);
+    if !modes.non_groups.is_empty() {
+        let _ = writeln!(s, "non-group patterns:");
+        pattern_lines(&mut s, &modes.non_groups, line);
+    }
+    s
+}
+
+/// One lock subset in detail (`modes --lock`): dof, pattern with its group parameters, the gap
+/// of the rank decisions, the samples' smallest separation, or why it could not be sampled.
+fn mode_detail(mode: &Mode) -> String {
+    let mut s = String::new();
+    let _ = writeln!(s, "locked: {}", mode.lock_text);
+    let Some(c) = &mode.classification else {
+        let _ = writeln!(
+            s,
+            "pattern: ? (the motion could not be sampled: {})",
+            mode.error.as_deref().unwrap_or_default()
+        );
+        return s;
+    };
+    let _ = writeln!(s, "dof: {}", mode.dof);
+    let kind = if mode.group {
+        "one of the 12 displacement groups"
+    } else {
+        "not a displacement group"
+    };
+    let _ = writeln!(
+        s,
+        "pattern: {} ({kind}{})",
+        mode.pattern_text(),
+        mode.parameters
+            .as_ref()
+            .map(|p| format!("; {p}"))
+            .unwrap_or_default()
+    );
+    let _ = writeln!(
+        s,
+        "rank gap: smallest kept singular value {}, largest dropped {:.3e} (each relative to its rank decision's scale, over the samples)",
+        c.rank_gap
+            .smallest_kept
+            .map_or_else(|| "none (rank 0)".to_string(), |k| format!("{k:.3e}")),
+        c.rank_gap.largest_dropped
+    );
+    let _ = writeln!(
+        s,
+        "min separation: {} (dimensionless pose distance between samples; a group is claimed only from samples at least {MIN_SEPARATION:e} apart)",
+        c.min_separation
+            .map_or_else(|| "none (one sample)".to_string(), |d| format!("{d:.3e}"))
+    );
+    s
+}
