@@ -150,6 +150,15 @@ pub(super) enum Command {
         /// their values at the start.
         #[arg(long)]
         lock: Option<String>,
+        /// Study parameters x0:x1:x2:x3:y0:y1:y2:y3 (any common scale) of a moving body's frame,
+        /// once per moving body in series order from the ground (the file's body order): the
+        /// first from the ground frame, each next from the previous body's frame (paper 002 §5:
+        /// --study X --study Y for the coupler and the end-effector). Checked on the Study
+        /// quadric within 2e-2 (relative, |x·y|/(|x| |y|): values printed to two decimals
+        /// pass); the poses are assembled by continuation from the start, or refused with the
+        /// residual.
+        #[arg(long, value_name = "X0:…:Y3", allow_hyphen_values = true, conflicts_with_all = ["pose", "inputs"])]
+        study: Vec<String>,
         /// A moving body of a kinsyn-manipulator/2 file to analyse instead of the end-effector
         /// (its pose is then the one --pose, --from and P refer to).
         #[arg(long, value_name = "NAME")]

@@ -145,6 +145,7 @@ fn execute(command: Command) -> Result<String, CliError> {
             from,
             lock,
             body,
+            study,
             seed,
             json: as_json,
         } => manipulator::analyze(
@@ -154,6 +155,7 @@ fn execute(command: Command) -> Result<String, CliError> {
                 inputs: inputs.as_deref(),
                 from: from.as_deref(),
                 body: body.as_deref(),
+                study: &study,
             },
             lock.as_deref(),
             &kinsyn::mechanism::SampleSettings {

@@ -22,6 +22,7 @@ mod jacobian;
 pub mod leg;
 pub mod lookup;
 mod modes;
+mod poses;
 mod position;
 mod request;
 mod singularity;
@@ -30,6 +31,7 @@ pub use jacobian::{Jacobians, RowKind, WrenchRow};
 pub use leg::{LegCheck, LegWarning, LegWarningKind};
 pub use lookup::{CatalogueChain, ChainLookup, CommittedChains};
 pub use modes::{MAX_INPUTS, Mode, Modes, PatternModes};
+pub use poses::PRINTED_STUDY_TOLERANCE;
 pub use position::{CONTINUATION_TRIES, PlatformGoal, Position, PositionRequest};
 pub use request::{ContinuationFailure, PositionError, RequestError};
 pub use singularity::{

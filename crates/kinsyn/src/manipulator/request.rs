@@ -73,6 +73,31 @@ pub enum RequestError {
         /// Its number of inputs.
         inputs: usize,
     },
+    /// Not one set of Study parameters per moving body.
+    #[error(
+        "{given} set{s} of Study parameters for the {bodies} moving bodies of {manipulator}: give one per moving body, in series order from the ground",
+        s = if *given == 1 { "" } else { "s" }
+    )]
+    StudyCount {
+        /// The manipulator's name.
+        manipulator: String,
+        /// Sets given.
+        given: usize,
+        /// Its moving bodies.
+        bodies: usize,
+    },
+    /// Study parameters that are not eight numbers `x0:x1:…:x7` (any scale).
+    #[error("{0:?}: Study parameters are eight numbers x0:x1:x2:x3:y0:y1:y2:y3 (any common scale)")]
+    StudyFormat(String),
+    /// Study parameters of a body that are not those of a displacement (off the Study quadric
+    /// beyond the tolerance, `x = 0`, or not finite).
+    #[error("the Study parameters of body {body:?}: {source}")]
+    Study {
+        /// The body's name.
+        body: String,
+        /// Why they are no displacement.
+        source: crate::spatial::study::StudyError,
+    },
 }
 
 /// Why a position (input values, a pose, or both) was not reached.
@@ -93,6 +118,21 @@ pub enum PositionError {
         "no random assembly around this configuration closes, so its generic ranks are unknown"
     )]
     NoGenericAssembly,
+    /// The bodies' poses asked for at once ([`super::Manipulator::solve_poses`]) do not meet the
+    /// loop closure: no joint values put every body there, within the assembly tolerance.
+    #[error(
+        "the poses asked for cannot be assembled: damped Newton stops at residual {residual:.3e} (rad, or length over the characteristic length; tolerance {tolerance:.0e}), {:.1}% of the way from the start",
+        100.0 * .done
+    )]
+    PosesNotAssembled {
+        /// The largest dimensionless residual of the loop closure and the pose equations where
+        /// the solver stopped: how far the poses are from an assembly.
+        residual: f64,
+        /// The tolerance it exceeds ([`crate::mechanism::ASSEMBLY_TOLERANCE`]).
+        tolerance: f64,
+        /// The fraction of the path from the start poses done.
+        done: f64,
+    },
 }
 
 /// Where a continuation stopped.

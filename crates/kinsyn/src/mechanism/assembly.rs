@@ -135,6 +135,10 @@ pub enum Goal {
         /// The coordinates asked for and their values.
         values: Vec<(Coordinate, f64)>,
     },
+    /// Several goals met at once, each on its own body: e.g. the poses of the coupler and the
+    /// end-effector of a stack of modules, both given by Study parameters (paper 002 §5). The
+    /// equations are the parts' equations stacked in order; a part may itself be `All`.
+    All(Vec<Goal>),
 }
 
 impl Goal {
@@ -144,14 +148,26 @@ impl Goal {
         match self {
             Goal::Pose { .. } => 6,
             Goal::Coordinates { values, .. } => values.len(),
+            Goal::All(parts) => parts.iter().map(Goal::equations).sum(),
         }
     }
 
-    /// The goal's body.
+    /// The goal's body; for [`Goal::All`], its first part's (the ground, 0, when it has none).
     #[must_use]
     pub fn body(&self) -> usize {
         match self {
             Goal::Pose { body, .. } | Goal::Coordinates { body, .. } => *body,
+            Goal::All(parts) => parts.first().map_or(0, Goal::body),
+        }
+    }
+
+    /// The single-body goals the goal is made of, in order: itself, or the parts of
+    /// [`Goal::All`] flattened.
+    #[must_use]
+    pub fn parts(&self) -> Vec<&Goal> {
+        match self {
+            Goal::All(parts) => parts.iter().flat_map(Goal::parts).collect(),
+            single => vec![single],
         }
     }
 
@@ -196,6 +212,7 @@ impl Goal {
                 }
                 (c, e)
             }
+            Goal::All(_) => unreachable!("Goal::All is linearised part by part (Goal::parts)"),
         }
     }
 }
@@ -330,9 +347,9 @@ impl Mechanism {
         // The loop residual ε of a chord changes by −(V_b − V_a − ξ q̇) = −C q̇.
         let mut rows = -self.dimensionless(&self.closure_jacobian(&screws));
         let mut residual = closure;
-        if let Some(goal) = goal {
-            let (c, e) = goal.linearised(self, &poses[goal.body()]);
-            let body = c * self.dimensionless(&self.body_jacobian(goal.body(), &screws));
+        for part in goal.map(Goal::parts).unwrap_or_default() {
+            let (c, e) = part.linearised(self, &poses[part.body()]);
+            let body = c * self.dimensionless(&self.body_jacobian(part.body(), &screws));
             let n = rows.nrows();
             rows = rows.insert_rows(n, body.nrows(), 0.0);
             rows.view_mut((n, 0), body.shape()).copy_from(&body);

@@ -98,6 +98,20 @@ pub fn normalisation_residual(s: &StudyParameters) -> f64 {
     s[0] * s[0] + s[1] * s[1] + s[2] * s[2] + s[3] * s[3] - 1.0
 }
 
+/// The relative quadric residual `|x·y| / (|x| |y|)` (zero when `y = 0`), the cosine of the
+/// angle between `x` and `y` in R⁴: free of the projective scale and of the unit of length, the
+/// quantity [`to_displacement`] checks against its tolerance. `NaN` when `x = 0`.
+#[must_use]
+pub fn relative_quadric_residual(s: &StudyParameters) -> f64 {
+    let x = s[..4].iter().map(|c| c * c).sum::<f64>().sqrt();
+    let y = s[4..].iter().map(|c| c * c).sum::<f64>().sqrt();
+    if y > 0.0 {
+        quadric_residual(s).abs() / (x * y)
+    } else {
+        0.0
+    }
+}
+
 /// The normalised Study parameters of a displacement `(R, t)`: `x = (cos θ/2, sin θ/2 · u)`
 /// for the rotation by θ ∈ `[0, π]` about `u` ([`super::rotation_log`], accurate near the
 /// identity and at a half turn), and `y = −½ t x` (module documentation). They satisfy the

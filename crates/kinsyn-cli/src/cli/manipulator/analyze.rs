@@ -4,8 +4,8 @@
 use super::{clean, leg_warnings, load_with_body, warn};
 use crate::cli::{CliError, json};
 use kinsyn::manipulator::{
-    Analysis, ContinuationFailure, Manipulator, ManipulatorError, PositionError, PositionRequest,
-    RowKind, rank_text,
+    Analysis, ContinuationFailure, Manipulator, ManipulatorError, PRINTED_STUDY_TOLERANCE,
+    PositionError, PositionRequest, RowKind, rank_text,
 };
 use kinsyn::mechanism::SampleSettings;
 use std::fmt::Write as _;
@@ -54,6 +54,8 @@ pub struct Placement<'a> {
     pub from: Option<&'a str>,
     /// `--body`: the moving body analysed instead of the description's end-effector.
     pub body: Option<&'a str>,
+    /// `--study`: one set of Study parameters per moving body, in series order from the ground.
+    pub study: &'a [String],
 }
 
 /// How the configuration analysed was reached, for the report.
@@ -112,7 +114,32 @@ pub fn analyze(
                 .map_err(|e| CliError::Input(format!("--pose {text:?}: {e}")))?,
         );
     }
-    let (q, steps, continuous) = if request.inputs.is_empty() && request.platform.is_none() {
+    let mut study_lines = String::new();
+    let (q, steps, continuous) = if !placement.study.is_empty() {
+        let sets = placement
+            .study
+            .iter()
+            .map(|t| {
+                Manipulator::parse_study(t).map_err(|e| CliError::Input(format!("--study: {e}")))
+            })
+            .collect::<Result<Vec<_>, _>>()?;
+        for (body, s) in m.bodies().iter().zip(&sets) {
+            let _ = writeln!(
+                study_lines,
+                "--study {:?}: relative Study quadric residual |x·y|/(|x| |y|) = {:.3e} (tolerance {:.0e}, values printed to two decimals)",
+                body.name,
+                kinsyn::spatial::study::relative_quadric_residual(s),
+                PRINTED_STUDY_TOLERANCE
+            );
+        }
+        let frames = m
+            .frames_from_study(&sets, PRINTED_STUDY_TOLERANCE)
+            .map_err(|e| CliError::Input(format!("--study: {e}")))?;
+        let q = m
+            .solve_poses(&start, &frames)
+            .map_err(|e| CliError::Input(format!("--study: {e}")))?;
+        (q, 0, true)
+    } else if request.inputs.is_empty() && request.platform.is_none() {
         (start, 0, true)
     } else {
         let asked: Vec<String> = [("--inputs", placement.inputs), ("--pose", placement.pose)]
@@ -138,7 +165,7 @@ pub fn analyze(
     if as_json {
         return Ok(json(&analysis_json(&m, &a, &reached, &warnings)));
     }
-    Ok(analysis_text(&m, &a, &reached))
+    Ok(study_lines + &analysis_text(&m, &a, &reached))
 }
 
 /// The input values at `q` in the file's units (lengths, or angles in its angle unit), with
