@@ -25,6 +25,7 @@ pub mod motion;
 pub mod notation;
 pub mod paper;
 pub mod screw;
+pub mod series;
 pub mod spatial;
 pub mod synthesis;
 pub mod verification;
