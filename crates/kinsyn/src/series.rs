@@ -288,7 +288,9 @@ impl SeriesParallel {
                     &self.modules[i - 1].pose.translation.vector,
                     &relative.translation.vector,
                 );
+                // Module 1's twist is in F_0 already: eqs. (7)–(8) have no R̄ on its block.
                 let rotation = match reading {
+                    _ if i == 1 => Matrix6::identity(),
                     AugmentedRotation::BlockDiagonal => augmented_rotation(&lower.rotation),
                     AugmentedRotation::AsPrinted => augmented_rotation_as_printed(&lower.rotation),
                 };
