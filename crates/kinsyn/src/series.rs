@@ -134,8 +134,10 @@ pub fn augmented_rotation_as_printed(rotation: &Rotation3<f64>) -> Matrix6<f64> 
     let mut m = Matrix6::identity();
     m.fixed_view_mut::<3, 3>(0, 0).copy_from(rotation.matrix());
     m.fixed_view_mut::<3, 3>(3, 3).copy_from(rotation.matrix());
-    m.fixed_view_mut::<3, 3>(0, 3).copy_from(&Matrix3::identity());
-    m.fixed_view_mut::<3, 3>(3, 0).copy_from(&Matrix3::identity());
+    m.fixed_view_mut::<3, 3>(0, 3)
+        .copy_from(&Matrix3::identity());
+    m.fixed_view_mut::<3, 3>(3, 0)
+        .copy_from(&Matrix3::identity());
     m
 }
 
@@ -174,7 +176,8 @@ impl Module {
     #[must_use]
     pub fn inverse_jacobian() -> Matrix6x3<f64> {
         let mut b = Matrix6x3::zeros();
-        b.fixed_view_mut::<3, 3>(0, 0).copy_from(&Matrix3::identity());
+        b.fixed_view_mut::<3, 3>(0, 0)
+            .copy_from(&Matrix3::identity());
         b
     }
 
@@ -363,20 +366,16 @@ impl SeriesParallel {
                 let wrenches = DMatrix::from_column_slice(6, 3, wrenches.as_slice());
                 let twists = reciprocal_complement(&wrenches, tolerance);
                 let rotation = augmented_rotation(&lower.rotation);
-                DMatrix::from_fn(6, twists.ncols(), |r, c| {
-                    (rotation.row(r) * twists.column(c))[(0, 0)]
-                })
+                DMatrix::from_column_slice(6, 6, rotation.as_slice()) * twists
             })
             .collect();
-        let columns: Vec<_> = modules
-            .iter()
-            .flat_map(|m| m.column_iter().map(|c| c.into_owned()).collect::<Vec<_>>())
-            .collect();
-        let twists = if columns.is_empty() {
-            DMatrix::zeros(6, 0)
-        } else {
-            DMatrix::from_columns(&columns)
-        };
+        let total = modules.iter().map(DMatrix::ncols).sum();
+        let mut twists = DMatrix::zeros(6, total);
+        let mut next = 0;
+        for m in &modules {
+            twists.columns_mut(next, m.ncols()).copy_from(m);
+            next += m.ncols();
+        }
         let order = screw::rank(&twists, tolerance);
         let constraint_wrenches = reciprocal_complement(&twists, tolerance);
         TwistSystem {

@@ -5,7 +5,7 @@
 //! configurations.
 //!
 //! The geometry is the paper's (§2, Table 1): equilateral platforms of circum-radii h0 = 2 (base),
-//! h1 = 1 (coupler), h2 = 2 (end-effector), x_i towards vertex A_i, vertices at 0°, 120°, 240°;
+//! h1 = 1 (coupler), h2 = 2 (end-effector), `x_i` towards vertex `A_i`, vertices at 0°, 120°, 240°;
 //! 3-RPS revolute axes at the base vertices, tangent to the circumcircle, S centres at the coupler
 //! vertices; 3-SPR S centres at the coupler vertices, revolute axes at the end-effector vertices,
 //! tangent. Configurations are made here, independently of the library: the poses satisfy the
@@ -76,7 +76,11 @@ fn pose(p: &[f64; 6]) -> Displacement {
 fn leg_points(spec: Spec, g: &Displacement) -> [(Vector3<f64>, Vector3<f64>, Vector3<f64>); 3] {
     let apply = |x: Vector3<f64>| g.rotation * x + g.translation.vector;
     std::array::from_fn(|i| match spec.kind {
-        Kind::Rps => (apply(vertex(spec.upper, i)), vertex(spec.lower, i), tangent(i)),
+        Kind::Rps => (
+            apply(vertex(spec.upper, i)),
+            vertex(spec.lower, i),
+            tangent(i),
+        ),
         Kind::Spr => (
             vertex(spec.lower, i),
             apply(vertex(spec.upper, i)),
@@ -85,7 +89,7 @@ fn leg_points(spec: Spec, g: &Displacement) -> [(Vector3<f64>, Vector3<f64>, Vec
     })
 }
 
-/// Leg lengths ρ_i (S centre to the revolute's vertex) and the revolute constraints (the leg
+/// Leg lengths `ρ_i` (S centre to the revolute's vertex) and the revolute constraints (the leg
 /// normal to the revolute axis).
 fn lengths_and_constraints(spec: Spec, g: &Displacement) -> ([f64; 3], [f64; 3]) {
     let legs = leg_points(spec, g);
@@ -132,7 +136,11 @@ fn newton(p: &mut [f64; 6], free: &[usize], f: &dyn Fn(&[f64; 6]) -> DVector<f64
             p[k] += step[c];
         }
     }
-    assert!(f(p).norm() < 1e-11, "Newton did not converge: {}", f(p).norm());
+    assert!(
+        f(p).norm() < 1e-11,
+        "Newton did not converge: {}",
+        f(p).norm()
+    );
 }
 
 /// A pose of the module with `(z, roll, pitch)` as given and `(x, y, yaw)` solved from the three
@@ -156,8 +164,7 @@ fn drive(spec: Spec, p: &[f64; 6], rho: [f64; 3]) -> [f64; 6] {
 }
 
 fn spm(stack: &[(Spec, [f64; 6])]) -> SeriesParallel {
-    SeriesParallel::new(stack.iter().map(|(s, p)| module(*s, &pose(p))).collect())
-        .expect("modules")
+    SeriesParallel::new(stack.iter().map(|(s, p)| module(*s, &pose(p))).collect()).expect("modules")
 }
 
 fn end_effector(stack: &[(Spec, [f64; 6])]) -> Displacement {
@@ -276,7 +283,11 @@ fn table1_general_configurations_have_mobility_six() {
         let j = rank(&s.jacobian().unwrap());
         let t = s.twist_system(DEFAULT_RANK_TOLERANCE);
         assert_eq!(j.rank, 6, "rank J_S-PM: {:?}", j.singular_values);
-        assert_eq!(t.order.rank, 6, "order of T_S-PM: {:?}", t.order.singular_values);
+        assert_eq!(
+            t.order.rank, 6,
+            "order of T_S-PM: {:?}",
+            t.order.singular_values
+        );
         assert!(j.gap().0 > 1e-4 && t.order.gap().0 > 1e-4);
         assert_eq!(t.constraint_wrenches.ncols(), 0);
         // Each module's twist system is of order 3 (§4: three constraint forces per module).
@@ -354,7 +365,10 @@ fn table1_row1_coaxial_platforms() {
     for l in &lost {
         // Far from the span: the nearest motions are rotations about horizontal lines in the
         // coupler plane, whose velocity at O_2 mixes in |O_1O_2| = 1.6 times the rotation.
-        assert!(distance_to_span(&j, l) > 0.5, "{l} is not a motion of the S-PM");
+        assert!(
+            distance_to_span(&j, l) > 0.5,
+            "{l} is not a motion of the S-PM"
+        );
         let last = all.ncols();
         all = all.insert_column(last, 0.0);
         all.set_column(last, l);
@@ -365,7 +379,10 @@ fn table1_row1_coaxial_platforms() {
     // vertical and the horizontal forces through O_1.
     let o1 = s.modules()[0].pose.translation.vector;
     let o2 = s.poses()[2].translation.vector;
-    assert!(o1.x.abs() < 1e-12 && o1.y.abs() < 1e-12 && o2.x.abs() < 1e-12, "coaxial");
+    assert!(
+        o1.x.abs() < 1e-12 && o1.y.abs() < 1e-12 && o2.x.abs() < 1e-12,
+        "coaxial"
+    );
     let force = |f: Vector3<f64>| {
         let m = (o1 - o2).cross(&f);
         Vector6::new(f.x, f.y, f.z, m.x, m.y, m.z)
@@ -401,8 +418,8 @@ fn table1_row1_coaxial_platforms() {
 /// axis of the base. Both platforms turned about the y axis only (as in row 4, whose Study
 /// parameters have only `x0, x2` and `y0, y2` rotational), so `v_1 ∥ u_1 ∥ y`. Paper 002 §4:
 /// mobility 5, with a constraint force `f` parallel to the two axes. By hand it is the force
-/// along y through the coupler vertex A_1: both modules' first constraint force (through the S
-/// centre A_1, along `u_1` and along `v_1`).
+/// along y through the coupler vertex `A_1`: both modules' first constraint force (through the S
+/// centre `A_1`, along `u_1` and along `v_1`).
 #[test]
 fn table1_row4_parallel_revolute_axes() {
     for (pitch1, pitch2) in [(-0.2, 0.9), (0.35, -0.6), (0.1, 0.4)] {
@@ -428,7 +445,10 @@ fn table1_row4_parallel_revolute_axes() {
         let w = t.constraint_wrenches.column(0);
         let f = Vector3::new(w[0], w[1], w[2]);
         let m = Vector3::new(w[3], w[4], w[5]);
-        assert!(f.cross(&Vector3::y()).norm() < 1e-9 * f.norm(), "f ∥ u_1, v_1");
+        assert!(
+            f.cross(&Vector3::y()).norm() < 1e-9 * f.norm(),
+            "f ∥ u_1, v_1"
+        );
         let a1 = poses[1].rotation * vertex(1.0, 0) + poses[1].translation.vector;
         let expected = (a1 - poses[2].translation.vector).cross(&f);
         assert!((m - expected).norm() < 1e-9, "the force passes through A_1");
