@@ -12,7 +12,9 @@
 //! [`verification`] check each entry numerically. [`mechanism`] holds general body–joint graphs
 //! (loops, mobility, assembly, finite motion) and [`manipulator`] builds parallel manipulators on
 //! them from description files: Jacobians in the form of paper 000 §4–5, singularities, and the
-//! motion patterns reached by locking inputs.
+//! motion patterns reached by locking inputs. [`series`] is a second, independent method for
+//! series-parallel manipulators: the Jacobian and twist system of paper 002 from the geometry of
+//! stacked modules.
 #![deny(missing_docs)]
 
 pub mod catalogue;
@@ -25,6 +27,7 @@ pub mod motion;
 pub mod notation;
 pub mod paper;
 pub mod screw;
+pub mod series;
 pub mod spatial;
 pub mod synthesis;
 pub mod verification;
