@@ -3,64 +3,15 @@
 //! (the mechanism graph: end-effector twist space, and the end-effector twist per unit rate of
 //! each input with the other five held) is compared with the paper's Jacobian `J_S-PM` (eqs. 2–7,
 //! `kinsyn::series`) and the order of its twist system (eqs. 9–10), the modules' geometry read
-//! off the assembled mechanism (frames, joint screws).
+//! off the assembled mechanism (`Manipulator::series_stack`: frames, joint screws).
 
 use kinsyn::manipulator::Manipulator;
 use kinsyn::screw::{self, DEFAULT_RANK_TOLERANCE};
-use kinsyn::series::{Leg, Module, SeriesParallel};
-use kinsyn::spatial::Displacement;
 use nalgebra::{DMatrix, Vector3};
 
 fn load() -> Manipulator {
     let text = std::fs::read_to_string("../../mechanisms/multibody/3-rps-3-spr.json").unwrap();
     Manipulator::from_json(&text).unwrap()
-}
-
-/// The paper's modules at joint values `q`: for each leg its S centre, prismatic direction and
-/// revolute axis, in the frame of the module's lower body (base, then coupler), and each
-/// moving platform's pose in its lower body's frame.
-fn modules(m: &Manipulator, q: &[f64]) -> Vec<Module> {
-    let coupler = m.body_named("coupler").unwrap();
-    let effector = m.body_named("end-effector").unwrap();
-    let f1 = m.body_frame(coupler, q);
-    let f2 = m.body_frame(effector, q);
-    let screws = m.mechanism().joint_screws(q);
-    let leg = |k: usize, lower: &Displacement| -> Leg {
-        let joints: Vec<usize> = m.legs()[k].joints.clone().collect();
-        let to_lower = lower.inverse();
-        // RPS: R, P, then the S's three revolutes; SPR: the S's three revolutes, P, R.
-        let (p, r, s) = if k < 3 {
-            (joints[1], joints[0], joints[2])
-        } else {
-            (joints[3], joints[4], joints[0])
-        };
-        let direction = |v: Vector3<f64>| to_lower.rotation * v.normalize();
-        // The S centre: the point of its first revolute axis nearest its second (they meet).
-        let (w1, w2) = (screws[s].w, screws[s + 1].w);
-        let (a1, a2) = (
-            w1.cross(&screws[s].v) / w1.norm_squared(),
-            w2.cross(&screws[s + 1].v) / w2.norm_squared(),
-        );
-        let n = w1.cross(&w2);
-        let t = (a2 - a1).cross(&w2).dot(&n) / n.norm_squared();
-        let centre = a1 + w1 * t;
-        Leg {
-            centre: to_lower.transform_point(&centre.into()).coords,
-            actuation: direction(screws[p].v),
-            constraint: direction(screws[r].w),
-        }
-    };
-    let base = Displacement::identity();
-    vec![
-        Module {
-            pose: f1,
-            legs: [leg(0, &base), leg(1, &base), leg(2, &base)],
-        },
-        Module {
-            pose: f1.inverse() * f2,
-            legs: [leg(3, &f1), leg(4, &f1), leg(5, &f1)],
-        },
-    ]
 }
 
 /// The end-effector twist `(ω; v_{O_2})` in base axes per unit rate of each input with the
@@ -117,7 +68,9 @@ fn the_paper_jacobian_the_twist_system_and_the_loop_closure_agree() {
     );
     let effector = m.body_named("end-effector").unwrap();
     for (k, q) in configurations.iter().enumerate() {
-        let spm = SeriesParallel::new(modules(&m, q)).unwrap();
+        let spm = m
+            .series_stack(q)
+            .expect("a stack of two three-legged modules");
         let j = spm.jacobian().unwrap();
         let closure = closure_jacobian(&m, q);
         let scale = 1.0 + closure.amax();
@@ -130,4 +83,23 @@ fn the_paper_jacobian_the_twist_system_and_the_loop_closure_agree() {
         let (_, dof) = m.body_twists(effector, q, &[]);
         assert_eq!((rank.rank, order.rank, dof), (6, 6, 6), "configuration {k}");
     }
+}
+
+/// Only stacks of three-legged RPS/SPR modules read as paper 002's S-PM: the 3-RPS-3-SPR and
+/// the 3-module stack do (two and three modules), a single-platform 3-UPS (UPS legs) and the
+/// split 3-RPS (two bodies side by side, joined by a revolute) do not.
+#[test]
+fn only_module_stacks_read_as_series_parallel() {
+    let read = |path: &str| {
+        let m = Manipulator::from_json(&std::fs::read_to_string(path).unwrap()).unwrap();
+        m.series_stack(&m.reference()).map(|s| s.modules().len())
+    };
+    assert_eq!(read("../../mechanisms/multibody/3-rps-3-spr.json"), Some(2));
+    assert_eq!(
+        read("../../mechanisms/multibody/3-rps-3-spr-3-rps.json"),
+        Some(3)
+    );
+    assert_eq!(read("../../mechanisms/3-rps.json"), Some(1));
+    assert_eq!(read("../../mechanisms/3-ups.json"), None);
+    assert_eq!(read("../../mechanisms/multibody/3-rps-split.json"), None);
 }

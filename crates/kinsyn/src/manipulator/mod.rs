@@ -26,6 +26,7 @@ mod poses;
 mod position;
 mod request;
 mod singularity;
+mod stack;
 
 pub use jacobian::{Jacobians, RowKind, WrenchRow};
 pub use leg::{LegCheck, LegWarning, LegWarningKind};

@@ -8,6 +8,8 @@ use kinsyn::manipulator::{
     PositionError, PositionRequest, RowKind, rank_text,
 };
 use kinsyn::mechanism::SampleSettings;
+use kinsyn::screw::{self, DEFAULT_RANK_TOLERANCE};
+use nalgebra::DMatrix;
 use std::fmt::Write as _;
 use std::path::Path;
 
@@ -236,7 +238,79 @@ fn analysis_json(
             "here": a.inputs_with_end_effector_held,
             "generic": a.generic.inputs_with_end_effector_held,
         },
+        "series_parallel": series_json(m, a),
     })
+}
+
+/// The stack of three-legged modules the manipulator is, when it has two or more (paper 002):
+/// `J_S-PM` (eqs. 7–8), its rank, the order of the twist system (eqs. 9–10) and each module's
+/// forward Jacobian `A` (eqs. 2–3) with its rank; `null` otherwise.
+fn series_json(m: &Manipulator, a: &Analysis) -> serde_json::Value {
+    let Some(spm) = m.series_stack(&a.q).filter(|s| s.modules().len() > 1) else {
+        return serde_json::Value::Null;
+    };
+    let order = spm.twist_system(DEFAULT_RANK_TOLERANCE).order;
+    let modules: Vec<serde_json::Value> = spm
+        .modules()
+        .iter()
+        .map(|module| {
+            let forward = DMatrix::from_column_slice(6, 6, module.forward_jacobian().as_slice());
+            serde_json::json!({"forward_jacobian_rank": rank_json(&screw::rank(&forward, DEFAULT_RANK_TOLERANCE), None)})
+        })
+        .collect();
+    match spm.jacobian() {
+        Ok(j) => serde_json::json!({
+            "modules": modules,
+            "jacobian": j.row_iter().map(|r| r.iter().copied().collect::<Vec<f64>>()).collect::<Vec<_>>(),
+            "jacobian_rank": rank_json(&screw::rank(&j, DEFAULT_RANK_TOLERANCE), None),
+            "twist_system_order": rank_json(&order, None),
+        }),
+        Err(e) => serde_json::json!({
+            "modules": modules,
+            "jacobian": null,
+            "jacobian_error": e.to_string(),
+            "twist_system_order": rank_json(&order, None),
+        }),
+    }
+}
+
+/// The paper 002 lines of the text report (see [`series_json`]); empty unless the
+/// manipulator is a stack of two or more three-legged modules.
+fn series_text(m: &Manipulator, a: &Analysis) -> String {
+    let Some(spm) = m.series_stack(&a.q).filter(|s| s.modules().len() > 1) else {
+        return String::new();
+    };
+    let mut s = String::new();
+    let order = spm.twist_system(DEFAULT_RANK_TOLERANCE).order;
+    let _ = writeln!(
+        s,
+        "series-parallel stack of {} three-legged modules (paper 002): twist-system order {} (eqs. 9–10: {})",
+        spm.modules().len(),
+        order.rank,
+        rank_text(&order)
+    );
+    match spm.jacobian() {
+        Ok(j) => {
+            let _ = writeln!(
+                s,
+                "  J_S-PM (eqs. 7–8, twist (ω; v) of the end-effector origin per input rate): {}",
+                rank_text(&screw::rank(&j, DEFAULT_RANK_TOLERANCE))
+            );
+        }
+        Err(e) => {
+            let _ = writeln!(s, "  J_S-PM not defined here: {e}");
+        }
+    }
+    for (i, module) in spm.modules().iter().enumerate() {
+        let forward = DMatrix::from_column_slice(6, 6, module.forward_jacobian().as_slice());
+        let _ = writeln!(
+            s,
+            "  module {} forward Jacobian A (eqs. 2–3, actuation and constraint wrenches): {}",
+            i + 1,
+            rank_text(&screw::rank(&forward, DEFAULT_RANK_TOLERANCE))
+        );
+    }
+    s
 }
 
 /// Each moving body at the configuration analysed: its name, dof with the locked inputs held,
@@ -481,6 +555,7 @@ fn analysis_text(m: &Manipulator, a: &Analysis, reached: &Reached) -> String {
             "note: the constraint wrenches have rank 6 at every generic configuration: with every input free the platform cannot move (a structure, not a manipulator)"
         );
     }
+    s += &series_text(m, a);
     if a.singularities.is_empty() {
         let _ = writeln!(s, "no singularity");
     }
