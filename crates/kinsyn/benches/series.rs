@@ -77,6 +77,22 @@ fn series(c: &mut Criterion) {
     group.bench_function("twist system of the 3-RPS-3-SPR (eqs. 9-10)", |b| {
         b.iter(|| black_box(&s).twist_system(DEFAULT_RANK_TOLERANCE));
     });
+    // The general machinery on the description file: the loop-closure mobility (30 joints,
+    // 24 closure equations) and the same S-PM read off the mechanism (issue 11).
+    let path = format!(
+        "{}/../../mechanisms/multibody/3-rps-3-spr.json",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let m = kinsyn::manipulator::Manipulator::from_json(&std::fs::read_to_string(path).unwrap())
+        .unwrap();
+    let q = m.reference();
+    let free = vec![false; m.mechanism().joints().len()];
+    group.bench_function("loop-closure mobility of the 3-RPS-3-SPR file", |b| {
+        b.iter(|| m.mechanism().mobility(black_box(&q), &free));
+    });
+    group.bench_function("series_stack + J_S-PM from the 3-RPS-3-SPR file", |b| {
+        b.iter(|| m.series_stack(black_box(&q)).map(|s| s.jacobian()));
+    });
     group.finish();
 }
 

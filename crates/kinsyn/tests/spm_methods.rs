@@ -9,8 +9,8 @@ use kinsyn::manipulator::Manipulator;
 use kinsyn::screw::{self, DEFAULT_RANK_TOLERANCE};
 use nalgebra::{DMatrix, Vector3};
 
-fn load() -> Manipulator {
-    let text = std::fs::read_to_string("../../mechanisms/multibody/3-rps-3-spr.json").unwrap();
+fn load(name: &str) -> Manipulator {
+    let text = std::fs::read_to_string(format!("../../mechanisms/multibody/{name}.json")).unwrap();
     Manipulator::from_json(&text).unwrap()
 }
 
@@ -23,9 +23,10 @@ fn closure_jacobian(m: &Manipulator, q: &[f64]) -> DMatrix<f64> {
     let mech = m.mechanism();
     let screws = mech.joint_screws(q);
     let origin = m.body_frame(effector, q).translation.vector;
-    let mut j = DMatrix::zeros(6, 6);
+    let inputs = m.actuators().len();
+    let mut j = DMatrix::zeros(6, inputs);
     for (c, a) in m.actuators().iter().enumerate() {
-        let locked: Vec<usize> = (0..6).filter(|&b| b != c).collect();
+        let locked: Vec<usize> = (0..inputs).filter(|&b| b != c).collect();
         let mask = m.lock_mask(&locked);
         let mobility = mech.mobility(q, &mask);
         assert_eq!(mobility.dof, 1, "one input free: one motion");
@@ -51,7 +52,20 @@ fn closure_jacobian(m: &Manipulator, q: &[f64]) -> DMatrix<f64> {
 /// paper 002 §4: "for general configurations … the mobility is found to be six").
 #[test]
 fn the_paper_jacobian_the_twist_system_and_the_loop_closure_agree() {
-    let m = load();
+    agree("3-rps-3-spr");
+}
+
+/// Eq. 8 (n modules) against the loop closure for the 3-module stack 3-RPS-3-SPR-3-RPS: the
+/// 6 × 9 Jacobian equals the input–output Jacobian, and its rank is 6 (issue 11: "a 3-module
+/// stack: rank 6 at random configurations; the n-module formula equals the general machinery").
+#[test]
+fn the_n_module_jacobian_equals_the_loop_closure_for_three_modules() {
+    agree("3-rps-3-spr-3-rps");
+}
+
+/// The three methods at the reference and four random assemblies of `name`.
+fn agree(name: &str) {
+    let m = load(name);
     let n = m.mechanism().joints().len();
     let mut configurations = vec![m.reference()];
     configurations.extend(m.mechanism().random_assemblies(
@@ -76,12 +90,16 @@ fn the_paper_jacobian_the_twist_system_and_the_loop_closure_agree() {
         let scale = 1.0 + closure.amax();
         assert!(
             (&j - &closure).amax() < 1e-8 * scale,
-            "configuration {k}: J_S-PM (eq. 7) {j} against the loop closure {closure}"
+            "{name}, configuration {k}: J_S-PM (eqs. 7–8) {j} against the loop closure {closure}"
         );
         let rank = screw::rank(&j, DEFAULT_RANK_TOLERANCE);
         let order = spm.twist_system(DEFAULT_RANK_TOLERANCE).order;
         let (_, dof) = m.body_twists(effector, q, &[]);
-        assert_eq!((rank.rank, order.rank, dof), (6, 6, 6), "configuration {k}");
+        assert_eq!(
+            (rank.rank, order.rank, dof),
+            (6, 6, 6),
+            "{name}, configuration {k}"
+        );
     }
 }
 
