@@ -121,3 +121,76 @@ fn only_module_stacks_read_as_series_parallel() {
     assert_eq!(read("../../mechanisms/3-ups.json"), None);
     assert_eq!(read("../../mechanisms/multibody/3-rps-split.json"), None);
 }
+
+/// Each module alone is the 3-RPS of paper 000 §5 in form (issue 11; paper 002 eq. 9): the
+/// coupler's twists (the proximal module's, the distal legs leaving it free) are reciprocal
+/// to three independent pure forces, one per leg, through the S centre along the R axis — as
+/// the platform twists of `mechanisms/3-rps.json` are to its legs' forces. The forces are built
+/// from the joints of the assembled mechanism; the twists come from the loop closure.
+#[test]
+fn each_module_has_the_constraint_forces_of_a_3_rps() {
+    let check = |m: &Manipulator, body: usize, legs: std::ops::Range<usize>, what: &str| {
+        let n = m.mechanism().joints().len();
+        let mut qs = vec![m.reference()];
+        qs.extend(
+            m.mechanism()
+                .random_assemblies(&m.reference(), &vec![false; n], 3, 0.2, 7),
+        );
+        for q in &qs {
+            let (twists, dof) = m.body_twists(body, q, &[]);
+            assert_eq!(
+                dof, 3,
+                "{what}: a 3-RPS platform has 3 dof (paper 000 §5.2)"
+            );
+            let screws = m.mechanism().joint_screws(q);
+            let mut forces = DMatrix::zeros(6, 3);
+            for (c, k) in legs.clone().enumerate() {
+                let joints: Vec<usize> = m.legs()[k].joints.clone().collect();
+                // R at the lower end, S (three revolutes meeting at its centre) at the upper.
+                let r = screws[joints[0]].w.normalize();
+                let (w, v) = (screws[joints[2]].w, screws[joints[2]].v);
+                let (w2, v2) = (screws[joints[3]].w, screws[joints[3]].v);
+                let (a1, a2) = (
+                    w.cross(&v) / w.norm_squared(),
+                    w2.cross(&v2) / w2.norm_squared(),
+                );
+                let normal = w.cross(&w2);
+                let centre = a1 + w * ((a2 - a1).cross(&w2).dot(&normal) / normal.norm_squared());
+                let moment = centre.cross(&r);
+                for i in 0..3 {
+                    forces[(i, c)] = r[i];
+                    forces[(3 + i, c)] = moment[i];
+                }
+            }
+            // Reciprocal product of a wrench (f; m_O) and a twist (ω; v_O): f·v + m·ω.
+            let scale = forces.amax() * twists.amax();
+            for t in twists.column_iter() {
+                for f in forces.column_iter() {
+                    let product = f[0] * t[3]
+                        + f[1] * t[4]
+                        + f[2] * t[5]
+                        + f[3] * t[0]
+                        + f[4] * t[1]
+                        + f[5] * t[2];
+                    assert!(
+                        product.abs() < 1e-9 * scale,
+                        "{what}: reciprocal product {product:e}"
+                    );
+                }
+            }
+            let rank = screw::rank(&forces, DEFAULT_RANK_TOLERANCE);
+            assert_eq!(rank.rank, 3, "{what}: three independent constraint forces");
+        }
+    };
+    let spm = load("3-rps-3-spr");
+    check(
+        &spm,
+        spm.body_named("coupler").unwrap(),
+        0..3,
+        "3-RPS-3-SPR proximal module",
+    );
+    let rps =
+        Manipulator::from_json(&std::fs::read_to_string("../../mechanisms/3-rps.json").unwrap())
+            .unwrap();
+    check(&rps, rps.end_effector(), 0..3, "mechanisms/3-rps.json");
+}
