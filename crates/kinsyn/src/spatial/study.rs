@@ -74,7 +74,7 @@ pub enum StudyError {
     /// `x0 y0 + x1 y1 + x2 y2 + x3 y3 ≠ 0`: the point is off the Study quadric. The residual
     /// is the relative one, `|x·y| / (|x| |y|)`; a solver's point this far off should be
     /// refined, or the tolerance raised if the data are known to be that rough.
-    #[error("off the Study quadric: |x·y| / (|x| |y|) = {residual:e} exceeds {tolerance:e}")]
+    #[error("off the Study quadric: |x·y| / (|x| |y|) = {residual:.3e} exceeds {tolerance:e}")]
     OffQuadric {
         /// The relative residual `|x·y| / (|x| |y|)`.
         residual: f64,

@@ -117,6 +117,7 @@ pub fn analyze(
         );
     }
     let mut study_lines = String::new();
+    let mut study_json = Vec::new();
     let (q, steps, continuous) = if !placement.study.is_empty() {
         let sets = placement
             .study
@@ -126,13 +127,18 @@ pub fn analyze(
             })
             .collect::<Result<Vec<_>, _>>()?;
         for (body, s) in m.bodies().iter().zip(&sets) {
+            let residual = kinsyn::spatial::study::relative_quadric_residual(s);
             let _ = writeln!(
                 study_lines,
-                "--study {:?}: relative Study quadric residual |x·y|/(|x| |y|) = {:.3e} (tolerance {:.0e}, values printed to two decimals)",
-                body.name,
-                kinsyn::spatial::study::relative_quadric_residual(s),
-                PRINTED_STUDY_TOLERANCE
+                "--study {:?}: relative Study quadric residual |x·y|/(|x| |y|) = {residual:.3e} (tolerance {:.0e}, values printed to two decimals)",
+                body.name, PRINTED_STUDY_TOLERANCE
             );
+            study_json.push(serde_json::json!({
+                "body": body.name,
+                "parameters": s,
+                "relative_quadric_residual": residual,
+                "tolerance": PRINTED_STUDY_TOLERANCE,
+            }));
         }
         let frames = m
             .frames_from_study(&sets, PRINTED_STUDY_TOLERANCE)
@@ -165,7 +171,11 @@ pub fn analyze(
     let warnings = leg_warnings(&m);
     warn(path, &warnings);
     if as_json {
-        return Ok(json(&analysis_json(&m, &a, &reached, &warnings)));
+        let mut v = analysis_json(&m, &a, &reached, &warnings);
+        if !study_json.is_empty() {
+            v["study"] = serde_json::Value::Array(study_json);
+        }
+        return Ok(json(&v));
     }
     Ok(study_lines + &analysis_text(&m, &a, &reached))
 }
