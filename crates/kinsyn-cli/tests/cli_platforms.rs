@@ -70,6 +70,20 @@ fn analyze_takes_study_parameters_for_each_moving_body() {
     let out = stdout(&o);
     assert!(out.contains("coupler 3, end-effector 3"), "{out}");
     assert!(out.contains("twist-system order 3"), "{out}");
+    // By hand (docs/deviations.md, "Paper 002"): both modules' constraint forces are the three
+    // tangent forces through the coupler vertices, horizontal lines of the coupler plane
+    // z = −2·0.75 = −1.5; every wrench of their span is such a force.
+    let forces: Vec<&str> = out
+        .lines()
+        .filter(|l| l.trim_start().starts_with("a force along"))
+        .collect();
+    assert_eq!(forces.len(), 3, "{out}");
+    for f in forces {
+        assert!(
+            f.contains(", 0.0000] through [") && f.ends_with(", -1.5000]"),
+            "{f}"
+        );
+    }
     let o = kinsyn(&[&["analyze", file, "--json"][..], &row1[..]].concat());
     let v: serde_json::Value = serde_json::from_str(&stdout(&o)).unwrap();
     assert_eq!(v["series_parallel"]["twist_system_order"]["rank"], 3);

@@ -259,7 +259,12 @@ fn series_json(m: &Manipulator, a: &Analysis) -> serde_json::Value {
     let Some(spm) = m.series_stack(&a.q).filter(|s| s.modules().len() > 1) else {
         return serde_json::Value::Null;
     };
-    let order = spm.twist_system(DEFAULT_RANK_TOLERANCE).order;
+    let system = spm.twist_system(DEFAULT_RANK_TOLERANCE);
+    let order = system.order.clone();
+    let wrenches: Vec<[f64; 6]> = stack_wrenches(&spm, &system.constraint_wrenches)
+        .iter()
+        .map(|w| w.to_vector().into())
+        .collect();
     let modules: Vec<serde_json::Value> = spm
         .modules()
         .iter()
@@ -274,13 +279,66 @@ fn series_json(m: &Manipulator, a: &Analysis) -> serde_json::Value {
             "jacobian": j.row_iter().map(|r| r.iter().copied().collect::<Vec<f64>>()).collect::<Vec<_>>(),
             "jacobian_rank": rank_json(&screw::rank(&j, DEFAULT_RANK_TOLERANCE), None),
             "twist_system_order": rank_json(&order, None),
+            "constraint_wrenches_f_m_about_ground_origin": wrenches,
         }),
         Err(e) => serde_json::json!({
             "modules": modules,
             "jacobian": null,
             "jacobian_error": e.to_string(),
             "twist_system_order": rank_json(&order, None),
+            "constraint_wrenches_f_m_about_ground_origin": wrenches,
         }),
+    }
+}
+
+/// The stack's constraint wrenches (columns `(f; m_{O_n})` of [`kinsyn::series::TwistSystem`])
+/// with their moments taken about the ground origin: `m_O = m_{O_n} + O_n × f`.
+fn stack_wrenches(
+    spm: &kinsyn::series::SeriesParallel,
+    wrenches: &DMatrix<f64>,
+) -> Vec<kinsyn::screw::Wrench> {
+    let origin = spm
+        .poses()
+        .last()
+        .map_or_else(nalgebra::Vector3::zeros, |p| p.translation.vector);
+    wrenches
+        .column_iter()
+        .map(|c| {
+            let f = nalgebra::Vector3::new(c[0], c[1], c[2]);
+            let m = nalgebra::Vector3::new(c[3], c[4], c[5]) + origin.cross(&f);
+            kinsyn::screw::Wrench { f, m }
+        })
+        .collect()
+}
+
+/// A wrench in words: a couple about a direction, a force along a line, or a wrench of some
+/// pitch along a line (`length` the mechanism's characteristic length, for what counts as 0).
+fn wrench_text(w: &kinsyn::screw::Wrench, length: f64) -> String {
+    let ff = w.f.norm_squared();
+    let size = (ff.sqrt() * length).max(w.m.norm());
+    // Four decimals, round-off (below 5e-5 of the characteristic length) written as 0.
+    let c = |x: f64| {
+        if x.abs() < 5e-5 * length.max(1.0) {
+            0.0
+        } else {
+            x
+        }
+    };
+    let v = |x: nalgebra::Vector3<f64>| format!("[{:.4}, {:.4}, {:.4}]", c(x.x), c(x.y), c(x.z));
+    if ff.sqrt() * length < 1e-9 * size {
+        return format!("a couple about {}", v(w.m.normalize()));
+    }
+    let pitch = w.f.dot(&w.m) / ff;
+    let point = w.f.cross(&w.m) / ff;
+    let direction = w.f.normalize();
+    if pitch.abs() < 1e-9 * length {
+        format!("a force along {} through {}", v(direction), v(point))
+    } else {
+        format!(
+            "a wrench of pitch {pitch:.4} along {} through {}",
+            v(direction),
+            v(point)
+        )
     }
 }
 
@@ -309,6 +367,18 @@ fn series_text(m: &Manipulator, a: &Analysis) -> String {
         }
         Err(e) => {
             let _ = writeln!(s, "  J_S-PM not defined here: {e}");
+        }
+    }
+    let system = spm.twist_system(DEFAULT_RANK_TOLERANCE);
+    if system.order.rank < 6 {
+        let _ = writeln!(
+            s,
+            "  constraint wrench system of the stack (order {}, reciprocal to every end-effector twist; a basis, moments about the ground origin, {}):",
+            6 - system.order.rank,
+            m.units().length
+        );
+        for w in stack_wrenches(&spm, &system.constraint_wrenches) {
+            let _ = writeln!(s, "    {}", wrench_text(&w, m.mechanism().scale()));
         }
     }
     for (i, module) in spm.modules().iter().enumerate() {
