@@ -18,7 +18,7 @@ fn load(name: &str) -> Manipulator {
 /// other inputs held, from the loop closure: the columns of the input–output Jacobian that
 /// `J_S-PM` must equal (eq. 7).
 fn closure_jacobian(m: &Manipulator, q: &[f64]) -> DMatrix<f64> {
-    let effector = m.body_named("end-effector").unwrap();
+    let effector = m.end_effector();
     let body = m.bodies()[effector].body;
     let mech = m.mechanism();
     let screws = mech.joint_screws(q);
@@ -193,4 +193,57 @@ fn each_module_has_the_constraint_forces_of_a_3_rps() {
         Manipulator::from_json(&std::fs::read_to_string("../../mechanisms/3-rps.json").unwrap())
             .unwrap();
     check(&rps, rps.end_effector(), 0..3, "mechanisms/3-rps.json");
+}
+
+/// Stacks made by `manipulator::stacking::stack` (issue 11, item 1: "a general way to stack n
+/// parallel modules"): the paper's 3-RPS-3-SPR (h = 2, 1, 2) and a 3-RPS-3-SPR-3-RPS. Hand
+/// (Grübler, as for the committed files): mobility 6·(15 − 1) − 6·13 = 6 and 6·21 − 9·13 = 9;
+/// each module's platform 3 dof relative to the one below, the end-effector 6 (eq. 8, generic).
+/// The methods agree on the made files as on the committed ones.
+#[test]
+fn stacks_made_from_modules_have_the_hand_mobility() {
+    use ModuleKind::{Rps, Spr};
+    use kinsyn::manipulator::stacking::{ModuleKind, StackSpec, stack};
+    for (modules, radii, heights, mobility) in [
+        (vec![Rps, Spr], vec![2.0, 1.0, 2.0], vec![-1.5, -1.6], 6),
+        (
+            vec![Rps, Spr, Rps],
+            vec![2.0, 1.0, 2.0, 1.0],
+            vec![-1.5, -1.6, -1.4],
+            9,
+        ),
+    ] {
+        let d = stack(&StackSpec {
+            modules: modules.clone(),
+            radii,
+            heights,
+        })
+        .unwrap();
+        let m = Manipulator::from_bodies(&d).unwrap();
+        let q = m.reference();
+        let free = vec![false; m.mechanism().joints().len()];
+        assert_eq!(
+            m.mechanism().mobility(&q, &free).dof,
+            mobility,
+            "{}",
+            d.name
+        );
+        let first = m.body_named("platform 1").unwrap();
+        assert_eq!(
+            m.body_twists(first, &q, &[]).1,
+            3,
+            "{}: a 3-RPS platform",
+            d.name
+        );
+        assert_eq!(m.body_twists(m.end_effector(), &q, &[]).1, 6, "{}", d.name);
+        let spm = m.series_stack(&q).expect("a module stack");
+        assert_eq!(spm.modules().len(), modules.len());
+        let j = spm.jacobian().unwrap();
+        let closure = closure_jacobian(&m, &q);
+        assert!(
+            (&j - &closure).amax() < 1e-8 * (1.0 + closure.amax()),
+            "{}",
+            d.name
+        );
+    }
 }

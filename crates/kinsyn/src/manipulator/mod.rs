@@ -27,6 +27,7 @@ mod position;
 mod request;
 mod singularity;
 mod stack;
+pub mod stacking;
 
 pub use jacobian::{Jacobians, RowKind, WrenchRow};
 pub use leg::{LegCheck, LegWarning, LegWarningKind};
