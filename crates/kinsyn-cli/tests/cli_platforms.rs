@@ -113,3 +113,59 @@ fn analyze_takes_study_parameters_for_each_moving_body() {
         stderr(&o)
     );
 }
+
+/// `kinsyn stack` (issue 11, item 1): paper 002's S-PM made from its modules analyses with the
+/// hand mobility 6 (Grübler 6·14 − 6·13) and the first platform's 3 dof; a module that is not
+/// RPS or SPR, and radii that do not match the modules, are one-line errors.
+#[test]
+fn stack_writes_a_series_parallel_description() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("spm.json");
+    let o = kinsyn(&[
+        "stack",
+        "--modules",
+        "RPS,SPR",
+        "--radii",
+        "2,1,2",
+        "--heights=-1.5,-1.6",
+        "-o",
+        file.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let o = kinsyn(&["analyze", file.to_str().unwrap()]);
+    let out = stdout(&o);
+    assert!(out.contains("mobility 6 "), "{out}");
+    assert!(out.contains("platform 1 3, platform 2 6"), "{out}");
+    for (args, needle) in [
+        (
+            vec![
+                "stack",
+                "--modules",
+                "RPX",
+                "--radii",
+                "2,1",
+                "--heights",
+                "1",
+            ],
+            "RPX",
+        ),
+        (
+            vec![
+                "stack",
+                "--modules",
+                "RPS",
+                "--radii",
+                "2",
+                "--heights",
+                "1",
+            ],
+            "2 radii",
+        ),
+    ] {
+        let o = kinsyn(&args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}");
+        let err = stderr(&o);
+        assert_eq!(err.lines().count(), 1, "{err}");
+        assert!(err.contains(needle), "{err}");
+    }
+}

@@ -185,6 +185,37 @@ pub(super) enum Command {
         #[arg(long, short)]
         output: Option<PathBuf>,
     },
+    /// Write a series-parallel stack of three-legged modules (paper 002) as a description file.
+    ///
+    /// Equilateral platforms joined in series, each module a 3-RPS (revolutes on its lower
+    /// platform) or a 3-SPR (revolutes on its upper one), with the frames of paper 002 §2 and
+    /// revolute axes tangent to the circumcircles; the prismatic joints are the inputs. Each
+    /// module's reference pose is generic and assembled (a chosen tilt, its in-plane
+    /// coordinates solved by Newton). `kinsyn analyze` on the file compares the paper's Jacobian
+    /// with the loop closure.
+    #[command(
+        after_help = "Examples:\n  kinsyn stack --modules RPS,SPR --radii 2,1,2 --heights=-1.5,-1.6   # paper 002's S-PM\n  kinsyn stack --modules RPS,SPR,RPS --radii 2,1,2,1 --heights=-1.5,-1.6,-1.4 -o stack.json"
+    )]
+    Stack {
+        /// The modules from the ground up, each RPS or SPR.
+        #[arg(long, value_delimiter = ',', required = true)]
+        modules: Vec<String>,
+        /// The platforms' circum-radii, the base first (one more than the modules).
+        #[arg(long, value_delimiter = ',', required = true)]
+        radii: Vec<f64>,
+        /// Each module's height, upper platform over lower along the lower normal (negative:
+        /// below, as in paper 002's Table 1).
+        #[arg(
+            long,
+            value_delimiter = ',',
+            allow_negative_numbers = true,
+            required = true
+        )]
+        heights: Vec<f64>,
+        /// Write to this file instead of standard output.
+        #[arg(long, short)]
+        output: Option<PathBuf>,
+    },
 }
 
 /// The geometry and legs of `kinsyn build` (docs/mechanism-format.md).

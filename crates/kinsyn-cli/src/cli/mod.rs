@@ -167,6 +167,12 @@ fn execute(command: Command) -> Result<String, CliError> {
         Command::Build { spec, output } => {
             manipulator::build_command(&spec.into(), output.as_deref())
         }
+        Command::Stack {
+            modules,
+            radii,
+            heights,
+            output,
+        } => manipulator::stack_command(&modules, radii, heights, output.as_deref()),
     }
 }
 

@@ -160,3 +160,46 @@ fn body_names(m: &Manipulator) -> String {
         .collect::<Vec<_>>()
         .join(", ")
 }
+
+/// `kinsyn stack`: a series-parallel stack of three-legged modules as a description, checked
+/// by reading it back (to `output`, or returned for stdout).
+pub fn stack_command(
+    modules: &[String],
+    radii: Vec<f64>,
+    heights: Vec<f64>,
+    output: Option<&Path>,
+) -> Result<String, CliError> {
+    use kinsyn::manipulator::stacking::{ModuleKind, StackSpec, stack};
+    let modules = modules
+        .iter()
+        .map(|t| match t.trim().to_ascii_uppercase().as_str() {
+            "RPS" | "3-RPS" => Ok(ModuleKind::Rps),
+            "SPR" | "3-SPR" => Ok(ModuleKind::Spr),
+            _ => Err(CliError::Input(format!(
+                "--modules: {t:?} is not a module (RPS or SPR)"
+            ))),
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    let d = stack(&StackSpec {
+        modules,
+        radii,
+        heights,
+    })
+    .map_err(|e| CliError::Input(format!("kinsyn stack: {e}")))?;
+    Manipulator::from_bodies(&d)
+        .map_err(|e| CliError::Internal(format!("the stack written does not read back: {e}")))?;
+    let text = d.to_json();
+    match output {
+        Some(path) => {
+            std::fs::write(path, &text)
+                .map_err(|e| std::io::Error::new(e.kind(), format!("{}: {e}", path.display())))?;
+            Ok(format!(
+                "wrote {} ({}) to {}\n",
+                d.name,
+                d.bodies.len(),
+                path.display()
+            ))
+        }
+        None => Ok(text),
+    }
+}
