@@ -254,7 +254,8 @@ fn analysis_json(
 
 /// The stack of three-legged modules the manipulator is, when it has two or more (paper 002):
 /// `J_S-PM` (eqs. 7–8), its rank, the order of the twist system (eqs. 9–10) and each module's
-/// forward Jacobian `A` (eqs. 2–3) with its rank; `null` otherwise.
+/// forward Jacobian `A` (eqs. 2–3) with its rank and its input twists `A⁻¹B` (`null` in a parallel
+/// singularity); `null` otherwise.
 fn series_json(m: &Manipulator, a: &Analysis) -> serde_json::Value {
     let Some(spm) = m.series_stack(&a.q).filter(|s| s.modules().len() > 1) else {
         return serde_json::Value::Null;
@@ -270,7 +271,17 @@ fn series_json(m: &Manipulator, a: &Analysis) -> serde_json::Value {
         .iter()
         .map(|module| {
             let forward = DMatrix::from_column_slice(6, 6, module.forward_jacobian().as_slice());
-            serde_json::json!({"forward_jacobian_rank": rank_json(&screw::rank(&forward, DEFAULT_RANK_TOLERANCE), None)})
+            let rows = |m: &DMatrix<f64>| -> Vec<Vec<f64>> {
+                m.row_iter().map(|r| r.iter().copied().collect()).collect()
+            };
+            let inputs = module.input_twists().ok().map(|t| {
+                rows(&DMatrix::from_column_slice(6, 3, t.as_slice()))
+            });
+            serde_json::json!({
+                "forward_jacobian": rows(&forward),
+                "forward_jacobian_rank": rank_json(&screw::rank(&forward, DEFAULT_RANK_TOLERANCE), None),
+                "input_twists": inputs,
+            })
         })
         .collect();
     match spm.jacobian() {
