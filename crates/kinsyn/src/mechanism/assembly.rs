@@ -212,7 +212,9 @@ impl Goal {
                 }
                 (c, e)
             }
-            Goal::All(_) => unreachable!("Goal::All is linearised part by part (Goal::parts)"),
+            // A composite goal adds no rows of its own: `equations` linearises its parts, one
+            // body each (`Goal::parts`).
+            Goal::All(_) => (DMatrix::zeros(0, 6), DVector::zeros(0)),
         }
     }
 }
