@@ -25,16 +25,6 @@ use crate::spatial::study::{self, StudyParameters};
 /// table. Exact parameters pass [`study::QUADRIC_TOLERANCE`].
 pub const PRINTED_STUDY_TOLERANCE: f64 = 2e-2;
 
-/// The most a joint may move in one continuation step (dimensionless), as in
-/// [`Manipulator::solve_position`].
-const LARGEST_JOINT_STEP: f64 = 0.5;
-
-/// The smallest continuation step (fraction of the path) before the path is given up.
-const SMALLEST_STEP: f64 = 1.0 / 4096.0;
-
-/// The most continuation steps tried (kept or halved).
-const TRIES: usize = 400;
-
 impl Manipulator {
     /// Parses Study parameters written `x0:x1:x2:x3:y0:y1:y2:y3` (paper 004 eqs. 4–7, any
     /// common non-zero scale); the quadric is checked by [`Manipulator::frames_from_study`].
@@ -131,34 +121,11 @@ impl Manipulator {
                     .collect(),
             )
         };
-        let mut q = start.to_vec();
-        let (mut t, mut dt) = (0.0_f64, 1.0_f64);
-        for _ in 0..TRIES {
-            if t >= 1.0 {
-                return Ok(q);
-            }
-            let next = (t + dt).min(1.0);
-            let reached = m.assemble_to(&q, &unlocked, Some(&goal_at(next)));
-            let step_ok = reached.as_ref().is_ok_and(|solved| {
-                (0..q.len())
-                    .map(|j| (solved[j] - q[j]).abs() / m.unit(j))
-                    .fold(0.0, f64::max)
-                    <= LARGEST_JOINT_STEP
-            });
-            if let (true, Ok(solved)) = (step_ok, reached) {
-                q = solved;
-                t = next;
-                dt = (dt * 2.0).min(1.0);
-            } else {
-                dt /= 2.0;
-                if dt < SMALLEST_STEP {
-                    break;
-                }
-            }
-        }
-        if t >= 1.0 {
-            return Ok(q);
-        }
+        let (q, t) =
+            match self.continue_along(start, &unlocked, |t, q| (q.to_vec(), Some(goal_at(t)))) {
+                Ok((q, _)) => return Ok(q),
+                Err((q, failure)) => (q, failure.done()),
+            };
         // The path cannot be followed: Newton steps toward the poses from the furthest
         // configuration reached, whose residual says how far the poses are from an assembly.
         match m.assemble_to(&q, &unlocked, Some(&goal_at(1.0))) {

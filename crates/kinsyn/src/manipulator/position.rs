@@ -131,8 +131,6 @@ impl Manipulator {
         }
         let start_frame = self.platform_frame(start);
         let at = |t: f64| self.path_point(start, &start_frame, request, t);
-        let mut q = start.to_vec();
-        let (mut t, mut dt, mut steps) = (0.0_f64, 1.0_f64, 0);
         let with_inputs = |t: f64, q: &[f64]| {
             let (values, goal) = at(t);
             let mut trial = q.to_vec();
@@ -143,15 +141,53 @@ impl Manipulator {
             }
             (trial, goal)
         };
+        let (q, steps) = match self.continue_along(start, &mask, with_inputs) {
+            Ok(reached) => reached,
+            Err((_, failure)) => {
+                // The path cannot be followed: damped Newton steps straight from the start.
+                let (direct, goal) = with_inputs(1.0, start);
+                if let Ok(q) = m.assemble_to(&direct, &mask, goal.as_ref()) {
+                    self.determined(&q, &mask, goal.as_ref())?;
+                    return Ok(Position {
+                        q,
+                        steps: 0,
+                        continuous: false,
+                    });
+                }
+                return Err(PositionError::NotReached(failure).into());
+            }
+        };
+        let (_, goal) = at(1.0);
+        self.determined(&q, &mask, goal.as_ref())?;
+        Ok(Position {
+            q,
+            steps,
+            continuous: true,
+        })
+    }
+
+    /// Follows a path of goals from `start` (`point(t, q)`: the joint values to start the
+    /// loop closure from and the goal at fraction `t` of the path, `q` the configuration
+    /// reached so far) by continuation: steps that close the loops are kept and doubled, and a
+    /// step that fails, or moves a joint by more than [`LARGEST_JOINT_STEP`] (a jump to another
+    /// assembly), is taken again in halves. The configuration at `t = 1` with the steps kept,
+    /// or the furthest configuration reached and why the path was given up.
+    pub(super) fn continue_along(
+        &self,
+        start: &[f64],
+        mask: &[bool],
+        point: impl Fn(f64, &[f64]) -> (Vec<f64>, Option<Goal>),
+    ) -> Result<(Vec<f64>, usize), (Vec<f64>, ContinuationFailure)> {
+        let m = &self.mechanism;
+        let mut q = start.to_vec();
+        let (mut t, mut dt, mut steps) = (0.0_f64, 1.0_f64, 0);
         for tries in 1.. {
             if t >= 1.0 {
                 break;
             }
             let next = (t + dt).min(1.0);
-            let (trial, goal) = with_inputs(next, &q);
-            // A step that moves a joint by more than [`LARGEST_JOINT_STEP`] may have jumped
-            // to another assembly: it is taken again in halves.
-            let solved = match m.assemble_to(&trial, &mask, goal.as_ref()) {
+            let (trial, goal) = point(next, &q);
+            let solved = match m.assemble_to(&trial, mask, goal.as_ref()) {
                 Err(e) => Err(e.to_string()),
                 Ok(solved) => {
                     let change = (0..q.len())
@@ -166,44 +202,25 @@ impl Manipulator {
                     }
                 }
             };
-            let failure = match solved {
+            match solved {
                 Ok(solved) => {
                     q = solved;
                     t = next;
                     steps += 1;
                     dt = (dt * 2.0).min(1.0);
-                    continue;
                 }
                 Err(_) if tries >= CONTINUATION_TRIES => {
-                    ContinuationFailure::TooManySteps { done: t }
+                    return Err((q, ContinuationFailure::TooManySteps { done: t }));
                 }
                 Err(e) => {
                     dt /= 2.0;
-                    if dt >= SMALLEST_STEP {
-                        continue;
+                    if dt < SMALLEST_STEP {
+                        return Err((q, ContinuationFailure::Stopped { done: t, why: e }));
                     }
-                    ContinuationFailure::Stopped { done: t, why: e }
                 }
-            };
-            // The path cannot be followed: damped Newton steps straight from the start.
-            let (direct, goal) = with_inputs(1.0, start);
-            if let Ok(q) = m.assemble_to(&direct, &mask, goal.as_ref()) {
-                self.determined(&q, &mask, goal.as_ref())?;
-                return Ok(Position {
-                    q,
-                    steps: 0,
-                    continuous: false,
-                });
             }
-            return Err(PositionError::NotReached(failure).into());
         }
-        let (_, goal) = at(1.0);
-        self.determined(&q, &mask, goal.as_ref())?;
-        Ok(Position {
-            q,
-            steps,
-            continuous: true,
-        })
+        Ok((q, steps))
     }
 
     /// The point at fraction `t` (0 at `start`, 1 at the values asked for) of the straight path

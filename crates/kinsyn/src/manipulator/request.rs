@@ -159,3 +159,14 @@ pub enum ContinuationFailure {
         why: String,
     },
 }
+
+impl ContinuationFailure {
+    /// The fraction of the path done when the continuation stopped.
+    #[must_use]
+    pub fn done(&self) -> f64 {
+        match self {
+            ContinuationFailure::TooManySteps { done }
+            | ContinuationFailure::Stopped { done, .. } => *done,
+        }
+    }
+}

@@ -5,7 +5,6 @@
 //! `J_S-PM` and twist system can be set beside the loop-closure answer.
 
 use super::Manipulator;
-use crate::notation::Primitive;
 use crate::series::{Leg as ModuleLeg, Module, SeriesParallel};
 use crate::spatial::{Displacement, identity};
 use nalgebra::{Point3, Vector3};
@@ -88,10 +87,6 @@ impl Manipulator {
     fn module_leg(&self, k: usize, q: &[f64], to_lower: &Displacement) -> Option<ModuleLeg> {
         let leg = &self.legs[k];
         let joints: Vec<usize> = leg.joints.clone().collect();
-        let kinds: Vec<Primitive> = joints
-            .iter()
-            .map(|&j| self.mechanism.joints()[j].kind)
-            .collect();
         let letters = leg.chain.without_actuation().letters();
         let (r, p, s) = match letters.as_str() {
             "RPS" => (joints[0], joints[1], joints[2]),
@@ -104,7 +99,7 @@ impl Manipulator {
             .filter(|a| a.leg == k)
             .map(|a| a.joint)
             .collect();
-        if inputs != [p] || kinds.len() != 5 {
+        if inputs != [p] {
             return None;
         }
         let screws = self.mechanism.joint_screws(q);

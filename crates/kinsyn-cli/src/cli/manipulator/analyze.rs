@@ -360,13 +360,13 @@ fn series_text(m: &Manipulator, a: &Analysis) -> String {
         return String::new();
     };
     let mut s = String::new();
-    let order = spm.twist_system(DEFAULT_RANK_TOLERANCE).order;
+    let system = spm.twist_system(DEFAULT_RANK_TOLERANCE);
     let _ = writeln!(
         s,
         "series-parallel stack of {} three-legged modules (paper 002): twist-system order {} (eqs. 9–10: {})",
         spm.modules().len(),
-        order.rank,
-        rank_text(&order)
+        system.order.rank,
+        rank_text(&system.order)
     );
     match spm.jacobian() {
         Ok(j) => {
@@ -380,7 +380,6 @@ fn series_text(m: &Manipulator, a: &Analysis) -> String {
             let _ = writeln!(s, "  J_S-PM not defined here: {e}");
         }
     }
-    let system = spm.twist_system(DEFAULT_RANK_TOLERANCE);
     if system.order.rank < 6 {
         let _ = writeln!(
             s,
