@@ -50,6 +50,10 @@ pub enum StackError {
         /// Heights given.
         heights: usize,
     },
+    /// More modules than a `/2` description holds: fifteen primitive joints each, at most
+    /// [`super::MAX_JOINTS`] (docs/limits.md).
+    #[error("{0} modules: at most {max} (fifteen primitive joints each, at most {joints}; docs/limits.md)", max = MAX_MODULES, joints = super::MAX_JOINTS)]
+    TooManyModules(usize),
     /// A radius or height that is not a finite non-zero length (radii positive).
     #[error("radius or height {0} is not a usable length")]
     Length(f64),
@@ -62,6 +66,10 @@ pub enum StackError {
         residual: f64,
     },
 }
+
+/// The most modules of a stack: three five-joint legs each, within the joints (and legs) of a
+/// `/2` description (docs/limits.md): 72 / 15 = 4.
+pub const MAX_MODULES: usize = super::MAX_JOINTS / 15;
 
 /// Vertex `i` of a platform of circum-radius `h`, in its frame.
 fn vertex(h: f64, i: usize) -> Vector3<f64> {
@@ -154,6 +162,9 @@ pub fn stack(spec: &StackSpec) -> Result<MultibodyDescription, StackError> {
             radii: spec.radii.len(),
             heights: spec.heights.len(),
         });
+    }
+    if n > MAX_MODULES {
+        return Err(StackError::TooManyModules(n));
     }
     for &x in spec.radii.iter().chain(&spec.heights) {
         if !x.is_finite() || x == 0.0 || x.abs() > super::LARGEST_COORDINATE {

@@ -194,7 +194,7 @@ pub fn stack_command(
             std::fs::write(path, &text)
                 .map_err(|e| std::io::Error::new(e.kind(), format!("{}: {e}", path.display())))?;
             Ok(format!(
-                "wrote {} ({}) to {}\n",
+                "wrote {} ({} moving bodies) to {}\n",
                 d.name,
                 d.bodies.len(),
                 path.display()
