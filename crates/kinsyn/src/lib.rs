@@ -26,6 +26,7 @@ pub mod mechanism;
 pub mod motion;
 pub mod notation;
 pub mod paper;
+pub mod poly;
 pub mod screw;
 pub mod series;
 pub mod spatial;

@@ -1,0 +1,605 @@
+//! Sparse multivariate polynomials with complex coefficients, and square systems of them: the
+//! algebraic form of position problems (paper 003 §3.2, paper 004 §3), solved completely by
+//! [`crate::homotopy`].
+//!
+//! A [`Poly`] is a finite sum of terms `c · x0^e0 · x1^e1 ⋯` over a fixed list of variables
+//! (its ring, `nvars` of them); coefficients are [`C64`], with real polynomials simply having
+//! zero imaginary parts ([`Poly::is_real`]). A [`System`] names its variables and may group them
+//! for a multi-homogeneous structure; [`Program`] compiles its equations and their Jacobian into
+//! a straight-line program evaluated without allocation, over complex numbers or over the
+//! intervals of the certificates.
+//!
+//! ```
+//! use kinsyn::poly::{Poly, System, C64};
+//! // The unit circle met by the line x = y.
+//! let x = Poly::variable(2, 0);
+//! let y = Poly::variable(2, 1);
+//! let circle = &x * &x + &y * &y - Poly::real(2, 1.0);
+//! let line = &x - &y;
+//! let system = System::new(vec!["x".into(), "y".into()], vec![circle, line]).unwrap();
+//! assert_eq!(system.bezout_number(), 2);
+//! let h = std::f64::consts::FRAC_1_SQRT_2;
+//! let residual = system.evaluate(&[C64::new(h, 0.0), C64::new(h, 0.0)]);
+//! assert!(residual.iter().all(|r| r.norm() < 1e-15));
+//! ```
+
+mod program;
+
+pub use program::{Program, Scalar, Workspace};
+
+use std::collections::BTreeMap;
+use std::fmt::Write as _;
+use std::ops::{Add, Mul, Neg, Sub};
+
+/// A complex number in double precision: the coefficients and values of polynomials.
+pub type C64 = nalgebra::Complex<f64>;
+
+/// Why polynomials or a system cannot be formed.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum PolyError {
+    /// An equation lives in a ring with another number of variables than the system names.
+    #[error("equation {equation} has {found} variables, the system names {expected}")]
+    VariableCount {
+        /// The equation (0-based).
+        equation: usize,
+        /// The number of variables the system names.
+        expected: usize,
+        /// The number of variables of the equation's ring.
+        found: usize,
+    },
+    /// Two variables share a name, or a name is empty.
+    #[error("variable name {0:?} is empty or used twice")]
+    VariableName(String),
+    /// The variable groups do not partition the variables.
+    #[error("the variable groups must list every variable exactly once: {0}")]
+    Groups(String),
+}
+
+/// A polynomial in `nvars` variables with complex coefficients, stored as its non-zero terms:
+/// exponent vector → coefficient, in lexicographic order of the exponent vectors.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Poly {
+    nvars: usize,
+    terms: BTreeMap<Vec<u32>, C64>,
+}
+
+impl Poly {
+    /// The zero polynomial of the ring with `nvars` variables.
+    #[must_use]
+    pub fn zero(nvars: usize) -> Self {
+        Self {
+            nvars,
+            terms: BTreeMap::new(),
+        }
+    }
+
+    /// The constant `c`.
+    #[must_use]
+    pub fn constant(nvars: usize, c: C64) -> Self {
+        Self::from_terms(nvars, [(vec![0; nvars], c)])
+    }
+
+    /// The real constant `c`.
+    #[must_use]
+    pub fn real(nvars: usize, c: f64) -> Self {
+        Self::constant(nvars, C64::new(c, 0.0))
+    }
+
+    /// The variable `x_i`.
+    ///
+    /// # Panics
+    /// If `i >= nvars` (a programming error: the ring has no such variable).
+    #[must_use]
+    pub fn variable(nvars: usize, i: usize) -> Self {
+        assert!(i < nvars, "variable {i} of a ring with {nvars} variables");
+        let mut e = vec![0; nvars];
+        e[i] = 1;
+        Self::from_terms(nvars, [(e, C64::new(1.0, 0.0))])
+    }
+
+    /// The sum of the given terms (like terms added, zero coefficients dropped).
+    ///
+    /// # Panics
+    /// If an exponent vector's length is not `nvars`.
+    #[must_use]
+    pub fn from_terms(nvars: usize, terms: impl IntoIterator<Item = (Vec<u32>, C64)>) -> Self {
+        let mut p = Self::zero(nvars);
+        for (e, c) in terms {
+            assert_eq!(e.len(), nvars, "exponent vector of the wrong length");
+            p.add_term(e, c);
+        }
+        p
+    }
+
+    fn add_term(&mut self, e: Vec<u32>, c: C64) {
+        use std::collections::btree_map::Entry;
+        if c == C64::new(0.0, 0.0) {
+            return;
+        }
+        match self.terms.entry(e) {
+            Entry::Vacant(v) => {
+                v.insert(c);
+            }
+            Entry::Occupied(mut o) => {
+                *o.get_mut() += c;
+                if *o.get() == C64::new(0.0, 0.0) {
+                    o.remove();
+                }
+            }
+        }
+    }
+
+    /// The number of variables of the ring.
+    #[must_use]
+    pub fn nvars(&self) -> usize {
+        self.nvars
+    }
+
+    /// The non-zero terms: exponent vector (one exponent per variable) and coefficient.
+    pub fn terms(&self) -> impl Iterator<Item = (&[u32], C64)> + '_ {
+        self.terms.iter().map(|(e, c)| (e.as_slice(), *c))
+    }
+
+    /// The number of non-zero terms.
+    #[must_use]
+    pub fn len(&self) -> usize {
+        self.terms.len()
+    }
+
+    /// Whether this is the zero polynomial.
+    #[must_use]
+    pub fn is_empty(&self) -> bool {
+        self.terms.is_empty()
+    }
+
+    /// Whether every coefficient is real (zero imaginary part): the polynomial maps real
+    /// points to real values, and its non-real roots come in conjugate pairs.
+    #[must_use]
+    pub fn is_real(&self) -> bool {
+        self.terms.values().all(|c| c.im == 0.0)
+    }
+
+    /// The total degree (0 for constants and for the zero polynomial).
+    #[must_use]
+    pub fn total_degree(&self) -> u32 {
+        self.degree_in_iter(0..self.nvars)
+    }
+
+    /// The degree in the variables `vars` together (the others counted as constants): the
+    /// degree of the polynomial in one group of a multi-homogeneous structure.
+    #[must_use]
+    pub fn degree_in(&self, vars: &[usize]) -> u32 {
+        self.degree_in_iter(vars.iter().copied())
+    }
+
+    fn degree_in_iter(&self, vars: impl Iterator<Item = usize> + Clone) -> u32 {
+        self.terms
+            .keys()
+            .map(|e| vars.clone().map(|i| e[i]).sum::<u32>())
+            .max()
+            .unwrap_or(0)
+    }
+
+    /// The partial derivative `∂p/∂x_i`.
+    #[must_use]
+    pub fn derivative(&self, i: usize) -> Self {
+        let terms = self.terms.iter().filter(|(e, _)| e[i] > 0).map(|(e, c)| {
+            let mut d = e.clone();
+            d[i] -= 1;
+            (d, c * f64::from(e[i]))
+        });
+        Self::from_terms(self.nvars, terms)
+    }
+
+    /// The value at the point `x` (one coordinate per variable).
+    ///
+    /// # Panics
+    /// If `x` has fewer than `nvars` coordinates.
+    #[must_use]
+    pub fn eval(&self, x: &[C64]) -> C64 {
+        self.terms
+            .iter()
+            .map(|(e, c)| {
+                e.iter().zip(x).fold(
+                    *c,
+                    |acc, (k, xi)| if *k == 0 { acc } else { acc * xi.powu(*k) },
+                )
+            })
+            .sum()
+    }
+
+    /// The polynomial with `x_i` replaced by `q` (a polynomial of the same ring).
+    #[must_use]
+    pub fn substitute(&self, i: usize, q: &Self) -> Self {
+        let mut out = Self::zero(self.nvars);
+        let mut powers = vec![Self::real(self.nvars, 1.0)];
+        for (e, c) in &self.terms {
+            while powers.len() <= e[i] as usize {
+                let next = powers.last().expect("starts with 1") * q;
+                powers.push(next);
+            }
+            let mut rest = e.clone();
+            rest[i] = 0;
+            let term = Self::from_terms(self.nvars, [(rest, *c)]);
+            out = out + term * &powers[e[i] as usize];
+        }
+        out
+    }
+
+    /// `p^k` (`p^0 = 1`).
+    #[must_use]
+    pub fn pow(&self, k: u32) -> Self {
+        (0..k).fold(Self::real(self.nvars, 1.0), |acc, _| acc * self)
+    }
+
+    /// `c · p`.
+    #[must_use]
+    pub fn scale(&self, c: C64) -> Self {
+        Self::from_terms(
+            self.nvars,
+            self.terms.iter().map(|(e, a)| (e.clone(), a * c)),
+        )
+    }
+
+    /// The same polynomial in a ring of `nvars` variables, variable `i` becoming `map[i]`:
+    /// how the equations of a part are placed in a larger system.
+    ///
+    /// # Panics
+    /// If `map` does not have one entry per variable or names a variable beyond `nvars`.
+    #[must_use]
+    pub fn relabel(&self, nvars: usize, map: &[usize]) -> Self {
+        assert_eq!(map.len(), self.nvars, "one new index per variable");
+        let terms = self.terms.iter().map(|(e, c)| {
+            let mut f = vec![0; nvars];
+            for (k, m) in e.iter().zip(map) {
+                f[*m] += k;
+            }
+            (f, *c)
+        });
+        Self::from_terms(nvars, terms)
+    }
+
+    /// The homogenisation with respect to the variable groups: each term of degree `d_j` in
+    /// group `j` is multiplied by `h_j^(D_j − d_j)`, `D_j` the polynomial's degree in the group
+    /// and `h_j` the new variable `nvars + j`. The result has `nvars + groups.len()` variables.
+    #[must_use]
+    pub fn homogenize(&self, groups: &[Vec<usize>]) -> Self {
+        let n = self.nvars + groups.len();
+        let degrees: Vec<u32> = groups.iter().map(|g| self.degree_in(g)).collect();
+        let terms = self.terms.iter().map(|(e, c)| {
+            let mut f = e.clone();
+            f.resize(n, 0);
+            for (j, g) in groups.iter().enumerate() {
+                let d: u32 = g.iter().map(|i| e[*i]).sum();
+                f[self.nvars + j] = degrees[j] - d;
+            }
+            (f, *c)
+        });
+        Self::from_terms(n, terms)
+    }
+
+    /// The polynomial written with the given variable names, e.g. `2*x^2 - y + 1`; complex
+    /// coefficients as `(re+im*I)`, Bertini's imaginary unit.
+    ///
+    /// # Panics
+    /// If fewer names than variables are given.
+    #[must_use]
+    pub fn display_with(&self, names: &[String]) -> String {
+        assert!(names.len() >= self.nvars, "a name per variable");
+        if self.terms.is_empty() {
+            return "0".into();
+        }
+        let mut out = String::new();
+        for (k, (e, c)) in self.terms.iter().rev().enumerate() {
+            let monomial: Vec<String> = e
+                .iter()
+                .enumerate()
+                .filter(|(_, k)| **k > 0)
+                .map(|(i, k)| {
+                    if *k == 1 {
+                        names[i].clone()
+                    } else {
+                        format!("{}^{k}", names[i])
+                    }
+                })
+                .collect();
+            let (sign, coefficient) = if c.im == 0.0 {
+                let s = if c.re < 0.0 { "-" } else { "+" };
+                (
+                    s,
+                    if c.re.abs() == 1.0 && !monomial.is_empty() {
+                        String::new()
+                    } else {
+                        format!("{:?}", c.re.abs())
+                    },
+                )
+            } else {
+                ("+", format!("({:?}{:+?}*I)", c.re, c.im))
+            };
+            if k == 0 {
+                if sign == "-" {
+                    out.push('-');
+                }
+            } else {
+                let _ = write!(out, " {sign} ");
+            }
+            out.push_str(&coefficient);
+            if !coefficient.is_empty() && !monomial.is_empty() {
+                out.push('*');
+            }
+            out.push_str(&monomial.join("*"));
+        }
+        out
+    }
+}
+
+impl std::fmt::Display for Poly {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let names: Vec<String> = (0..self.nvars).map(|i| format!("x{i}")).collect();
+        f.write_str(&self.display_with(&names))
+    }
+}
+
+fn same_ring(a: &Poly, b: &Poly) {
+    assert_eq!(a.nvars, b.nvars, "polynomials of different rings");
+}
+
+impl Add<&Poly> for &Poly {
+    type Output = Poly;
+    fn add(self, rhs: &Poly) -> Poly {
+        same_ring(self, rhs);
+        let mut out = self.clone();
+        for (e, c) in &rhs.terms {
+            out.add_term(e.clone(), *c);
+        }
+        out
+    }
+}
+
+impl Neg for &Poly {
+    type Output = Poly;
+    fn neg(self) -> Poly {
+        self.scale(C64::new(-1.0, 0.0))
+    }
+}
+
+impl Sub<&Poly> for &Poly {
+    type Output = Poly;
+    fn sub(self, rhs: &Poly) -> Poly {
+        self + &(-rhs)
+    }
+}
+
+impl Mul<&Poly> for &Poly {
+    type Output = Poly;
+    fn mul(self, rhs: &Poly) -> Poly {
+        same_ring(self, rhs);
+        let mut out = Poly::zero(self.nvars);
+        for (e, c) in &self.terms {
+            for (f, d) in &rhs.terms {
+                out.add_term(e.iter().zip(f).map(|(a, b)| a + b).collect(), c * d);
+            }
+        }
+        out
+    }
+}
+
+macro_rules! owned_ops {
+    ($($tr:ident $f:ident),*) => {$(
+        impl $tr<Poly> for Poly {
+            type Output = Poly;
+            fn $f(self, rhs: Poly) -> Poly { (&self).$f(&rhs) }
+        }
+        impl $tr<&Poly> for Poly {
+            type Output = Poly;
+            fn $f(self, rhs: &Poly) -> Poly { (&self).$f(rhs) }
+        }
+        impl $tr<Poly> for &Poly {
+            type Output = Poly;
+            fn $f(self, rhs: Poly) -> Poly { self.$f(&rhs) }
+        }
+    )*};
+}
+owned_ops!(Add add, Sub sub, Mul mul);
+
+impl Neg for Poly {
+    type Output = Poly;
+    fn neg(self) -> Poly {
+        -&self
+    }
+}
+
+impl Mul<C64> for Poly {
+    type Output = Poly;
+    fn mul(self, c: C64) -> Poly {
+        self.scale(c)
+    }
+}
+
+impl Mul<f64> for Poly {
+    type Output = Poly;
+    fn mul(self, c: f64) -> Poly {
+        self.scale(C64::new(c, 0.0))
+    }
+}
+
+/// A system of polynomial equations `f_1 = … = f_m = 0` in named variables, with an optional
+/// grouping of the variables for a multi-homogeneous structure (one group of all by default).
+#[derive(Clone, Debug, PartialEq)]
+pub struct System {
+    variables: Vec<String>,
+    equations: Vec<Poly>,
+    groups: Vec<Vec<usize>>,
+}
+
+impl System {
+    /// The system of `equations` in the named `variables` (in the order of the equations'
+    /// rings), all variables in one group.
+    ///
+    /// # Errors
+    /// [`PolyError::VariableCount`] if an equation's ring has another number of variables,
+    /// [`PolyError::VariableName`] if a name is empty or repeated.
+    pub fn new(variables: Vec<String>, equations: Vec<Poly>) -> Result<Self, PolyError> {
+        for (k, name) in variables.iter().enumerate() {
+            if name.is_empty() || variables[..k].contains(name) {
+                return Err(PolyError::VariableName(name.clone()));
+            }
+        }
+        for (equation, p) in equations.iter().enumerate() {
+            if p.nvars != variables.len() {
+                return Err(PolyError::VariableCount {
+                    equation,
+                    expected: variables.len(),
+                    found: p.nvars,
+                });
+            }
+        }
+        let groups = vec![(0..variables.len()).collect()];
+        Ok(Self {
+            variables,
+            equations,
+            groups,
+        })
+    }
+
+    /// The same system with the variables partitioned into `groups` (indices into the
+    /// variables) for a multi-homogeneous start system.
+    ///
+    /// # Errors
+    /// [`PolyError::Groups`] unless every variable is in exactly one non-empty group.
+    pub fn with_groups(mut self, groups: Vec<Vec<usize>>) -> Result<Self, PolyError> {
+        let mut seen = vec![0usize; self.variables.len()];
+        for g in &groups {
+            if g.is_empty() {
+                return Err(PolyError::Groups("a group is empty".into()));
+            }
+            for i in g {
+                match seen.get_mut(*i) {
+                    Some(s) => *s += 1,
+                    None => return Err(PolyError::Groups(format!("no variable {i}"))),
+                }
+            }
+        }
+        if let Some(i) = seen.iter().position(|s| *s != 1) {
+            return Err(PolyError::Groups(format!(
+                "variable {:?} is in {} groups",
+                self.variables[i], seen[i]
+            )));
+        }
+        self.groups = groups;
+        Ok(self)
+    }
+
+    /// The variable names.
+    #[must_use]
+    pub fn variables(&self) -> &[String] {
+        &self.variables
+    }
+
+    /// The equations (each a polynomial in all the variables).
+    #[must_use]
+    pub fn equations(&self) -> &[Poly] {
+        &self.equations
+    }
+
+    /// The variable groups (indices into [`Self::variables`]).
+    #[must_use]
+    pub fn groups(&self) -> &[Vec<usize>] {
+        &self.groups
+    }
+
+    /// The number of variables.
+    #[must_use]
+    pub fn nvars(&self) -> usize {
+        self.variables.len()
+    }
+
+    /// The number of equations.
+    #[must_use]
+    pub fn len(&self) -> usize {
+        self.equations.len()
+    }
+
+    /// Whether the system has no equations.
+    #[must_use]
+    pub fn is_empty(&self) -> bool {
+        self.equations.is_empty()
+    }
+
+    /// Whether there are as many equations as variables.
+    #[must_use]
+    pub fn is_square(&self) -> bool {
+        self.len() == self.nvars()
+    }
+
+    /// Whether every coefficient is real.
+    #[must_use]
+    pub fn is_real(&self) -> bool {
+        self.equations.iter().all(Poly::is_real)
+    }
+
+    /// The total degree of each equation.
+    #[must_use]
+    pub fn degrees(&self) -> Vec<u32> {
+        self.equations.iter().map(Poly::total_degree).collect()
+    }
+
+    /// Bézout's number, the product of the degrees: for a square system, the number of paths
+    /// of a total-degree homotopy and a bound on the isolated solutions in ℂⁿ.
+    #[must_use]
+    pub fn bezout_number(&self) -> u128 {
+        self.degrees().iter().map(|d| u128::from(*d)).product()
+    }
+
+    /// The degree of each equation in each variable group: `[equation][group]`.
+    #[must_use]
+    pub fn multihomogeneous_degrees(&self) -> Vec<Vec<u32>> {
+        self.equations
+            .iter()
+            .map(|p| self.groups.iter().map(|g| p.degree_in(g)).collect())
+            .collect()
+    }
+
+    /// The multi-homogeneous Bézout number of the grouping: the coefficient of
+    /// `Π_j α_j^{n_j}` in `Π_i Σ_j d_ij α_j` (`n_j` the size of group `j`, `d_ij` the degree
+    /// of equation `i` in it), the number of paths of the multi-homogeneous start system.
+    /// Zero unless the system is square.
+    #[must_use]
+    pub fn multihomogeneous_bezout(&self) -> u128 {
+        if !self.is_square() {
+            return 0;
+        }
+        let d = self.multihomogeneous_degrees();
+        let sizes: Vec<usize> = self.groups.iter().map(Vec::len).collect();
+        // Count the assignments of equations to groups, group j receiving n_j equations,
+        // weighted by the product of the chosen degrees (a memoised walk over the equations).
+        let mut counts: BTreeMap<Vec<usize>, u128> = BTreeMap::new();
+        counts.insert(vec![0; sizes.len()], 1);
+        for row in &d {
+            let mut next = BTreeMap::new();
+            for (used, w) in &counts {
+                for (j, dij) in row.iter().enumerate() {
+                    if *dij > 0 && used[j] < sizes[j] {
+                        let mut u = used.clone();
+                        u[j] += 1;
+                        *next.entry(u).or_insert(0) += w * u128::from(*dij);
+                    }
+                }
+            }
+            counts = next;
+        }
+        counts.get(&sizes).copied().unwrap_or(0)
+    }
+
+    /// The values of the equations at `x`.
+    #[must_use]
+    pub fn evaluate(&self, x: &[C64]) -> Vec<C64> {
+        self.equations.iter().map(|p| p.eval(x)).collect()
+    }
+
+    /// The straight-line program of the equations and their Jacobian.
+    #[must_use]
+    pub fn program(&self) -> Program {
+        Program::new(&self.equations, self.nvars())
+    }
+}

@@ -1,0 +1,225 @@
+//! A straight-line program for a polynomial system and its Jacobian: the monomials of the
+//! equations and of their partial derivatives listed once, each a product of powers of the
+//! variables, and every output a sum of coefficient × monomial. Evaluation walks these flat
+//! lists into a reusable [`Workspace`] — no allocation per evaluation — over any [`Scalar`]:
+//! complex numbers for path tracking, complex intervals for the certificates.
+
+use super::{C64, Poly};
+use std::collections::HashMap;
+use std::ops::{Add, Mul, Neg, Sub};
+
+/// The numbers a [`Program`] evaluates over: a commutative ring holding the complex
+/// coefficients (exactly, or enclosing them).
+pub trait Scalar:
+    Copy
+    + Add<Output = Self>
+    + Sub<Output = Self>
+    + Mul<Output = Self>
+    + Neg<Output = Self>
+    + Send
+    + Sync
+{
+    /// The additive identity.
+    fn zero() -> Self;
+    /// The multiplicative identity.
+    fn one() -> Self;
+    /// A coefficient of the polynomials (an interval type returns an enclosure of it).
+    fn coefficient(c: C64) -> Self;
+}
+
+impl Scalar for C64 {
+    fn zero() -> Self {
+        C64::new(0.0, 0.0)
+    }
+    fn one() -> Self {
+        C64::new(1.0, 0.0)
+    }
+    fn coefficient(c: C64) -> Self {
+        c
+    }
+}
+
+/// The compiled form of a list of polynomials in one ring and of their Jacobian.
+#[derive(Clone, Debug)]
+pub struct Program {
+    nvars: usize,
+    len: usize,
+    /// Offset of each variable's powers `x^0 … x^max` in the power table.
+    power_offset: Vec<usize>,
+    power_len: usize,
+    /// Each monomial as a range of `factors` (indices into the power table).
+    monomials: Vec<(u32, u32)>,
+    factors: Vec<u32>,
+    /// Coefficient and monomial of every term of every output.
+    terms: Vec<(C64, u32)>,
+    /// The outputs, each a range of `terms`: the equations, then the Jacobian row by row.
+    outputs: Vec<(u32, u32)>,
+}
+
+/// Scratch space of a [`Program`] over one scalar type: the power table, the monomials and the
+/// coefficients converted once. Make one per thread with [`Program::workspace`].
+#[derive(Clone, Debug)]
+pub struct Workspace<S> {
+    powers: Vec<S>,
+    monomials: Vec<S>,
+    coefficients: Vec<S>,
+}
+
+impl Program {
+    /// Compiles `equations` (each a polynomial in `nvars` variables).
+    ///
+    /// # Panics
+    /// If an equation's ring does not have `nvars` variables.
+    #[must_use]
+    pub fn new(equations: &[Poly], nvars: usize) -> Self {
+        let mut max_power = vec![0u32; nvars];
+        let mut derivatives = Vec::with_capacity(equations.len() * nvars);
+        for p in equations {
+            assert_eq!(p.nvars(), nvars, "an equation of another ring");
+            for (e, _) in p.terms() {
+                for (m, k) in max_power.iter_mut().zip(e) {
+                    *m = (*m).max(*k);
+                }
+            }
+        }
+        for p in equations {
+            for i in 0..nvars {
+                derivatives.push(p.derivative(i));
+            }
+        }
+        let mut power_offset = Vec::with_capacity(nvars);
+        let mut power_len = 1; // entry 0 is the constant 1
+        for m in &max_power {
+            power_offset.push(power_len);
+            power_len += *m as usize;
+        }
+        let mut index: HashMap<Vec<u32>, u32> = HashMap::new();
+        let mut monomials = Vec::new();
+        let mut factors = Vec::new();
+        let mut terms = Vec::new();
+        let mut outputs = Vec::with_capacity(equations.len() * (nvars + 1));
+        for p in equations.iter().chain(&derivatives) {
+            let start = terms.len() as u32;
+            for (e, c) in p.terms() {
+                let m = *index.entry(e.to_vec()).or_insert_with(|| {
+                    let first = factors.len() as u32;
+                    for (i, k) in e.iter().enumerate() {
+                        if *k > 0 {
+                            factors.push((power_offset[i] + *k as usize - 1) as u32);
+                        }
+                    }
+                    monomials.push((first, factors.len() as u32));
+                    (monomials.len() - 1) as u32
+                });
+                terms.push((c, m));
+            }
+            outputs.push((start, terms.len() as u32));
+        }
+        Self {
+            nvars,
+            len: equations.len(),
+            power_offset,
+            power_len,
+            monomials,
+            factors,
+            terms,
+            outputs,
+        }
+    }
+
+    /// The number of variables.
+    #[must_use]
+    pub fn nvars(&self) -> usize {
+        self.nvars
+    }
+
+    /// The number of equations.
+    #[must_use]
+    pub fn len(&self) -> usize {
+        self.len
+    }
+
+    /// Whether there are no equations.
+    #[must_use]
+    pub fn is_empty(&self) -> bool {
+        self.len == 0
+    }
+
+    /// A workspace for evaluations over `S`.
+    #[must_use]
+    pub fn workspace<S: Scalar>(&self) -> Workspace<S> {
+        Workspace {
+            powers: vec![S::one(); self.power_len],
+            monomials: vec![S::one(); self.monomials.len()],
+            coefficients: self.terms.iter().map(|(c, _)| S::coefficient(*c)).collect(),
+        }
+    }
+
+    fn fill_monomials<S: Scalar>(&self, x: &[S], ws: &mut Workspace<S>) {
+        assert_eq!(
+            x.len(),
+            self.nvars,
+            "a point with one coordinate per variable"
+        );
+        ws.powers[0] = S::one();
+        for (i, xi) in x.iter().enumerate() {
+            let start = self.power_offset[i];
+            let end = self
+                .power_offset
+                .get(i + 1)
+                .copied()
+                .unwrap_or(self.power_len);
+            let mut acc = S::one();
+            for slot in &mut ws.powers[start..end] {
+                acc = acc * *xi;
+                *slot = acc;
+            }
+        }
+        for (slot, (a, b)) in ws.monomials.iter_mut().zip(&self.monomials) {
+            *slot = self.factors[*a as usize..*b as usize]
+                .iter()
+                .fold(S::one(), |acc, f| acc * ws.powers[*f as usize]);
+        }
+    }
+
+    fn output<S: Scalar>(&self, k: usize, ws: &Workspace<S>) -> S {
+        let (a, b) = self.outputs[k];
+        (a as usize..b as usize).fold(S::zero(), |acc, t| {
+            acc + ws.coefficients[t] * ws.monomials[self.terms[t].1 as usize]
+        })
+    }
+
+    /// The values of the equations at `x`, into `values` (one per equation).
+    ///
+    /// # Panics
+    /// If `x` or `values` has the wrong length, or `ws` is another program's.
+    pub fn evaluate<S: Scalar>(&self, x: &[S], values: &mut [S], ws: &mut Workspace<S>) {
+        self.fill_monomials(x, ws);
+        for (k, v) in values[..self.len].iter_mut().enumerate() {
+            *v = self.output(k, ws);
+        }
+    }
+
+    /// The values at `x` and the Jacobian `∂f_i/∂x_j`, row-major into `jacobian`
+    /// (`len() × nvars()` entries).
+    ///
+    /// # Panics
+    /// If a slice has the wrong length, or `ws` is another program's.
+    pub fn evaluate_with_jacobian<S: Scalar>(
+        &self,
+        x: &[S],
+        values: &mut [S],
+        jacobian: &mut [S],
+        ws: &mut Workspace<S>,
+    ) {
+        self.evaluate(x, values, ws);
+        assert_eq!(
+            jacobian.len(),
+            self.len * self.nvars,
+            "a Jacobian of len × nvars entries"
+        );
+        for (k, v) in jacobian.iter_mut().enumerate() {
+            *v = self.output(self.len + k, ws);
+        }
+    }
+}
