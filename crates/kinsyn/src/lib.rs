@@ -19,6 +19,7 @@
 
 pub mod catalogue;
 pub mod chain;
+pub mod homotopy;
 mod linalg;
 pub mod lockset;
 pub mod manipulator;

@@ -1,0 +1,466 @@
+//! Homotopy continuation: every isolated complex solution of a square polynomial system, with
+//! each path's endpoint classified (finite or at infinity, regular or singular with its
+//! multiplicity, real or not) — the numerical algebraic geometry of Sommese & Wampler, *The
+//! Numerical Solution of Systems of Polynomials Arising in Engineering and Science* (2005), and
+//! of the solvers Bertini, PHCpack and HomotopyContinuation.jl, written anew for kinsyn.
+//!
+//! [`solve`] deforms a start system with known solutions into the target along the γ-trick
+//! homotopy in projective coordinates ([`StartSystem`]: total degree or multi-homogeneous),
+//! tracks every path in parallel (rayon; results in path order whatever the thread count) with
+//! an adaptive Runge–Kutta predictor and Newton corrector, and finishes each with the Cauchy
+//! endgame, which converges to singular endpoints too and gives their winding numbers.
+//! Endpoints that coincide although regular betray a path jump: those paths are tracked again
+//! with stricter steps. Every random choice (γ, patches, start forms) comes from one seeded
+//! generator: the same seed gives the same paths.
+//!
+//! ```
+//! use kinsyn::homotopy::{solve, SolveSettings};
+//! use kinsyn::poly::{Poly, System};
+//! // The unit circle met by the line x = y: two real points (±1/√2, ±1/√2).
+//! let x = Poly::variable(2, 0);
+//! let y = Poly::variable(2, 1);
+//! let circle = &x * &x + &y * &y - Poly::real(2, 1.0);
+//! let system = System::new(vec!["x".into(), "y".into()], vec![circle, &x - &y]).unwrap();
+//! let report = solve(&system, &SolveSettings::default()).unwrap();
+//! assert_eq!(report.nonsingular(), 2);
+//! assert_eq!(report.real(), 2);
+//! assert_eq!(report.at_infinity(), 0, "Bézout's 2 paths, both finite");
+//! ```
+
+mod start;
+mod tracker;
+
+pub use start::StartSystem;
+pub use tracker::{PathFailure, TrackerSettings};
+
+pub use crate::poly::C64;
+use crate::poly::System;
+use nalgebra::DVector;
+use rand::SeedableRng;
+use rand_chacha::ChaCha8Rng;
+use rayon::prelude::*;
+use start::ProjectiveHomotopy;
+use tracker::Tracker;
+
+/// The most paths [`solve`] tracks: beyond, the system is refused rather than left to run for
+/// hours (a tighter start system or a parameter homotopy is the way).
+pub const MAX_PATHS: u128 = 1 << 20;
+
+/// An endpoint is at infinity when a homogenising coordinate is below this fraction of its
+/// group's coordinates.
+pub const INFINITY_TOLERANCE: f64 = 1e-8;
+
+/// An endpoint is singular when the smallest singular value of the homotopy's Jacobian at
+/// `t = 0` is below this fraction of the largest (or its winding number exceeds 1).
+pub const SINGULAR_TOLERANCE: f64 = 1e-9;
+
+/// A solution is real when each imaginary part is below this fraction of `1 + |x|`.
+pub const REAL_TOLERANCE: f64 = 1e-8;
+
+/// Why a system cannot be solved.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum HomotopyError {
+    /// Not as many equations as variables.
+    #[error(
+        "the system has {equations} equations in {variables} variables: homotopy continuation here solves square systems"
+    )]
+    NotSquare {
+        /// The number of equations.
+        equations: usize,
+        /// The number of variables.
+        variables: usize,
+    },
+    /// An equation is a non-zero constant (no solution) or zero (not isolated).
+    #[error("equation {0} is constant: the system has no isolated solutions")]
+    ConstantEquation(usize),
+    /// More paths than [`MAX_PATHS`].
+    #[error("{0} paths exceed the limit of {MAX_PATHS}")]
+    TooManyPaths(u128),
+}
+
+/// How to solve.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SolveSettings {
+    /// The seed of every random choice (γ, patches, start forms).
+    pub seed: u64,
+    /// The start system.
+    pub start: StartSystem,
+    /// Step control and endgame.
+    pub tracker: TrackerSettings,
+    /// How many times paths with suspect endpoints (coinciding regular endpoints: a path jump;
+    /// failures) are tracked again with stricter steps.
+    pub retrack_rounds: usize,
+}
+
+impl Default for SolveSettings {
+    fn default() -> Self {
+        Self {
+            seed: 1,
+            start: StartSystem::TotalDegree,
+            tracker: TrackerSettings::default(),
+            retrack_rounds: 2,
+        }
+    }
+}
+
+/// What one path ended at.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum EndpointKind {
+    /// A finite, non-singular solution (winding number 1, Jacobian of full rank).
+    Regular,
+    /// A finite singular solution (or one reached with winding number above 1).
+    Singular,
+    /// A point at infinity of the projective closure: no affine solution.
+    AtInfinity,
+    /// The path was given up (see [`PathEnd::failure`]).
+    Failed,
+}
+
+/// The end of one path.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PathEnd {
+    /// The path's number (the index of its start solution).
+    pub path: usize,
+    /// What it ended at.
+    pub kind: EndpointKind,
+    /// The affine endpoint (finite endpoints only).
+    pub x: Option<Vec<C64>>,
+    /// The winding number of the endgame (the cycle number of the path's Puiseux series).
+    pub winding: usize,
+    /// `σ_min / σ_max` of the homotopy's Jacobian at the endpoint (its inverse condition).
+    pub inverse_condition: f64,
+    /// Steps taken, accepted or not.
+    pub steps: usize,
+    /// Why it failed, for failed paths.
+    pub failure: Option<PathFailure>,
+    /// Whether this end comes from tracking the path again.
+    pub retracked: bool,
+}
+
+/// A distinct finite solution, and the paths that reached it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Solution {
+    /// The coordinates, in the system's variable order.
+    pub x: Vec<C64>,
+    /// Whether it is non-singular.
+    pub regular: bool,
+    /// The number of paths that ended here: the multiplicity of a singular isolated solution
+    /// (1 for a regular one).
+    pub multiplicity: usize,
+    /// Whether every coordinate is real (to [`REAL_TOLERANCE`], for real systems).
+    pub real: bool,
+    /// The largest `|f_i(x)|`.
+    pub residual: f64,
+    /// The paths that ended here.
+    pub paths: Vec<usize>,
+}
+
+/// All that [`solve`] found.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SolveReport {
+    /// The start system used.
+    pub start: StartSystem,
+    /// The seed.
+    pub seed: u64,
+    /// One end per path, in path order.
+    pub ends: Vec<PathEnd>,
+    /// The distinct finite solutions, regular ones first.
+    pub solutions: Vec<Solution>,
+    /// Paths tracked again.
+    pub retracked: usize,
+    /// Wall time in seconds.
+    pub seconds: f64,
+}
+
+impl SolveReport {
+    /// The number of paths.
+    #[must_use]
+    pub fn paths(&self) -> usize {
+        self.ends.len()
+    }
+
+    /// The number of distinct non-singular solutions.
+    #[must_use]
+    pub fn nonsingular(&self) -> usize {
+        self.solutions.iter().filter(|s| s.regular).count()
+    }
+
+    /// The number of distinct real non-singular solutions.
+    #[must_use]
+    pub fn real(&self) -> usize {
+        self.solutions
+            .iter()
+            .filter(|s| s.regular && s.real)
+            .count()
+    }
+
+    /// The number of distinct singular solutions.
+    #[must_use]
+    pub fn singular(&self) -> usize {
+        self.solutions.iter().filter(|s| !s.regular).count()
+    }
+
+    /// The number of paths that ended at infinity.
+    #[must_use]
+    pub fn at_infinity(&self) -> usize {
+        self.ends
+            .iter()
+            .filter(|e| e.kind == EndpointKind::AtInfinity)
+            .count()
+    }
+
+    /// The number of failed paths.
+    #[must_use]
+    pub fn failed(&self) -> usize {
+        self.ends
+            .iter()
+            .filter(|e| e.kind == EndpointKind::Failed)
+            .count()
+    }
+
+    /// One line: "12 non-singular solutions (2 real), 52 at infinity, 64 paths".
+    #[must_use]
+    pub fn summary(&self) -> String {
+        let mut s = format!(
+            "{} non-singular solutions ({} real)",
+            self.nonsingular(),
+            self.real()
+        );
+        if self.singular() > 0 {
+            s += &format!(", {} singular", self.singular());
+        }
+        s += &format!(", {} at infinity", self.at_infinity());
+        if self.failed() > 0 {
+            s += &format!(", {} failed", self.failed());
+        }
+        s + &format!(", {} paths", self.paths())
+    }
+}
+
+/// All isolated solutions of the square `system` (module documentation).
+///
+/// # Errors
+/// [`HomotopyError`] if the system is not square, has a constant equation, or needs more than
+/// [`MAX_PATHS`] paths.
+pub fn solve(system: &System, settings: &SolveSettings) -> Result<SolveReport, HomotopyError> {
+    solve_with_progress(system, settings, &|| {})
+}
+
+/// [`solve`], calling `progress` once per path tracked (from any thread).
+///
+/// # Errors
+/// As [`solve`].
+pub fn solve_with_progress(
+    system: &System,
+    settings: &SolveSettings,
+    progress: &(dyn Fn() + Sync),
+) -> Result<SolveReport, HomotopyError> {
+    let clock = std::time::Instant::now();
+    if !system.is_square() {
+        return Err(HomotopyError::NotSquare {
+            equations: system.len(),
+            variables: system.nvars(),
+        });
+    }
+    if let Some(i) = system.degrees().iter().position(|d| *d == 0) {
+        return Err(HomotopyError::ConstantEquation(i));
+    }
+    let count = match settings.start {
+        StartSystem::TotalDegree => system.bezout_number(),
+        StartSystem::MultiHomogeneous => system.multihomogeneous_bezout(),
+    };
+    if count > MAX_PATHS {
+        return Err(HomotopyError::TooManyPaths(count));
+    }
+    let mut rng = ChaCha8Rng::seed_from_u64(settings.seed);
+    let homotopy = ProjectiveHomotopy::new(system, settings.start, &mut rng);
+    let starts = homotopy.start_solutions();
+    let mut ends: Vec<PathEnd> = starts
+        .par_iter()
+        .enumerate()
+        .map(|(k, z)| {
+            let end = track_path(&homotopy, settings.tracker, k, z.clone());
+            progress();
+            end
+        })
+        .collect();
+    let mut retracked = 0;
+    for _ in 0..settings.retrack_rounds {
+        let suspects = suspect_paths(&ends);
+        if suspects.is_empty() {
+            break;
+        }
+        retracked += suspects.len();
+        let stricter = settings.tracker.stricter();
+        let again: Vec<PathEnd> = suspects
+            .par_iter()
+            .map(|k| PathEnd {
+                retracked: true,
+                ..track_path(&homotopy, stricter, *k, starts[*k].clone())
+            })
+            .collect();
+        for e in again {
+            let k = e.path;
+            ends[k] = e;
+        }
+    }
+    let solutions = distinct_solutions(system, &ends);
+    Ok(SolveReport {
+        start: settings.start,
+        seed: settings.seed,
+        ends,
+        solutions,
+        retracked,
+        seconds: clock.elapsed().as_secs_f64(),
+    })
+}
+
+/// Tracks path `k` from its start solution `z` and classifies its end.
+fn track_path(
+    homotopy: &ProjectiveHomotopy,
+    settings: TrackerSettings,
+    k: usize,
+    mut z: DVector<C64>,
+) -> PathEnd {
+    let mut tracker = Tracker::new(homotopy, settings);
+    let failed = |failure, steps| PathEnd {
+        path: k,
+        kind: EndpointKind::Failed,
+        x: None,
+        winding: 0,
+        inverse_condition: 0.0,
+        steps,
+        failure: Some(failure),
+        retracked: false,
+    };
+    let end = match tracker.track_to_end(&mut z) {
+        Ok(end) => end,
+        Err(f) => return failed(f, tracker.steps),
+    };
+    let mut point = end.z;
+    if homotopy.infinity_measure(&point) < INFINITY_TOLERANCE {
+        return PathEnd {
+            path: k,
+            kind: EndpointKind::AtInfinity,
+            x: None,
+            winding: end.winding,
+            inverse_condition: 0.0,
+            steps: tracker.steps,
+            failure: None,
+            retracked: false,
+        };
+    }
+    let jacobian = tracker.jacobian(&point, C64::from(0.0));
+    let sv = jacobian.singular_values();
+    let inverse_condition = sv.min() / sv.max();
+    let regular = end.winding == 1 && inverse_condition > SINGULAR_TOLERANCE;
+    if regular {
+        tracker.refine(&mut point, C64::from(0.0), 1e-14);
+    } else if !end.converged {
+        return failed(PathFailure::Endgame, tracker.steps);
+    }
+    if homotopy.infinity_measure(&point) < INFINITY_TOLERANCE {
+        return PathEnd {
+            path: k,
+            kind: EndpointKind::AtInfinity,
+            x: None,
+            winding: end.winding,
+            inverse_condition,
+            steps: tracker.steps,
+            failure: None,
+            retracked: false,
+        };
+    }
+    PathEnd {
+        path: k,
+        kind: if regular {
+            EndpointKind::Regular
+        } else {
+            EndpointKind::Singular
+        },
+        x: Some(homotopy.affine(&point)),
+        winding: end.winding,
+        inverse_condition,
+        steps: tracker.steps,
+        failure: None,
+        retracked: false,
+    }
+}
+
+fn close(a: &[C64], b: &[C64], tolerance: f64) -> bool {
+    let d: f64 = a
+        .iter()
+        .zip(b)
+        .map(|(p, q)| (p - q).norm_sqr())
+        .sum::<f64>()
+        .sqrt();
+    let size: f64 = a.iter().map(|p| p.norm_sqr()).sum::<f64>().sqrt();
+    d <= tolerance * (1.0 + size)
+}
+
+/// Paths to track again: failed ones, and regular endpoints reached by more than one path (a
+/// regular solution is the end of exactly one path of a γ-trick homotopy, so a second one
+/// jumped).
+fn suspect_paths(ends: &[PathEnd]) -> Vec<usize> {
+    let mut suspects = Vec::new();
+    for (k, e) in ends.iter().enumerate() {
+        if e.kind == EndpointKind::Failed {
+            suspects.push(k);
+            continue;
+        }
+        if e.kind != EndpointKind::Regular {
+            continue;
+        }
+        let x = e.x.as_deref().expect("finite");
+        let twin = ends.iter().enumerate().any(|(l, f)| {
+            l != k
+                && f.kind == EndpointKind::Regular
+                && close(x, f.x.as_deref().expect("finite"), 1e-6)
+        });
+        if twin {
+            suspects.push(k);
+        }
+    }
+    suspects
+}
+
+/// The finite endpoints grouped into distinct solutions.
+fn distinct_solutions(system: &System, ends: &[PathEnd]) -> Vec<Solution> {
+    let real_system = system.is_real();
+    let mut solutions: Vec<Solution> = Vec::new();
+    let mut finite: Vec<&PathEnd> = ends.iter().filter(|e| e.x.is_some()).collect();
+    finite.sort_by_key(|e| e.kind != EndpointKind::Regular);
+    for e in finite {
+        let x = e.x.as_deref().expect("finite");
+        let tolerance = if e.kind == EndpointKind::Regular {
+            1e-6
+        } else {
+            1e-4
+        };
+        if let Some(s) = solutions.iter_mut().find(|s| close(&s.x, x, tolerance)) {
+            s.multiplicity += 1;
+            s.paths.push(e.path);
+            s.regular &= e.kind == EndpointKind::Regular;
+            continue;
+        }
+        let size = x.iter().map(|c| c.norm_sqr()).sum::<f64>().sqrt();
+        let real = real_system
+            && x.iter()
+                .all(|c| c.im.abs() <= REAL_TOLERANCE * (1.0 + size));
+        let residual = system
+            .evaluate(x)
+            .iter()
+            .map(|v| v.norm())
+            .fold(0.0, f64::max);
+        solutions.push(Solution {
+            x: x.to_vec(),
+            regular: e.kind == EndpointKind::Regular,
+            multiplicity: 1,
+            real,
+            residual,
+            paths: vec![e.path],
+        });
+    }
+    solutions
+}

@@ -1,0 +1,389 @@
+//! Start systems and the projective γ-trick homotopy
+//! `H(z, t) = (1 − t) F̂(z) + γ t Ĝ(z)` with one random affine patch per variable group.
+//!
+//! `F̂` is the target system homogenised per group (one new coordinate `h_j` per group), so that
+//! paths whose affine coordinates diverge stay bounded and end at points with `h_j = 0`: the
+//! solutions at infinity. Each group's projective coordinates are fixed on the random
+//! hyperplane `a_j · z_j = 1` (Morgan 1986, *A transformation to avoid solutions at infinity*).
+//! For generic complex `γ` the paths from the start solutions at `t = 1` are non-singular for
+//! `t ∈ (0, 1]` with probability one (the γ-trick: Morgan & Sommese 1987; Sommese & Wampler,
+//! *The Numerical Solution of Systems of Polynomials*, 2005, §8.3).
+//!
+//! Start systems:
+//! - **total degree**, one group: `Ĝ_i = z_i^{d_i} − h^{d_i}`, whose `Π d_i` solutions are the
+//!   roots of unity;
+//! - **multi-homogeneous** (linear products): `Ĝ_i = Π_j Π_{k ≤ d_ij} L_ijk(z_j)` with random
+//!   linear forms `L`, `d_ij` the degree of equation `i` in group `j`; its solutions, one per
+//!   choice of a factor in each equation that gives each group as many linear equations as it
+//!   has variables, number the multi-homogeneous Bézout number (Morgan & Sommese 1987,
+//!   *Coefficient-parameter polynomial continuation*; Wampler 1992).
+
+use super::C64;
+use super::tracker::Homotopy;
+use crate::poly::{Program, System, Workspace};
+use nalgebra::{DMatrix, DVector};
+use rand::Rng;
+use rand_chacha::ChaCha8Rng;
+
+/// Which start system to use.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum StartSystem {
+    /// `z_i^{d_i} − h^{d_i}`: Bézout's number of paths.
+    #[default]
+    TotalDegree,
+    /// Products of random linear forms per variable group: the multi-homogeneous Bézout
+    /// number of paths, for the system's variable groups.
+    MultiHomogeneous,
+}
+
+fn random_complex(rng: &mut ChaCha8Rng) -> C64 {
+    // A point uniform on the unit circle: generic, and of unit size.
+    C64::from_polar(1.0, rng.random_range(0.0..std::f64::consts::TAU))
+}
+
+enum Start {
+    TotalDegree(Vec<u32>),
+    /// `[equation][group][factor]` → coefficients over the group's coordinates (its variables
+    /// in group order, then its homogenising coordinate).
+    LinearProduct(Vec<Vec<Vec<Vec<C64>>>>),
+}
+
+/// The γ-trick homotopy from a start system to a homogenised target, in projective coordinates
+/// `z = (x_0 … x_{n−1}, h_0 … h_{m−1})` with one patch per group.
+pub(crate) struct ProjectiveHomotopy {
+    n: usize,
+    /// Each group's coordinates in `z`: its variables then its homogenising coordinate.
+    groups: Vec<Vec<usize>>,
+    patches: Vec<Vec<C64>>,
+    target: Program,
+    start: Start,
+    gamma: C64,
+}
+
+/// The scratch of one evaluation of a [`ProjectiveHomotopy`].
+pub(crate) struct ProjectiveWorkspace {
+    program: Workspace<C64>,
+    values: Vec<C64>,
+    jacobian: Vec<C64>,
+    start: Vec<C64>,
+}
+
+impl ProjectiveHomotopy {
+    /// The homotopy for `system` (square) with the given start system, random data drawn from
+    /// `rng`.
+    pub(crate) fn new(system: &System, kind: StartSystem, rng: &mut ChaCha8Rng) -> Self {
+        let n = system.nvars();
+        let variable_groups: Vec<Vec<usize>> = match kind {
+            StartSystem::TotalDegree => vec![(0..n).collect()],
+            StartSystem::MultiHomogeneous => system.groups().to_vec(),
+        };
+        let homogenised: Vec<_> = system
+            .equations()
+            .iter()
+            .map(|p| p.homogenize(&variable_groups))
+            .collect();
+        let target = Program::new(&homogenised, n + variable_groups.len());
+        let groups: Vec<Vec<usize>> = variable_groups
+            .iter()
+            .enumerate()
+            .map(|(j, g)| g.iter().copied().chain([n + j]).collect())
+            .collect();
+        let patches = groups
+            .iter()
+            .map(|g| g.iter().map(|_| random_complex(rng)).collect())
+            .collect();
+        let start = match kind {
+            StartSystem::TotalDegree => Start::TotalDegree(system.degrees()),
+            StartSystem::MultiHomogeneous => {
+                let d = system
+                    .clone()
+                    .with_groups(variable_groups)
+                    .expect("the system's own groups")
+                    .multihomogeneous_degrees();
+                Start::LinearProduct(
+                    d.iter()
+                        .map(|row| {
+                            row.iter()
+                                .zip(&groups)
+                                .map(|(dij, g)| {
+                                    (0..*dij)
+                                        .map(|_| g.iter().map(|_| random_complex(rng)).collect())
+                                        .collect()
+                                })
+                                .collect()
+                        })
+                        .collect(),
+                )
+            }
+        };
+        let gamma = random_complex(rng);
+        Self {
+            n,
+            groups,
+            patches,
+            target,
+            start,
+            gamma,
+        }
+    }
+
+    /// The number of variables of the target system.
+    pub(crate) fn nvars(&self) -> usize {
+        self.n
+    }
+
+    /// Each group's coordinates in `z` (its variables, then its homogenising coordinate).
+    pub(crate) fn groups(&self) -> &[Vec<usize>] {
+        &self.groups
+    }
+
+    /// The start solutions, in a fixed order (the path numbers).
+    pub(crate) fn start_solutions(&self) -> Vec<DVector<C64>> {
+        match &self.start {
+            Start::TotalDegree(degrees) => self.roots_of_unity(degrees),
+            Start::LinearProduct(forms) => self.linear_product_solutions(forms),
+        }
+    }
+
+    fn roots_of_unity(&self, degrees: &[u32]) -> Vec<DVector<C64>> {
+        let total: usize = degrees.iter().map(|d| *d as usize).product();
+        let mut out = Vec::with_capacity(total);
+        let mut digits = vec![0u32; degrees.len()];
+        for _ in 0..total {
+            let mut z = DVector::from_element(self.n + 1, C64::from(1.0));
+            for (i, (k, d)) in digits.iter().zip(degrees).enumerate() {
+                z[i] = C64::from_polar(1.0, std::f64::consts::TAU * f64::from(*k) / f64::from(*d));
+            }
+            out.push(self.on_patches(z));
+            for (k, d) in digits.iter_mut().zip(degrees) {
+                *k += 1;
+                if *k < *d {
+                    break;
+                }
+                *k = 0;
+            }
+        }
+        out
+    }
+
+    /// Scales each group's coordinates onto its patch.
+    fn on_patches(&self, mut z: DVector<C64>) -> DVector<C64> {
+        for (g, a) in self.groups.iter().zip(&self.patches) {
+            let dot: C64 = g.iter().zip(a).map(|(i, ai)| ai * z[*i]).sum();
+            for i in g {
+                z[*i] /= dot;
+            }
+        }
+        z
+    }
+
+    fn linear_product_solutions(&self, forms: &[Vec<Vec<Vec<C64>>>]) -> Vec<DVector<C64>> {
+        let sizes: Vec<usize> = self.groups.iter().map(|g| g.len() - 1).collect();
+        let mut out = Vec::new();
+        // Every assignment of equations to groups with group j receiving sizes[j] equations,
+        // and every choice of one factor per equation.
+        let mut assignment = Vec::with_capacity(forms.len());
+        self.assign(
+            forms,
+            &sizes,
+            &mut vec![0; sizes.len()],
+            &mut assignment,
+            &mut out,
+        );
+        out
+    }
+
+    fn assign(
+        &self,
+        forms: &[Vec<Vec<Vec<C64>>>],
+        sizes: &[usize],
+        used: &mut [usize],
+        chosen: &mut Vec<(usize, usize)>,
+        out: &mut Vec<DVector<C64>>,
+    ) {
+        let i = chosen.len();
+        if i == forms.len() {
+            if let Some(z) = self.solve_linear(forms, chosen) {
+                out.push(z);
+            }
+            return;
+        }
+        for j in 0..sizes.len() {
+            if used[j] < sizes[j] {
+                used[j] += 1;
+                for k in 0..forms[i][j].len() {
+                    chosen.push((j, k));
+                    self.assign(forms, sizes, used, chosen, out);
+                    chosen.pop();
+                }
+                used[j] -= 1;
+            }
+        }
+    }
+
+    /// The solution of the chosen linear factors and the patches, group by group.
+    fn solve_linear(
+        &self,
+        forms: &[Vec<Vec<Vec<C64>>>],
+        chosen: &[(usize, usize)],
+    ) -> Option<DVector<C64>> {
+        let mut z = DVector::zeros(self.n + self.groups.len());
+        for (j, g) in self.groups.iter().enumerate() {
+            let m = g.len();
+            let mut a = DMatrix::zeros(m, m);
+            let mut b = DVector::zeros(m);
+            let mut row = 0;
+            for (i, (jj, k)) in chosen.iter().enumerate() {
+                if *jj == j {
+                    for c in 0..m {
+                        a[(row, c)] = forms[i][j][*k][c];
+                    }
+                    row += 1;
+                }
+            }
+            for c in 0..m {
+                a[(row, c)] = self.patches[j][c];
+            }
+            b[row] = C64::from(1.0);
+            let x = a.lu().solve(&b)?;
+            for (c, idx) in g.iter().enumerate() {
+                z[*idx] = x[c];
+            }
+        }
+        Some(z)
+    }
+
+    /// `Ĝ(z)` into `g` and its Jacobian into `gz`.
+    fn start_values(&self, z: &DVector<C64>, g: &mut [C64], gz: &mut DMatrix<C64>) {
+        match &self.start {
+            Start::TotalDegree(degrees) => {
+                let h = z[self.n];
+                for (i, d) in degrees.iter().enumerate() {
+                    let d = i32::try_from(*d).unwrap_or(i32::MAX);
+                    g[i] = z[i].powi(d) - h.powi(d);
+                    gz[(i, i)] = z[i].powi(d - 1) * f64::from(d);
+                    gz[(i, self.n)] = -h.powi(d - 1) * f64::from(d);
+                }
+            }
+            Start::LinearProduct(forms) => {
+                for (i, row) in forms.iter().enumerate() {
+                    // All factors' values, then the product and its gradient by the product rule.
+                    let mut factors: Vec<(usize, &Vec<C64>, C64)> = Vec::new();
+                    for (j, group_forms) in row.iter().enumerate() {
+                        for f in group_forms {
+                            let v: C64 = self.groups[j]
+                                .iter()
+                                .zip(f)
+                                .map(|(idx, c)| c * z[*idx])
+                                .sum();
+                            factors.push((j, f, v));
+                        }
+                    }
+                    g[i] = factors.iter().map(|f| f.2).product();
+                    for (k, (j, f, _)) in factors.iter().enumerate() {
+                        let others: C64 = factors
+                            .iter()
+                            .enumerate()
+                            .filter(|(l, _)| *l != k)
+                            .map(|(_, f)| f.2)
+                            .product();
+                        for (idx, c) in self.groups[*j].iter().zip(*f) {
+                            gz[(i, *idx)] += c * others;
+                        }
+                    }
+                }
+            }
+        }
+    }
+
+    /// Each group's homogenising coordinate `h_j` over the size of the group's coordinates:
+    /// near zero for a point at infinity.
+    pub(crate) fn infinity_measure(&self, z: &DVector<C64>) -> f64 {
+        self.groups
+            .iter()
+            .map(|g| {
+                let h = z[*g.last().expect("a group has its homogenising coordinate")].norm();
+                let size = g.iter().map(|i| z[*i].norm_sqr()).sum::<f64>().sqrt();
+                h / size
+            })
+            .fold(f64::INFINITY, f64::min)
+    }
+
+    /// The affine point of a finite `z`: each variable over its group's homogenising coordinate.
+    pub(crate) fn affine(&self, z: &DVector<C64>) -> Vec<C64> {
+        let mut x = vec![C64::from(0.0); self.n];
+        for g in &self.groups {
+            let h = z[*g.last().expect("a group has its homogenising coordinate")];
+            for i in &g[..g.len() - 1] {
+                x[*i] = z[*i] / h;
+            }
+        }
+        x
+    }
+
+    /// The projective point of an affine `x`, on the patches.
+    pub(crate) fn projective(&self, x: &[C64]) -> DVector<C64> {
+        let mut z = DVector::from_element(self.n + self.groups.len(), C64::from(1.0));
+        for (i, xi) in x.iter().enumerate() {
+            z[i] = *xi;
+        }
+        self.on_patches(z)
+    }
+}
+
+impl Homotopy for ProjectiveHomotopy {
+    type Workspace = ProjectiveWorkspace;
+
+    fn dim(&self) -> usize {
+        self.n + self.groups.len()
+    }
+
+    fn workspace(&self) -> ProjectiveWorkspace {
+        let n = self.target.len();
+        ProjectiveWorkspace {
+            program: self.target.workspace(),
+            values: vec![C64::from(0.0); n],
+            jacobian: vec![C64::from(0.0); n * self.dim()],
+            start: vec![C64::from(0.0); n],
+        }
+    }
+
+    fn evaluate(
+        &self,
+        z: &DVector<C64>,
+        t: C64,
+        ws: &mut ProjectiveWorkspace,
+        h: &mut DVector<C64>,
+        hz: &mut DMatrix<C64>,
+        ht: &mut DVector<C64>,
+    ) {
+        let dim = self.dim();
+        self.target.evaluate_with_jacobian(
+            z.as_slice(),
+            &mut ws.values,
+            &mut ws.jacobian,
+            &mut ws.program,
+        );
+        hz.fill(C64::from(0.0));
+        let g = &mut ws.start;
+        self.start_values(z, g, hz);
+        let one_minus_t = C64::from(1.0) - t;
+        let gt = self.gamma * t;
+        for i in 0..self.n {
+            h[i] = one_minus_t * ws.values[i] + gt * g[i];
+            ht[i] = self.gamma * g[i] - ws.values[i];
+            for c in 0..dim {
+                hz[(i, c)] = one_minus_t * ws.jacobian[i * dim + c] + gt * hz[(i, c)];
+            }
+        }
+        for (j, (grp, a)) in self.groups.iter().zip(&self.patches).enumerate() {
+            let row = self.n + j;
+            h[row] = grp.iter().zip(a).map(|(i, ai)| ai * z[*i]).sum::<C64>() - C64::from(1.0);
+            ht[row] = C64::from(0.0);
+            for (i, ai) in grp.iter().zip(a) {
+                hz[(row, *i)] = *ai;
+            }
+        }
+    }
+}

@@ -1,0 +1,375 @@
+//! The path tracker: follows a solution `z(t)` of `H(z, t) = 0` as the continuation parameter
+//! `t` moves along a path in ℂ, by a fourth-order Runge–Kutta predictor on the Davidenko
+//! equation `H_z ż = −H_t ṫ` and a Newton corrector, with step-size control; and the Cauchy
+//! endgame, which finds the limit `z(0)` of a path whose endpoint may be singular by tracking
+//! around circles `t = r e^{iθ}` and averaging (the Cauchy integral formula by the trapezoid
+//! rule; Morgan, Sommese & Wampler, *Computing singular solutions to nonlinear analytic systems*,
+//! Numer. Math. 58, 1991).
+
+use super::C64;
+use nalgebra::{DMatrix, DVector};
+
+/// A homotopy `H(z, t)`: square, `dim` equations in `dim` unknowns, analytic in `z` and `t`.
+pub(crate) trait Homotopy: Sync {
+    /// Per-thread scratch space.
+    type Workspace;
+    /// The number of unknowns (and of equations).
+    fn dim(&self) -> usize;
+    /// A fresh workspace.
+    fn workspace(&self) -> Self::Workspace;
+    /// `H(z, t)` into `h`, `∂H/∂z` into `hz`, `∂H/∂t` into `ht`.
+    fn evaluate(
+        &self,
+        z: &DVector<C64>,
+        t: C64,
+        ws: &mut Self::Workspace,
+        h: &mut DVector<C64>,
+        hz: &mut DMatrix<C64>,
+        ht: &mut DVector<C64>,
+    );
+}
+
+/// The settings of one path: tolerances are relative to `1 + |z|`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TrackerSettings {
+    /// Newton tolerance of the corrector while tracking.
+    pub corrector_tolerance: f64,
+    /// The most Newton iterations per step.
+    pub max_corrector_iterations: usize,
+    /// The largest step, as a fraction of the path's length in `t`.
+    pub max_step: f64,
+    /// The smallest step before the path is given up.
+    pub min_step: f64,
+    /// The most steps before the path is given up.
+    pub max_steps: usize,
+    /// Where the endgame starts (`t = endgame_start`).
+    pub endgame_start: f64,
+    /// Agreement of successive Cauchy estimates that ends the endgame.
+    pub endgame_tolerance: f64,
+    /// The largest winding number tried around a singular endpoint.
+    pub max_winding: usize,
+}
+
+impl Default for TrackerSettings {
+    fn default() -> Self {
+        Self {
+            corrector_tolerance: 1e-9,
+            max_corrector_iterations: 3,
+            max_step: 0.1,
+            min_step: 1e-12,
+            max_steps: 20_000,
+            endgame_start: 0.1,
+            endgame_tolerance: 1e-9,
+            max_winding: 16,
+        }
+    }
+}
+
+impl TrackerSettings {
+    /// Stricter steps: smaller largest step and a tighter corrector, for paths re-tracked after
+    /// a suspected path jump.
+    #[must_use]
+    pub fn stricter(&self) -> Self {
+        Self {
+            corrector_tolerance: self.corrector_tolerance * 1e-2,
+            max_corrector_iterations: 2,
+            max_step: self.max_step / 4.0,
+            max_steps: self.max_steps * 4,
+            ..*self
+        }
+    }
+}
+
+/// Why a path was given up.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, thiserror::Error)]
+pub enum PathFailure {
+    /// The step size fell below its minimum: a near-singular point on the path, or a path that
+    /// cannot be followed with these settings.
+    #[error("step size below its minimum")]
+    StepTooSmall,
+    /// More steps than allowed.
+    #[error("too many steps")]
+    TooManySteps,
+    /// The Cauchy endgame found no loop closing within the largest winding number, or its
+    /// estimates did not settle.
+    #[error("the endgame did not converge")]
+    Endgame,
+    /// A value became NaN or infinite.
+    #[error("non-finite values")]
+    NotFinite,
+}
+
+/// The limit of a path at `t = 0` found by the endgame.
+#[derive(Debug, Clone)]
+pub(crate) struct Endpoint {
+    /// The estimate of `z(0)`.
+    pub z: DVector<C64>,
+    /// The winding number `c`: the path is a Puiseux series in `t^{1/c}`; 1 for a regular
+    /// endpoint.
+    pub winding: usize,
+    /// Whether successive estimates agreed to the endgame tolerance.
+    pub converged: bool,
+}
+
+/// The scratch of one path: the workspace of the homotopy and the buffers of the steps.
+pub(crate) struct Tracker<'a, H: Homotopy> {
+    homotopy: &'a H,
+    settings: TrackerSettings,
+    ws: H::Workspace,
+    h: DVector<C64>,
+    hz: DMatrix<C64>,
+    ht: DVector<C64>,
+    /// Steps taken (accepted and rejected).
+    pub steps: usize,
+}
+
+/// A segment of the continuation path: `t(s)` for `s ∈ [0, 1]`.
+#[derive(Debug, Clone, Copy)]
+enum Segment {
+    /// `t = a + s (b − a)`.
+    Line(C64, C64),
+    /// `t = r e^{i (θ0 + s Δθ)}`.
+    Arc { r: f64, theta0: f64, dtheta: f64 },
+}
+
+impl Segment {
+    fn t(&self, s: f64) -> C64 {
+        match *self {
+            Self::Line(a, b) => a + (b - a) * s,
+            Self::Arc { r, theta0, dtheta } => C64::from_polar(r, theta0 + s * dtheta),
+        }
+    }
+    fn dt(&self, s: f64) -> C64 {
+        match *self {
+            Self::Line(a, b) => b - a,
+            Self::Arc { r, theta0, dtheta } => {
+                C64::new(0.0, dtheta) * C64::from_polar(r, theta0 + s * dtheta)
+            }
+        }
+    }
+}
+
+fn scale(z: &DVector<C64>) -> f64 {
+    1.0 + z.norm()
+}
+
+impl<'a, H: Homotopy> Tracker<'a, H> {
+    pub(crate) fn new(homotopy: &'a H, settings: TrackerSettings) -> Self {
+        let n = homotopy.dim();
+        Self {
+            homotopy,
+            settings,
+            ws: homotopy.workspace(),
+            h: DVector::zeros(n),
+            hz: DMatrix::zeros(n, n),
+            ht: DVector::zeros(n),
+            steps: 0,
+        }
+    }
+
+    fn eval(&mut self, z: &DVector<C64>, t: C64) {
+        self.homotopy
+            .evaluate(z, t, &mut self.ws, &mut self.h, &mut self.hz, &mut self.ht);
+    }
+
+    /// The tangent `dz/ds` at `(z, s)` on a segment.
+    fn tangent(&mut self, z: &DVector<C64>, seg: Segment, s: f64) -> Option<DVector<C64>> {
+        self.eval(z, seg.t(s));
+        let rhs = -&self.ht * seg.dt(s);
+        self.hz.clone().lu().solve(&rhs)
+    }
+
+    /// Newton's method at fixed `t`; `Some(iterations)` when the last update is below the
+    /// tolerance and the updates contract.
+    fn correct(
+        &mut self,
+        z: &mut DVector<C64>,
+        t: C64,
+        tolerance: f64,
+        iterations: usize,
+    ) -> Option<usize> {
+        let mut previous = f64::INFINITY;
+        for k in 0..iterations {
+            self.eval(z, t);
+            let dz = self.hz.clone().lu().solve(&(-&self.h))?;
+            let norm = dz.norm();
+            if !norm.is_finite() {
+                return None;
+            }
+            *z += &dz;
+            if norm <= tolerance * scale(z) {
+                return Some(k + 1);
+            }
+            if k > 0 && norm > 0.5 * previous {
+                return None;
+            }
+            previous = norm;
+        }
+        None
+    }
+
+    /// Follows `z` along the segment from `s = 0` to `s = 1`.
+    fn follow(
+        &mut self,
+        z: &mut DVector<C64>,
+        seg: Segment,
+        first_step: f64,
+    ) -> Result<(), PathFailure> {
+        let mut s = 0.0;
+        let mut ds = first_step.min(self.settings.max_step);
+        let mut successes = 0;
+        while s < 1.0 {
+            if self.steps >= self.settings.max_steps {
+                return Err(PathFailure::TooManySteps);
+            }
+            self.steps += 1;
+            let step = ds.min(1.0 - s);
+            let predicted = self.runge_kutta(z, seg, s, step);
+            let accepted = predicted.and_then(|mut y| {
+                // The predictor must land close: a large first correction is a warning of a
+                // jump to another path.
+                let t = seg.t(s + step);
+                self.correct(
+                    &mut y,
+                    t,
+                    self.settings.corrector_tolerance,
+                    self.settings.max_corrector_iterations,
+                )
+                .map(|_| y)
+            });
+            match accepted {
+                Some(y) if y.iter().all(|c| c.re.is_finite() && c.im.is_finite()) => {
+                    *z = y;
+                    s += step;
+                    successes += 1;
+                    if successes >= 3 {
+                        ds = (ds * 2.0).min(self.settings.max_step);
+                        successes = 0;
+                    }
+                }
+                _ => {
+                    ds *= 0.5;
+                    successes = 0;
+                    if ds < self.settings.min_step {
+                        return Err(PathFailure::StepTooSmall);
+                    }
+                }
+            }
+        }
+        Ok(())
+    }
+
+    fn runge_kutta(
+        &mut self,
+        z: &DVector<C64>,
+        seg: Segment,
+        s: f64,
+        h: f64,
+    ) -> Option<DVector<C64>> {
+        let k1 = self.tangent(z, seg, s)?;
+        let k2 = self.tangent(&(z + &k1 * C64::from(h / 2.0)), seg, s + h / 2.0)?;
+        let k3 = self.tangent(&(z + &k2 * C64::from(h / 2.0)), seg, s + h / 2.0)?;
+        let k4 = self.tangent(&(z + &k3 * C64::from(h)), seg, s + h)?;
+        Some(z + (k1 + k2 * C64::from(2.0) + k3 * C64::from(2.0) + k4) * C64::from(h / 6.0))
+    }
+
+    /// Follows `z` from `t = a` to `t = b` along the straight segment.
+    pub(crate) fn track(
+        &mut self,
+        z: &mut DVector<C64>,
+        a: C64,
+        b: C64,
+    ) -> Result<(), PathFailure> {
+        self.follow(z, Segment::Line(a, b), 0.05)
+    }
+
+    /// From `t = 1` to the limit at `t = 0`: tracking to the endgame's start, then the Cauchy
+    /// endgame.
+    pub(crate) fn track_to_end(&mut self, z: &mut DVector<C64>) -> Result<Endpoint, PathFailure> {
+        let te = self.settings.endgame_start;
+        self.follow(z, Segment::Line(C64::from(1.0), C64::from(te)), 0.05)?;
+        self.cauchy_endgame(z, te)
+    }
+
+    /// The Cauchy endgame from `z` at `t = r`: loops around `t = 0` at radii `r, r/4, …` until
+    /// two successive estimates of `z(0)` agree.
+    fn cauchy_endgame(
+        &mut self,
+        z: &mut DVector<C64>,
+        mut r: f64,
+    ) -> Result<Endpoint, PathFailure> {
+        const SAMPLES: usize = 8;
+        let mut previous: Option<DVector<C64>> = None;
+        let mut last_winding = 0;
+        for _ in 0..12 {
+            let start = z.clone();
+            let mut sum = DVector::<C64>::zeros(z.len());
+            let mut count = 0usize;
+            let mut winding = 0;
+            let closed = loop {
+                for j in 0..SAMPLES {
+                    sum += &*z;
+                    count += 1;
+                    let theta0 = std::f64::consts::TAU * j as f64 / SAMPLES as f64;
+                    let arc = Segment::Arc {
+                        r,
+                        theta0,
+                        dtheta: std::f64::consts::TAU / SAMPLES as f64,
+                    };
+                    self.follow(z, arc, 1.0)?;
+                }
+                winding += 1;
+                if (&*z - &start).norm() <= 1e-6 * scale(&start) {
+                    break true;
+                }
+                if winding >= self.settings.max_winding {
+                    break false;
+                }
+            };
+            if !closed {
+                // The circle encloses other branch points of the path (or the path lies on a
+                // positive-dimensional set): no estimate at this radius; go inward.
+                previous = None;
+                let inner = r / 4.0;
+                self.follow(z, Segment::Line(C64::from(r), C64::from(inner)), 0.25)?;
+                r = inner;
+                continue;
+            }
+            let estimate = sum / C64::from(count as f64);
+            if let Some(p) = &previous
+                && (&estimate - p).norm() <= self.settings.endgame_tolerance * scale(&estimate)
+            {
+                return Ok(Endpoint {
+                    z: estimate,
+                    winding,
+                    converged: true,
+                });
+            }
+            previous = Some(estimate);
+            last_winding = winding;
+            let inner = r / 4.0;
+            self.follow(z, Segment::Line(C64::from(r), C64::from(inner)), 0.25)?;
+            r = inner;
+        }
+        // Estimates that did not settle: the last one, flagged (typically a path to a
+        // positive-dimensional set at infinity).
+        previous
+            .map(|z| Endpoint {
+                z,
+                winding: last_winding,
+                converged: false,
+            })
+            .ok_or(PathFailure::Endgame)
+    }
+
+    /// The Jacobian `∂H/∂z` at `(z, t)`, for the classification of endpoints.
+    pub(crate) fn jacobian(&mut self, z: &DVector<C64>, t: C64) -> DMatrix<C64> {
+        self.eval(z, t);
+        self.hz.clone()
+    }
+
+    /// Newton refinement at fixed `t`; true when it converged.
+    pub(crate) fn refine(&mut self, z: &mut DVector<C64>, t: C64, tolerance: f64) -> bool {
+        self.correct(z, t, tolerance, 6).is_some()
+    }
+}
