@@ -178,23 +178,87 @@ fn multihomogeneous_start_counts() {
     }
 }
 
+/// The family `f_i = x_i² + Σ_j a_ij x_j + b_i` (`i = 1 … 3`), parameters `a` (9) and `b` (3)
+/// after the unknowns: generic members have Bézout's 2³ = 8 solutions.
+fn quadrics_family() -> kinsyn::homotopy::ParametrizedSystem {
+    let n = 3;
+    let nv = n + n * n + n;
+    let mut eqs = Vec::new();
+    for i in 0..n {
+        let xi = Poly::variable(nv, i);
+        let mut f = &xi * &xi + Poly::variable(nv, n + n * n + i);
+        for j in 0..n {
+            f = f + Poly::variable(nv, n + n * i + j) * Poly::variable(nv, j);
+        }
+        eqs.push(f);
+    }
+    let names: Vec<String> = (0..nv).map(|i| format!("v{i}")).collect();
+    kinsyn::homotopy::ParametrizedSystem::new(System::new(names, eqs).unwrap(), n * n + n).unwrap()
+}
+
 #[test]
-#[ignore = "diagnostic"]
-fn cyclic5_failures() {
-    let report = solve(
-        &cyclic(5),
-        &SolveSettings {
-            retrack_rounds: 0,
-            ..SolveSettings::default()
-        },
+fn monodromy_fills_a_generic_family_from_one_solution() {
+    // Build a start pair: pick x* and a, then b_i = −(x_i*² + Σ a_ij x_j*), so x* solves the
+    // member at p = (a, b). Monodromy must find all 8 solutions, which a total-degree solve of
+    // the same member confirms (an independent method).
+    let family = quadrics_family();
+    let x: Vec<C64> = vec![C64::new(0.3, -0.2), C64::new(-1.1, 0.4), C64::new(0.7, 0.9)];
+    let a: Vec<C64> = (0..9)
+        .map(|k| C64::new((k as f64 * 0.77).sin(), (k as f64 * 1.3).cos()))
+        .collect();
+    let b: Vec<C64> = (0..3)
+        .map(|i| -(x[i] * x[i] + (0..3).map(|j| a[3 * i + j] * x[j]).sum::<C64>()))
+        .collect();
+    let p: Vec<C64> = a.iter().chain(&b).copied().collect();
+    let report = kinsyn::homotopy::monodromy_solve(
+        &family,
+        &p,
+        &x,
+        &kinsyn::homotopy::MonodromySettings::default(),
     )
     .unwrap();
-    for e in &report.ends {
-        if e.kind != kinsyn::homotopy::EndpointKind::Regular {
-            eprintln!(
-                "{} {:?} {:?} w{} steps {}",
-                e.path, e.kind, e.failure, e.winding, e.steps
-            );
-        }
+    assert_eq!(report.solutions.len(), 8, "after {} loops", report.loops);
+    let direct = solve(&family.at(&p).unwrap(), &SolveSettings::default()).unwrap();
+    assert_eq!(direct.nonsingular(), 8);
+    for s in &report.solutions {
+        assert!(
+            direct
+                .solutions
+                .iter()
+                .any(|d| d.x.iter().zip(s).all(|(u, v)| (u - v).norm() < 1e-8))
+        );
+    }
+    // With the count known, monodromy stops as soon as it has them.
+    let settings = kinsyn::homotopy::MonodromySettings {
+        target: Some(8),
+        ..Default::default()
+    };
+    assert_eq!(
+        kinsyn::homotopy::monodromy_solve(&family, &p, &x, &settings)
+            .unwrap()
+            .solutions
+            .len(),
+        8
+    );
+
+    // Parameter homotopy: all 8 followed to a real member equal its total-degree solutions.
+    let q: Vec<C64> = (0..12)
+        .map(|k| C64::new(((k * k) as f64 * 0.31).cos() * 2.0, 0.0))
+        .collect();
+    let moved =
+        kinsyn::homotopy::track_parameters(&family, &p, &q, &report.solutions, Default::default())
+            .unwrap();
+    let direct = solve(&family.at(&q).unwrap(), &SolveSettings::default()).unwrap();
+    assert_eq!(direct.nonsingular(), 8);
+    for m in &moved {
+        let m = m
+            .as_ref()
+            .expect("the segment from a generic complex member meets no singularity");
+        assert!(
+            direct
+                .solutions
+                .iter()
+                .any(|d| d.x.iter().zip(m).all(|(u, v)| (u - v).norm() < 1e-8))
+        );
     }
 }

@@ -27,8 +27,14 @@
 //! assert_eq!(report.at_infinity(), 0, "Bézout's 2 paths, both finite");
 //! ```
 
+mod parameter;
 mod start;
 mod tracker;
+
+pub use parameter::{
+    MonodromyReport, MonodromySettings, ParameterError, ParametrizedSystem, monodromy_solve,
+    track_parameters,
+};
 
 pub use start::StartSystem;
 pub use tracker::{PathFailure, TrackerSettings};
@@ -313,6 +319,73 @@ pub fn solve_with_progress(
         solutions,
         retracked,
         seconds: clock.elapsed().as_secs_f64(),
+    })
+}
+
+/// Independent solves of one system with different random choices (seeds `seed, seed + 1, …`):
+/// the check that a solve found every root, since a path tracker can lose roots to path jumps
+/// without a trace (HomotopyContinuation.jl issues #545, #574).
+#[derive(Debug, Clone, PartialEq)]
+pub struct RunsReport {
+    /// Each run's report.
+    pub runs: Vec<SolveReport>,
+    /// The distinct non-singular solutions found by any run.
+    pub union: Vec<Vec<C64>>,
+    /// The runs that found every solution of the union.
+    pub complete: usize,
+}
+
+impl RunsReport {
+    /// The fraction of runs that found every solution any run found.
+    #[must_use]
+    pub fn complete_fraction(&self) -> f64 {
+        self.complete as f64 / self.runs.len().max(1) as f64
+    }
+}
+
+/// [`solve`] `runs` times with seeds `settings.seed + k`, and the union of what they found.
+///
+/// # Errors
+/// As [`solve`].
+pub fn solve_runs(
+    system: &System,
+    settings: &SolveSettings,
+    runs: usize,
+) -> Result<RunsReport, HomotopyError> {
+    let reports: Vec<SolveReport> = (0..runs as u64)
+        .map(|k| {
+            solve(
+                system,
+                &SolveSettings {
+                    seed: settings.seed.wrapping_add(k),
+                    ..settings.clone()
+                },
+            )
+        })
+        .collect::<Result<_, _>>()?;
+    let mut union: Vec<Vec<C64>> = Vec::new();
+    for s in reports
+        .iter()
+        .flat_map(|r| r.solutions.iter().filter(|s| s.regular))
+    {
+        if !union.iter().any(|u| close(u, &s.x, 1e-6)) {
+            union.push(s.x.clone());
+        }
+    }
+    let complete = reports
+        .iter()
+        .filter(|r| {
+            union.iter().all(|u| {
+                r.solutions
+                    .iter()
+                    .any(|s| s.regular && close(u, &s.x, 1e-6))
+            })
+        })
+        .count();
+    Ok(RunsReport {
+        runs: reports,
+        union,
+        complete,
     })
 }
 

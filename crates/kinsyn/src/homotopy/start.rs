@@ -128,16 +128,6 @@ impl ProjectiveHomotopy {
         }
     }
 
-    /// The number of variables of the target system.
-    pub(crate) fn nvars(&self) -> usize {
-        self.n
-    }
-
-    /// Each group's coordinates in `z` (its variables, then its homogenising coordinate).
-    pub(crate) fn groups(&self) -> &[Vec<usize>] {
-        &self.groups
-    }
-
     /// The start solutions, in a fixed order (the path numbers).
     pub(crate) fn start_solutions(&self) -> Vec<DVector<C64>> {
         match &self.start {
@@ -320,15 +310,6 @@ impl ProjectiveHomotopy {
             }
         }
         x
-    }
-
-    /// The projective point of an affine `x`, on the patches.
-    pub(crate) fn projective(&self, x: &[C64]) -> DVector<C64> {
-        let mut z = DVector::from_element(self.n + self.groups.len(), C64::from(1.0));
-        for (i, xi) in x.iter().enumerate() {
-            z[i] = *xi;
-        }
-        self.on_patches(z)
     }
 }
 
