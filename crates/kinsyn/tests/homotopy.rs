@@ -2,60 +2,11 @@
 //! methods (companion-matrix eigenvalues).
 
 use kinsyn::homotopy::{SolveSettings, StartSystem, solve};
+use kinsyn::poly::families::{cyclic, katsura};
 use kinsyn::poly::{C64, Poly, System};
 
 fn names(n: usize) -> Vec<String> {
     (0..n).map(|i| format!("x{i}")).collect()
-}
-
-/// Katsura-n (S. Katsura, 1990; the PoSSo test suite): `n + 1` unknowns `u_0 … u_n`, with
-/// `u_{−m} = u_m` and `u_m = 0` for `|m| > n`: `Σ_l u_l u_{m−l} = u_m` for `m = 0 … n−1` and
-/// `u_0 + 2 Σ_{l≥1} u_l = 1`. It has `2^n` solutions, all regular, and Bézout number `2^n`.
-fn katsura(n: usize) -> System {
-    let nv = n + 1;
-    let u = |m: i64| -> Poly {
-        let m = m.unsigned_abs() as usize;
-        if m > n {
-            Poly::zero(nv)
-        } else {
-            Poly::variable(nv, m)
-        }
-    };
-    let mut eqs = Vec::new();
-    for m in 0..n as i64 {
-        let mut sum = Poly::zero(nv);
-        for l in -(n as i64)..=(n as i64) {
-            sum = sum + u(l) * u(m - l);
-        }
-        eqs.push(sum - u(m));
-    }
-    let mut last = u(0) - Poly::real(nv, 1.0);
-    for l in 1..=n as i64 {
-        last = last + u(l) * 2.0;
-    }
-    eqs.push(last);
-    System::new(names(nv), eqs).unwrap()
-}
-
-/// Cyclic-n (Björck & Fröberg 1991): `Σ_i Π_{j<k} x_{i+j mod n} = 0` for `k = 1 … n−1`,
-/// `x_0 ⋯ x_{n−1} = 1`. Cyclic-5 has 70 solutions, all regular (Björck & Fröberg 1991).
-fn cyclic(n: usize) -> System {
-    let x: Vec<Poly> = (0..n).map(|i| Poly::variable(n, i)).collect();
-    let mut eqs = Vec::new();
-    for k in 1..n {
-        let mut sum = Poly::zero(n);
-        for i in 0..n {
-            let mut p = Poly::real(n, 1.0);
-            for j in 0..k {
-                p = p * &x[(i + j) % n];
-            }
-            sum = sum + p;
-        }
-        eqs.push(sum);
-    }
-    let prod = x.iter().fold(Poly::real(n, 1.0), |a, b| a * b);
-    eqs.push(prod - Poly::real(n, 1.0));
-    System::new(names(n), eqs).unwrap()
 }
 
 #[test]

@@ -412,7 +412,7 @@ fn track_path(
         Err(f) => return failed(f, tracker.steps),
     };
     let mut point = end.z;
-    if homotopy.infinity_measure(&point) < INFINITY_TOLERANCE {
+    if end.diverges || homotopy.measure(&point) < INFINITY_TOLERANCE {
         return PathEnd {
             path: k,
             kind: EndpointKind::AtInfinity,
@@ -433,7 +433,7 @@ fn track_path(
     } else if !end.converged {
         return failed(PathFailure::Endgame, tracker.steps);
     }
-    if homotopy.infinity_measure(&point) < INFINITY_TOLERANCE {
+    if homotopy.measure(&point) < INFINITY_TOLERANCE {
         return PathEnd {
             path: k,
             kind: EndpointKind::AtInfinity,

@@ -289,7 +289,7 @@ impl ProjectiveHomotopy {
 
     /// Each group's homogenising coordinate `h_j` over the size of the group's coordinates:
     /// near zero for a point at infinity.
-    pub(crate) fn infinity_measure(&self, z: &DVector<C64>) -> f64 {
+    pub(crate) fn measure(&self, z: &DVector<C64>) -> f64 {
         self.groups
             .iter()
             .map(|g| {
@@ -315,6 +315,14 @@ impl ProjectiveHomotopy {
 
 impl Homotopy for ProjectiveHomotopy {
     type Workspace = ProjectiveWorkspace;
+
+    fn at_infinity(&self, z: &DVector<C64>) -> bool {
+        self.measure(z) < super::INFINITY_TOLERANCE * 1e-2
+    }
+
+    fn infinity_measure(&self, z: &DVector<C64>) -> Option<f64> {
+        Some(self.measure(z))
+    }
 
     fn dim(&self) -> usize {
         self.n + self.groups.len()

@@ -27,6 +27,16 @@ pub(crate) trait Homotopy: Sync {
         hz: &mut DMatrix<C64>,
         ht: &mut DVector<C64>,
     );
+    /// Whether `z` is, beyond doubt, a point at infinity (the endgame stops there: the limit
+    /// of such a path is not a solution, and its exact position does not matter).
+    fn at_infinity(&self, _z: &DVector<C64>) -> bool {
+        false
+    }
+    /// How close `z` is to infinity (the smallest homogenising coordinate over its group's
+    /// size), for homotopies in projective coordinates; `None` for affine ones.
+    fn infinity_measure(&self, _z: &DVector<C64>) -> Option<f64> {
+        None
+    }
 }
 
 /// The settings of one path: tolerances are relative to `1 + |z|`.
@@ -109,6 +119,9 @@ pub(crate) struct Endpoint {
     pub winding: usize,
     /// Whether successive estimates agreed to the endgame tolerance.
     pub converged: bool,
+    /// Whether the path diverges: a homogenising coordinate vanishes like a positive power of
+    /// `t` (its valuation), so the endpoint is at infinity.
+    pub diverges: bool,
 }
 
 /// The scratch of one path: the workspace of the homotopy and the buffers of the steps.
@@ -215,11 +228,37 @@ impl<'a, H: Homotopy> Tracker<'a, H> {
         seg: Segment,
         first_step: f64,
     ) -> Result<(), PathFailure> {
+        self.follow_within(
+            z,
+            seg,
+            first_step,
+            self.settings.max_step,
+            self.settings.max_steps,
+        )
+    }
+
+    /// Whether `∂H/∂z` at `(z, 0)` has `σ_min / σ_max` above the singular tolerance.
+    fn well_conditioned(&mut self, z: &DVector<C64>) -> bool {
+        self.eval(z, C64::from(0.0));
+        let sv = self.hz.clone().singular_values();
+        sv.min() > super::SINGULAR_TOLERANCE * sv.max()
+    }
+
+    /// [`Self::follow`] with a largest step (a fraction of the segment) and a budget of steps.
+    fn follow_within(
+        &mut self,
+        z: &mut DVector<C64>,
+        seg: Segment,
+        first_step: f64,
+        max_step: f64,
+        budget: usize,
+    ) -> Result<(), PathFailure> {
         let mut s = 0.0;
-        let mut ds = first_step.min(self.settings.max_step);
+        let mut ds = first_step.min(max_step);
         let mut successes = 0;
+        let limit = (self.steps + budget).min(self.settings.max_steps);
         while s < 1.0 {
-            if self.steps >= self.settings.max_steps {
+            if self.steps >= limit {
                 return Err(PathFailure::TooManySteps);
             }
             self.steps += 1;
@@ -243,7 +282,7 @@ impl<'a, H: Homotopy> Tracker<'a, H> {
                     s += step;
                     successes += 1;
                     if successes >= 3 {
-                        ds = (ds * 2.0).min(self.settings.max_step);
+                        ds = (ds * 2.0).min(max_step);
                         successes = 0;
                     }
                 }
@@ -288,6 +327,32 @@ impl<'a, H: Homotopy> Tracker<'a, H> {
     pub(crate) fn track_to_end(&mut self, z: &mut DVector<C64>) -> Result<Endpoint, PathFailure> {
         let te = self.settings.endgame_start;
         self.follow(z, Segment::Line(C64::from(1.0), C64::from(te)), 0.05)?;
+        let at_start = z.clone();
+        // A regular endpoint is reached by tracking on to t = 0: a few steps, and Newton
+        // converging at t = 0 on a well-conditioned Jacobian. Anything else takes the endgame.
+        if self
+            .follow_within(
+                z,
+                Segment::Line(C64::from(te), C64::from(0.0)),
+                0.25,
+                0.25,
+                40,
+            )
+            .is_ok()
+        {
+            let mut end = z.clone();
+            if self.correct(&mut end, C64::from(0.0), 1e-13, 4).is_some()
+                && self.well_conditioned(&end)
+            {
+                return Ok(Endpoint {
+                    z: end,
+                    winding: 1,
+                    converged: true,
+                    diverges: false,
+                });
+            }
+        }
+        *z = at_start;
         self.cauchy_endgame(z, te)
     }
 
@@ -299,6 +364,35 @@ impl<'a, H: Homotopy> Tracker<'a, H> {
         mut r: f64,
     ) -> Result<Endpoint, PathFailure> {
         const SAMPLES: usize = 8;
+        if let Some(mut m) = self.homotopy.infinity_measure(z) {
+            // Divergence first, by the valuation `v = d log m / d log t` of the homogenising
+            // coordinates along the real segment (cheap: no loops): stable and positive means
+            // `m ~ t^v → 0`, a point at infinity; stable and zero means a finite limit, which
+            // the loops below find.
+            let mut valuations: Vec<f64> = Vec::new();
+            for _ in 0..10 {
+                let inner = r / 4.0;
+                self.follow(z, Segment::Line(C64::from(r), C64::from(inner)), 0.25)?;
+                r = inner;
+                let next = self.homotopy.infinity_measure(z).unwrap_or(m);
+                valuations.push((next / m).ln() / 0.25f64.ln());
+                m = next;
+                if let [.., a, b, c] = valuations[..] {
+                    let stable = (a - b).abs() < 0.01 && (b - c).abs() < 0.01;
+                    if stable && c > 0.04 {
+                        return Ok(Endpoint {
+                            z: z.clone(),
+                            winding: 0,
+                            converged: true,
+                            diverges: true,
+                        });
+                    }
+                    if stable && c.abs() < 0.01 {
+                        break;
+                    }
+                }
+            }
+        }
         let mut previous: Option<DVector<C64>> = None;
         let mut last_winding = 0;
         for _ in 0..12 {
@@ -316,7 +410,7 @@ impl<'a, H: Homotopy> Tracker<'a, H> {
                         theta0,
                         dtheta: std::f64::consts::TAU / SAMPLES as f64,
                     };
-                    self.follow(z, arc, 1.0)?;
+                    self.follow_within(z, arc, 1.0, 1.0, self.settings.max_steps)?;
                 }
                 winding += 1;
                 if (&*z - &start).norm() <= 1e-6 * scale(&start) {
@@ -336,6 +430,14 @@ impl<'a, H: Homotopy> Tracker<'a, H> {
                 continue;
             }
             let estimate = sum / C64::from(count as f64);
+            if self.homotopy.at_infinity(&estimate) {
+                return Ok(Endpoint {
+                    z: estimate,
+                    winding,
+                    converged: true,
+                    diverges: false,
+                });
+            }
             if let Some(p) = &previous
                 && (&estimate - p).norm() <= self.settings.endgame_tolerance * scale(&estimate)
             {
@@ -343,6 +445,7 @@ impl<'a, H: Homotopy> Tracker<'a, H> {
                     z: estimate,
                     winding,
                     converged: true,
+                    diverges: false,
                 });
             }
             previous = Some(estimate);
@@ -358,6 +461,7 @@ impl<'a, H: Homotopy> Tracker<'a, H> {
                 z,
                 winding: last_winding,
                 converged: false,
+                diverges: false,
             })
             .ok_or(PathFailure::Endgame)
     }
