@@ -5,7 +5,7 @@
 
 use kinsyn::certify::{
     Certificate, CertificateStatus, CertifyError, CertifyOptions, ComplexInterval, FailureReason,
-    Interval, Reality, certify_root, certify_root_with, certify_roots,
+    Interval, Reality, certify_root, certify_root_with, certify_roots, separate,
 };
 use kinsyn::poly::{C64, Poly, Program, Scalar, System};
 use rand::{Rng, SeedableRng};
@@ -366,6 +366,14 @@ fn close_roots_are_told_apart_and_a_repeated_root_is_not() {
         assert!(uniqueness_box_holds(cert, &[roots[k]]));
     }
     assert!(certificates[0].enclosure[0].disjoint(certificates[1].enclosure[0]));
+    // Certified one by one (as a parallel caller would), then compared.
+    let mut one_by_one: Vec<Certificate> = given
+        .iter()
+        .map(|x| certify_root(&program, x, real).unwrap())
+        .collect();
+    assert!(one_by_one.iter().all(|c| c.is_certified() && !c.distinct));
+    separate(&program, &mut one_by_one);
+    assert!(one_by_one.iter().all(|c| c.distinct));
     // The same root given twice (once slightly moved): both certified, neither distinct, and
     // each proven the other's.
     let twice = [

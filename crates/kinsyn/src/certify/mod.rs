@@ -689,6 +689,12 @@ impl<'a> Certifier<'a> {
                     enclosure,
                 }
             }
+            Err(FailureReason::TooFar { distance }) => Certificate::failed(
+                FailureReason::TooFar {
+                    distance: distance + moved,
+                },
+                x,
+            ),
             Err(reason) => Certificate::failed(reason, x),
         }
     }
@@ -781,11 +787,10 @@ fn radii(a: f64, min_radius: Option<f64>, cap: f64) -> Result<Vec<f64>, FailureR
             .collect(),
         None => RADIUS_FACTORS.iter().map(|m| base * m).collect(),
     };
+    let smallest = radii[0];
     radii.retain(|r| *r <= cap);
     if radii.is_empty() {
-        Err(FailureReason::TooFar {
-            distance: 2.0 * base,
-        })
+        Err(FailureReason::TooFar { distance: smallest })
     } else {
         Ok(radii)
     }
