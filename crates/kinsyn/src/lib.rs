@@ -14,10 +14,13 @@
 //! them from description files: Jacobians in the form of paper 000 §4–5, singularities, and the
 //! motion patterns reached by locking inputs. [`series`] is a second, independent method for
 //! series-parallel manipulators: the Jacobian and twist system of paper 002 from the geometry of
-//! stacked modules.
+//! stacked modules. [`certify`] proves the approximate roots of polynomial systems ([`poly`]):
+//! the Krawczyk operator in interval arithmetic shows each box holds exactly one root, and
+//! which roots are distinct and which real.
 #![deny(missing_docs)]
 
 pub mod catalogue;
+pub mod certify;
 pub mod chain;
 pub mod homotopy;
 mod linalg;
