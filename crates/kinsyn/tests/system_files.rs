@@ -253,7 +253,19 @@ fn unsupported_constructs_say_why() {
 
 #[test]
 fn declaration_and_syntax_errors_name_their_line() {
-    let cases: [(String, usize, &str); 17] = [
+    let cases: [(String, usize, &str); 19] = [
+        (
+            input("  f1 = x;\n  f2 = 1e400*y;\n"),
+            5,
+            "'1e400' is beyond the range",
+        ),
+        (
+            "INPUT\n  variable_group x;\n  s = x;\n  variable_group y;\n  function f;\n  \
+             f = s + y;\nEND;\n"
+                .into(),
+            4,
+            "variables must be declared before the first assignment",
+        ),
         (input("  f1 = x;\n"), 3, "function 'f2' is never defined"),
         (
             "INPUT\n  variable_group x, y;\n  variable_group x;\n  function f;\n  f = x;\nEND;\n"
@@ -682,4 +694,78 @@ fn phcpack_runs_are_limited_and_bad_input_is_refused() {
     // Cyclic-5 takes `PHCpack` about 0.2 s: 1 ms is not enough.
     let e = phc::solve_within(&square, &program, Duration::from_millis(1)).unwrap_err();
     assert_eq!(e, PhcError::Timeout(Duration::from_millis(1)));
+}
+
+#[test]
+fn phcpack_reads_complex_coefficients_as_written() {
+    let Some(program) = phc_program() else { return };
+    // x² = 2i·y, y = 1: x = ±(1 + i), since (1 + i)² = 2i. The coefficient −2i is written
+    // `(0.0 - 2.0*i)`.
+    let (x, y) = (Poly::variable(2, 0), Poly::variable(2, 1));
+    let s = System::new(
+        names(&["x", "y"]),
+        vec![x.pow(2) + y.scale(c(0.0, -2.0)), y - Poly::real(2, 1.0)],
+    )
+    .unwrap();
+    assert!(
+        phc::write(&s).contains("(0.0 - 2.0*i)"),
+        "{}",
+        phc::write(&s)
+    );
+    let out = phc::solve(&s, &program).unwrap().output;
+    let mut roots: Vec<C64> = out.finite().iter().map(|s| s.point[0]).collect();
+    roots.sort_by(|a, b| a.re.total_cmp(&b.re));
+    assert_eq!(roots.len(), 2);
+    for (r, sign) in roots.iter().zip([-1.0, 1.0]) {
+        assert!((r - c(sign, sign)).norm() < 1e-12, "{roots:?}");
+    }
+    assert!(
+        out.solutions
+            .iter()
+            .all(|s| s.class == Some(PhcClass::ComplexRegular))
+    );
+}
+
+proptest! {
+    /// Whatever the text, reading gives a system or a one-line error, never a panic: random
+    /// strings over Bertini's alphabet, and the sample file with a stretch cut out.
+    #[test]
+    fn reading_never_panics(
+        text in "[ -~\n%;θ]{0,200}",
+        cut in (0usize..1500, 0usize..60),
+    ) {
+        for t in [text.clone(), format!("INPUT\n{text}\nEND;\n")] {
+            if let Err(e) = bertini::parse(&t) {
+                prop_assert!(!e.to_string().contains('\n'));
+            }
+        }
+        let sample = example("katsura5.bertini");
+        let start = cut.0.min(sample.len());
+        let end = (start + cut.1).min(sample.len());
+        if sample.is_char_boundary(start) && sample.is_char_boundary(end) {
+            let mutilated = format!("{}{}", &sample[..start], &sample[end..]);
+            if let Err(e) = bertini::parse(&mutilated) {
+                prop_assert!(!e.to_string().contains('\n'));
+            }
+        }
+    }
+}
+
+proptest! {
+    /// Random statements from Bertini's vocabulary, in an INPUT section: an error or a
+    /// system, never a panic.
+    #[test]
+    fn random_statements_never_panic(words in prop::collection::vec(prop::sample::select(vec![
+        "x", "y", "f", "g", "s", "c", "=", "+", "-", "*", "/", "^", "(", ")", "2", ".5", "0",
+        "1e400", "I", "Pi", ";", ";", ";", "variable_group", "variable", "hom_variable_group",
+        "function", "constant", "z", ",", "sin", "END", "INPUT", "CONFIG", ":",
+    ]), 0..40)) {
+        let text = format!(
+            "INPUT\n variable_group x, y;\n function f;\n{}\n f = x;\nEND;\n",
+            words.join(" ")
+        );
+        if let Err(e) = bertini::parse(&text) {
+            prop_assert!(!e.to_string().contains('\n'));
+        }
+    }
 }

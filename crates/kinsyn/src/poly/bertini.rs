@@ -242,6 +242,12 @@ fn lex(text: &str, mut line: usize) -> Result<Vec<Token>, BertiniError> {
             let v: f64 = s
                 .parse()
                 .map_err(|_| syntax(line, format!("'{s}' is not a number")))?;
+            if !v.is_finite() {
+                return Err(syntax(
+                    line,
+                    format!("'{s}' is beyond the range of double precision"),
+                ));
+            }
             out.push(Token {
                 tok: Tok::Number(v, s.to_string()),
                 line,
@@ -476,6 +482,8 @@ struct InputReader {
     functions: Vec<(String, usize, Option<Poly>)>,
     constants: Vec<(String, usize, Option<C64>)>,
     names: HashMap<String, Name>,
+    /// Whether an assignment has been read (variables must be declared before).
+    assigned: bool,
 }
 
 impl InputReader {
@@ -567,6 +575,14 @@ impl InputReader {
                     "hom_variable_group" => GroupKind::Homogeneous,
                     _ => GroupKind::Plain,
                 };
+                if self.assigned {
+                    return Err(err(
+                        line,
+                        BertiniErrorKind::Declaration(
+                            "variables must be declared before the first assignment".into(),
+                        ),
+                    ));
+                }
                 let mixes = self
                     .groups
                     .iter()
@@ -618,6 +634,7 @@ impl InputReader {
                 format!("'{name}' is reserved and cannot be assigned"),
             ));
         }
+        self.assigned = true;
         let mut parser = ExprParser {
             tokens: rhs,
             pos: 0,
