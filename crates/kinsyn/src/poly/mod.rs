@@ -23,7 +23,9 @@
 //! assert!(residual.iter().all(|r| r.norm() < 1e-15));
 //! ```
 
+pub mod bertini;
 pub mod families;
+pub mod phc;
 mod program;
 
 pub use program::{Program, Scalar, Workspace};
