@@ -23,6 +23,7 @@
 //! assert!(residual.iter().all(|r| r.norm() < 1e-15));
 //! ```
 
+pub mod geometry;
 mod program;
 
 pub use program::{Program, Scalar, Workspace};

@@ -1,0 +1,348 @@
+//! Constraint polynomials from geometry (`kinsyn::poly::geometry`) and manipulators as
+//! polynomial systems (`Manipulator::position_system`), each checked against an independent
+//! numeric computation: the displacement of `spatial::study::to_displacement` applied to points
+//! with nalgebra, distances and dot products computed from that displacement, finite
+//! differences, and the loop closure of `Manipulator::solve_position`.
+
+use kinsyn::poly::geometry::{self, Chart, StudyVariables};
+use kinsyn::poly::{C64, Poly};
+use kinsyn::spatial::{self, Displacement, study};
+use nalgebra::{Point3, Rotation3, Vector3};
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+
+fn eval(p: &Poly, s: &[f64]) -> f64 {
+    let z: Vec<C64> = s.iter().map(|r| C64::new(*r, 0.0)).collect();
+    let v = p.eval(&z);
+    assert!(
+        v.im.abs() <= 1e-12 * (1.0 + v.re.abs()),
+        "a real polynomial"
+    );
+    v.re
+}
+
+fn vec3(rng: &mut ChaCha8Rng, r: f64) -> Vector3<f64> {
+    Vector3::new(
+        rng.random_range(-r..r),
+        rng.random_range(-r..r),
+        rng.random_range(-r..r),
+    )
+}
+
+fn unit(rng: &mut ChaCha8Rng) -> Vector3<f64> {
+    loop {
+        let v = vec3(rng, 1.0);
+        if v.norm() > 0.2 {
+            return v.normalize();
+        }
+    }
+}
+
+/// A random pose (rotation up to π about a random axis, translation in [−2, 2]³) and its Study
+/// parameters times a random non-zero factor (the parameters are projective).
+fn random_pose(rng: &mut ChaCha8Rng) -> (Displacement, [f64; 8]) {
+    let r = unit(rng) * rng.random_range(0.0..std::f64::consts::PI);
+    let g = spatial::displacement(Rotation3::from_scaled_axis(r), vec3(rng, 2.0));
+    let lambda = rng.random_range(0.3..3.0) * if rng.random_bool(0.5) { 1.0 } else { -1.0 };
+    (g, study::from_displacement(&g).map(|c| c * lambda))
+}
+
+fn delta(s: &[f64; 8]) -> f64 {
+    s[..4].iter().map(|c| c * c).sum()
+}
+
+fn moved(g: &Displacement, p: &Vector3<f64>) -> Vector3<f64> {
+    g.transform_point(&Point3::from(*p)).coords
+}
+
+#[test]
+fn study_points_and_vectors_match_the_displacement() {
+    let mut rng = ChaCha8Rng::seed_from_u64(1);
+    let sv = StudyVariables::leading(8);
+    for _ in 0..20 {
+        let (g, s) = random_pose(&mut rng);
+        // The independent transform: to_displacement of the (scaled) parameters.
+        let back = study::to_displacement(&s, study::QUADRIC_TOLERANCE).unwrap();
+        assert!((back.translation.vector - g.translation.vector).norm() < 1e-12);
+        let p = vec3(&mut rng, 1.5);
+        let v = vec3(&mut rng, 1.0);
+        let d = delta(&s);
+        let point = geometry::evaluate_vector(&sv.point(&p), &s) / d;
+        let vector = geometry::evaluate_vector(&sv.vector(&v), &s) / d;
+        assert!((point - moved(&back, &p)).norm() < 1e-12, "Δ(R p + t) / Δ");
+        assert!((vector - back.rotation * v).norm() < 1e-12, "Δ R v / Δ");
+        assert!((eval(&sv.delta(), &s) - d).abs() < 1e-12);
+        // Quadric and normalisation at the parameters of a displacement.
+        assert!(eval(&sv.quadric(), &s).abs() < 1e-12);
+        let unit_rep = Chart::Unit.representative(&s).unwrap();
+        assert!(eval(&sv.unit_normalisation(), &unit_rep).abs() < 1e-12);
+        assert!((eval(&sv.unit_normalisation(), &s) - (d - 1.0)).abs() < 1e-12);
+        let chart = Chart::random_linear(9);
+        let lin = chart.representative(&s).unwrap();
+        assert!(eval(&sv.chart(&chart), &lin).abs() < 1e-12);
+        assert_eq!(unit_rep[0] >= 0.0, true, "x0 ≥ 0 on the unit chart");
+    }
+}
+
+#[test]
+fn study_variables_may_sit_anywhere_in_a_ring() {
+    // The same conditions with the parameters as variables 3..11 of a ring of 12 (other
+    // unknowns around them, given arbitrary values) take the same values.
+    let mut rng = ChaCha8Rng::seed_from_u64(2);
+    let (_, s) = random_pose(&mut rng);
+    let indices = [11, 3, 7, 5, 0, 9, 2, 8];
+    let sv = StudyVariables::new(12, indices);
+    let mut x = vec![0.37; 12];
+    for (k, i) in indices.iter().enumerate() {
+        x[*i] = s[k];
+    }
+    let lead = StudyVariables::leading(8);
+    let a = Vector3::new(0.3, -0.2, 0.9);
+    let b = Vector3::new(-0.5, 0.1, 0.4);
+    assert!(
+        (eval(&sv.distance(&a, &b, 1.3), &x) - eval(&lead.distance(&a, &b, 1.3), &s)).abs() < 1e-12
+    );
+    assert!((eval(&sv.quadric(), &x) - eval(&lead.quadric(), &s)).abs() < 1e-12);
+}
+
+#[test]
+fn husty_distance_quadric_is_delta_times_the_squared_distance_condition() {
+    let mut rng = ChaCha8Rng::seed_from_u64(3);
+    let sv = StudyVariables::leading(8);
+    for _ in 0..30 {
+        let (g, s) = random_pose(&mut rng);
+        let a = vec3(&mut rng, 2.0);
+        let b = vec3(&mut rng, 1.0);
+        let d = (moved(&g, &b) - a).norm();
+        // At the true distance it vanishes (relative to the size of its terms, Δ d²).
+        let at = eval(&sv.distance(&a, &b, d), &s);
+        assert!(at.abs() < 1e-11 * delta(&s) * (1.0 + d * d), "{at}");
+        // At another length l it is Δ (d² − l²): not zero, and the right number.
+        let l = d * rng.random_range(0.5..0.95);
+        let off = eval(&sv.distance(&a, &b, l), &s);
+        assert!((off - delta(&s) * (d * d - l * l)).abs() < 1e-10 * delta(&s) * (1.0 + d * d));
+        assert_eq!(sv.distance(&a, &b, l).total_degree(), 2);
+        // Homogeneous of degree 2: any scale of the parameters.
+        let scaled = s.map(|c| 2.5 * c);
+        assert!(
+            (eval(&sv.distance(&a, &b, l), &scaled) - 6.25 * off).abs() < 1e-9 * off.abs().max(1.0)
+        );
+    }
+}
+
+#[test]
+fn husty_distance_quadric_off_the_study_quadric_differs_by_the_quadric_term() {
+    // For eight numbers off the quadric the polynomial is Δ(|R b + t − a|² − l²) + 4 (x·y)²/Δ
+    // (module documentation), R and t read from M by the definitions R = M_R/Δ, t = M_T/Δ.
+    let mut rng = ChaCha8Rng::seed_from_u64(4);
+    let sv = StudyVariables::leading(8);
+    for _ in 0..10 {
+        let s: [f64; 8] = std::array::from_fn(|_| rng.random_range(-1.0..1.0));
+        let m = study::matrix(&s);
+        let d = m[(0, 0)];
+        let a = vec3(&mut rng, 2.0);
+        let b = vec3(&mut rng, 1.0);
+        let rb_t = (m.fixed_view::<3, 3>(1, 1) * b + m.fixed_view::<3, 1>(1, 0)) / d;
+        let l = 0.7;
+        let q = study::quadric_residual(&s);
+        let expected = d * ((rb_t - a).norm_squared() - l * l) + 4.0 * q * q / d;
+        assert!(
+            (eval(&sv.distance(&a, &b, l), &s) - expected).abs() < 1e-10 * (1.0 + expected.abs())
+        );
+    }
+}
+
+#[test]
+fn plane_and_orthogonality_conditions_match_the_displacement() {
+    let mut rng = ChaCha8Rng::seed_from_u64(5);
+    let sv = StudyVariables::leading(8);
+    for _ in 0..30 {
+        let (g, s) = random_pose(&mut rng);
+        let d = delta(&s);
+        let b = vec3(&mut rng, 1.0);
+        let a = vec3(&mut rng, 2.0);
+        let n = unit(&mut rng);
+        let m = unit(&mut rng);
+        let v = unit(&mut rng);
+        // Moving point on a fixed plane: Δ n·(R b + t − a).
+        let p = sv.moving_point_on_fixed_plane(&b, &a, &n);
+        assert_eq!(p.total_degree(), 2);
+        let expected = d * n.dot(&(moved(&g, &b) - a));
+        assert!((eval(&p, &s) - expected).abs() < 1e-11 * d);
+        // ... vanishing when a is moved into the plane of the moving point.
+        let a_in = moved(&g, &b) + n.cross(&v) * 0.8;
+        assert!(eval(&sv.moving_point_on_fixed_plane(&b, &a_in, &n), &s).abs() < 1e-11 * d);
+        // Fixed point on a moving plane: Δ (R m)·(a − R b − t).
+        let f = sv.fixed_point_on_moving_plane(&a, &b, &m);
+        assert_eq!(f.total_degree(), 2);
+        let expected = d * (g.rotation * m).dot(&(a - moved(&g, &b)));
+        assert!((eval(&f, &s) - expected).abs() < 1e-11 * d * 4.0);
+        let rm = g.rotation * m;
+        let a_on = moved(&g, &b) + rm.cross(&v) * 1.1;
+        assert!(eval(&sv.fixed_point_on_moving_plane(&a_on, &b, &m), &s).abs() < 1e-11 * d * 4.0);
+        // Moving vector ⟂ fixed vector: Δ n·(R v).
+        let o = sv.moving_vector_orthogonal(&v, &n);
+        assert_eq!((o.total_degree(), o.degree_in(&[4, 5, 6, 7])), (2, 0));
+        assert!((eval(&o, &s) - d * n.dot(&(g.rotation * v))).abs() < 1e-12 * d);
+        let n_perp = (g.rotation * v).cross(&a).normalize();
+        assert!(eval(&sv.moving_vector_orthogonal(&v, &n_perp), &s).abs() < 1e-12 * d);
+        // Coincidence: Δ (R b + t − a).
+        let c = sv.moving_point_at(&b, &a);
+        let cv = geometry::evaluate_vector(&c, &s);
+        assert!((cv - (moved(&g, &b) - a) * d).norm() < 1e-11 * d);
+        assert!(
+            geometry::evaluate_vector(&sv.moving_point_at(&b, &moved(&g, &b)), &s).norm()
+                < 1e-11 * d
+        );
+    }
+}
+
+#[test]
+fn coplanar_lines_condition_is_delta_times_the_triple_product_on_the_quadric() {
+    // Paper 004 eq. 10: (r_C − r_B)·(u × n) with n the moving direction.
+    let mut rng = ChaCha8Rng::seed_from_u64(6);
+    let sv = StudyVariables::leading(8);
+    for _ in 0..30 {
+        let (g, s) = random_pose(&mut rng);
+        let d = delta(&s);
+        let a = vec3(&mut rng, 2.0);
+        let u = unit(&mut rng);
+        let b = vec3(&mut rng, 1.0);
+        let m = unit(&mut rng);
+        let c = sv.lines_coplanar(&a, &u, &b, &m);
+        assert_eq!(c.total_degree(), 2);
+        let rm = g.rotation * m;
+        let expected = d * (moved(&g, &b) - a).dot(&u.cross(&rm));
+        assert!(
+            (eval(&c, &s) - expected).abs() < 1e-10 * d,
+            "{} {}",
+            eval(&c, &s),
+            expected
+        );
+        // Two lines that meet: the fixed line through a point of the moving line.
+        let meet = moved(&g, &b) + rm * 0.6;
+        let a2 = meet - u * 1.7;
+        assert!(eval(&sv.lines_coplanar(&a2, &u, &b, &m), &s).abs() < 1e-10 * d);
+    }
+}
+
+#[test]
+fn constraint_gradients_match_finite_differences() {
+    // The derivative of the distance quadric along the pose's own parameters, against a
+    // central difference of Δ(|R b + t − a|² − l²) + 4 (x·y)²/Δ computed from study::matrix.
+    let mut rng = ChaCha8Rng::seed_from_u64(7);
+    let sv = StudyVariables::leading(8);
+    let (_, s) = random_pose(&mut rng);
+    let a = vec3(&mut rng, 2.0);
+    let b = vec3(&mut rng, 1.0);
+    let p = sv.distance(&a, &b, 0.9);
+    let numeric = |s: &[f64; 8]| {
+        let m = study::matrix(s);
+        let d = m[(0, 0)];
+        let rb_t = (m.fixed_view::<3, 3>(1, 1) * b + m.fixed_view::<3, 1>(1, 0)) / d;
+        let q = study::quadric_residual(s);
+        d * ((rb_t - a).norm_squared() - 0.81) + 4.0 * q * q / d
+    };
+    for i in 0..8 {
+        let h = 1e-6;
+        let mut up = s;
+        let mut down = s;
+        up[i] += h;
+        down[i] -= h;
+        let fd = (numeric(&up) - numeric(&down)) / (2.0 * h);
+        let exact = eval(&p.derivative(i), &s);
+        assert!(
+            (fd - exact).abs() < 1e-6 * (1.0 + exact.abs()),
+            "∂/∂s{i}: {fd} vs {exact}"
+        );
+    }
+}
+
+#[test]
+fn plain_distance_unit_vector_and_sine_cosine() {
+    // Two planar points with unknown coordinates (u, v) and (w, z): paper 003's link condition.
+    let p = geometry::variable_vector(4, [0, 1, 2]);
+    let q = [
+        Poly::variable(4, 3),
+        Poly::real(4, 1.0),
+        Poly::real(4, -2.0),
+    ];
+    let cond = geometry::distance_condition(&p, &q, 3.0);
+    let x = [1.0, 2.0, 0.5, -1.0];
+    let expected = (1.0f64 + 1.0).powi(2) + (2.0f64 - 1.0).powi(2) + (0.5f64 + 2.0).powi(2) - 9.0;
+    assert!((eval(&cond, &x) - expected).abs() < 1e-14);
+    assert_eq!(cond.total_degree(), 2);
+    let u = geometry::variable_vector(4, [0, 1, 2]);
+    let w = Vector3::new(0.36, 0.48, 0.8);
+    assert!(eval(&geometry::unit_vector(&u), &[w.x, w.y, w.z, 5.0]).abs() < 1e-15);
+    assert!((eval(&geometry::unit_vector(&u), &[1.0, 1.0, 0.0, 5.0]) - 1.0).abs() < 1e-15);
+    let (s, c) = (Poly::variable(2, 0), Poly::variable(2, 1));
+    let sc = geometry::sin_cos(&s, &c);
+    let t = 0.731_f64;
+    assert!(eval(&sc, &[t.sin(), t.cos()]).abs() < 1e-15);
+    assert!((eval(&sc, &[0.5, 0.5]) + 0.5).abs() < 1e-15);
+    let k = geometry::constant_vector(4, &w);
+    assert!(
+        (eval(&geometry::dot(&u, &k), &[1.0, 2.0, 3.0, 0.0]) - (0.36 + 0.96 + 2.4)).abs() < 1e-14
+    );
+    let cr = geometry::evaluate_vector(&geometry::cross(&u, &k), &[1.0, 2.0, 3.0, 0.0]);
+    assert!((cr - Vector3::new(1.0, 2.0, 3.0).cross(&w)).norm() < 1e-14);
+}
+
+/// A general Gough–Stewart platform: base points on a circle of radius ~1 with random
+/// perturbations, platform points on one of radius ~0.5, and the leg lengths of a random pose.
+fn random_gough_stewart(
+    rng: &mut ChaCha8Rng,
+) -> ([Vector3<f64>; 6], [Vector3<f64>; 6], Displacement, [f64; 6]) {
+    let base: [Vector3<f64>; 6] = std::array::from_fn(|_| vec3(rng, 1.0));
+    let platform: [Vector3<f64>; 6] = std::array::from_fn(|_| vec3(rng, 0.5));
+    let g = spatial::displacement(
+        Rotation3::from_scaled_axis(vec3(rng, 0.6)),
+        Vector3::new(0.1, -0.2, 1.0) + vec3(rng, 0.2),
+    );
+    let lengths = std::array::from_fn(|i| (moved(&g, &platform[i]) - base[i]).norm());
+    (base, platform, g, lengths)
+}
+
+#[test]
+fn gough_stewart_system_vanishes_at_the_pose_of_its_leg_lengths() {
+    let mut rng = ChaCha8Rng::seed_from_u64(8);
+    for chart in [Chart::random_linear(11), Chart::Unit] {
+        let (base, platform, g, lengths) = random_gough_stewart(&mut rng);
+        let system = geometry::gough_stewart(&base, &platform, &lengths, &chart);
+        assert!(system.is_square() && system.is_real());
+        assert_eq!(
+            system.variables(),
+            ["x0", "x1", "x2", "x3", "y0", "y1", "y2", "y3"]
+        );
+        let expected_degrees = match chart {
+            Chart::Linear(_) => vec![2, 2, 2, 2, 2, 2, 2, 1],
+            Chart::Unit => vec![2; 8],
+        };
+        assert_eq!(system.degrees(), expected_degrees);
+        let s = chart.representative(&study::from_displacement(&g)).unwrap();
+        let z: Vec<C64> = s.iter().map(|r| C64::new(*r, 0.0)).collect();
+        let residual = system.evaluate(&z);
+        assert!(residual.iter().all(|r| r.norm() < 1e-10), "{residual:?}");
+        // Another pose: the leg equations do not vanish.
+        let other = spatial::displacement(
+            g.rotation,
+            g.translation.vector + Vector3::new(0.0, 0.0, 0.05),
+        );
+        let s = chart
+            .representative(&study::from_displacement(&other))
+            .unwrap();
+        let z: Vec<C64> = s.iter().map(|r| C64::new(*r, 0.0)).collect();
+        let residual = system.evaluate(&z);
+        assert!(
+            residual[..6].iter().all(|r| r.norm() > 1e-4),
+            "{residual:?}"
+        );
+    }
+    let (base, platform, _, lengths) = random_gough_stewart(&mut rng);
+    assert_eq!(
+        geometry::gough_stewart(&base, &platform, &lengths, &Chart::random_linear(1))
+            .bezout_number(),
+        128
+    );
+}
