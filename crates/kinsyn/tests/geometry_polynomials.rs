@@ -346,3 +346,267 @@ fn gough_stewart_system_vanishes_at_the_pose_of_its_leg_lengths() {
         128
     );
 }
+
+// ---- Manipulator::position_system ----
+
+use kinsyn::manipulator::{
+    LegKind, Manipulator, PlatformGoal, PositionRequest, PositionSystem, PositionSystemError,
+};
+
+fn manipulator(path: &str) -> Manipulator {
+    let file = format!("{}/../../{path}", env!("CARGO_MANIFEST_DIR"));
+    Manipulator::from_json(&std::fs::read_to_string(file).unwrap()).unwrap()
+}
+
+fn residual_at(ps: &PositionSystem, pose: &Displacement) -> f64 {
+    let s = ps.solution_of(pose).unwrap();
+    let z: Vec<C64> = s.iter().map(|r| C64::new(*r, 0.0)).collect();
+    ps.system()
+        .evaluate(&z)
+        .iter()
+        .map(|r| r.norm())
+        .fold(0.0, f64::max)
+}
+
+/// Every actuator given the value it has in configuration `q` (joint values from the
+/// reference, as `parse_inputs` returns them).
+fn inputs_at(m: &Manipulator, q: &[f64]) -> Vec<(usize, f64)> {
+    m.actuators()
+        .iter()
+        .enumerate()
+        .map(|(a, act)| (a, q[act.joint]))
+        .collect()
+}
+
+/// Forward kinematics by the numeric loop closure: the configuration reached from the
+/// reference with every actuator moved to `values`.
+fn forward(m: &Manipulator, values: &[f64]) -> Vec<f64> {
+    let request = PositionRequest {
+        inputs: values.iter().copied().enumerate().collect(),
+        ..PositionRequest::default()
+    };
+    m.solve_position(&m.reference(), &request).unwrap().q
+}
+
+fn check_assembly(m: &Manipulator, q: &[f64], kinds: &[LegKind]) {
+    let chart = Chart::random_linear(5);
+    let ps = m.position_system(&inputs_at(m, q), &chart).unwrap();
+    assert!(ps.system().is_square() && ps.system().is_real());
+    assert_eq!(ps.legs().iter().map(|l| l.kind).collect::<Vec<_>>(), kinds);
+    let pose = m.platform_frame(q);
+    assert!(
+        residual_at(&ps, &pose) < 1e-9,
+        "{}",
+        residual_at(&ps, &pose)
+    );
+    for r in ps.leg_residuals(&pose) {
+        assert!(
+            r.distance.abs() < 1e-9 && r.plane.unwrap_or(0.0).abs() < 1e-9,
+            "{r:?}"
+        );
+    }
+    // The solution vector gives the pose back.
+    let back = ps.displacement(&ps.solution_of(&pose).unwrap()).unwrap();
+    assert!((back.translation.vector - pose.translation.vector).norm() < 1e-12);
+    // Not elsewhere: the reference pose at these (non-reference) inputs, or a shifted pose.
+    let shifted = spatial::displacement(
+        pose.rotation,
+        pose.translation.vector + Vector3::new(0.01, -0.02, 0.03),
+    );
+    assert!(residual_at(&ps, &shifted) > 1e-4);
+    assert!(
+        ps.leg_residuals(&shifted)
+            .iter()
+            .any(|r| r.distance.abs() > 1e-3)
+    );
+}
+
+#[test]
+fn six_ups_system_vanishes_at_the_reference_pose_and_at_a_forward_kinematics_pose() {
+    let m = manipulator("mechanisms/6-ups.json");
+    let kinds = [LegKind::Distance; 6];
+    check_assembly(&m, &m.reference(), &kinds);
+    let q = forward(&m, &[0.05, -0.03, 0.02, 0.04, -0.01, 0.03]);
+    check_assembly(&m, &q, &kinds);
+    let ps = m
+        .position_system(&inputs_at(&m, &q), &Chart::random_linear(5))
+        .unwrap();
+    assert!(residual_at(&ps, &m.platform_frame(&m.reference())) > 1e-4);
+    assert_eq!(ps.system().bezout_number(), 128);
+}
+
+#[test]
+fn six_ups_inputs_are_slider_displacements_from_the_reference() {
+    // Inverse kinematics by hand (solve_position's doc example): the platform raised to
+    // z = 1.1 without turning, leg 1 from A = (1, 0, 0) to B = (0.469846, 0.171010, 0) in the
+    // platform frame, so P1.3 = |p′ + B − A| − |p + B − A|, the others alike.
+    let m = manipulator("mechanisms/6-ups.json");
+    let raised = spatial::displacement(Rotation3::identity(), Vector3::new(0.0, 0.0, 1.1));
+    let request = PositionRequest {
+        platform: Some(PlatformGoal::Pose(raised)),
+        ..PositionRequest::default()
+    };
+    let q = m.solve_position(&m.reference(), &request).unwrap().q;
+    let a = Vector3::new(1.0, 0.0, 0.0);
+    let b = Vector3::new(0.469846310393, 0.171010071663, 0.0);
+    let len = |z: f64| (Vector3::new(0.0, 0.0, z) + b - a).norm();
+    let p1 = m.actuator_named("P1.3").unwrap();
+    let ps = m
+        .position_system(
+            &[(p1, len(1.1) - len(1.0))]
+                .iter()
+                .copied()
+                .chain(inputs_at(&m, &q).into_iter().filter(|(k, _)| *k != p1))
+                .collect::<Vec<_>>(),
+            &Chart::Unit,
+        )
+        .unwrap();
+    assert!(
+        (ps.legs()[0].length - len(1.1)).abs() < 1e-9,
+        "the leg length is reference + input"
+    );
+    assert!(residual_at(&ps, &raised) < 1e-9);
+}
+
+#[test]
+fn three_rps_system_has_distance_and_plane_per_leg() {
+    let m = manipulator("mechanisms/3-rps.json");
+    let kinds = [LegKind::RevoluteSpherical; 3];
+    check_assembly(&m, &m.reference(), &kinds);
+    let q = forward(&m, &[0.06, -0.04, 0.02]);
+    check_assembly(&m, &q, &kinds);
+    // The base axis is the leg's R axis (0, −1, 0) of the description, A the foot of B on it.
+    let ps = m.position_system(&inputs_at(&m, &q), &Chart::Unit).unwrap();
+    let n = ps.legs()[0].axis.unwrap();
+    assert!((n.cross(&Vector3::y())).norm() < 1e-12);
+    assert!((ps.legs()[0].base - Vector3::new(1.0, 0.0, 0.0)).norm() < 1e-9);
+}
+
+#[test]
+fn three_ups_with_every_input_is_revolute_spherical() {
+    // Locking α (R1.1 …) and the slider leaves β of the U and the S: the 3-RPS geometry.
+    let m = manipulator("mechanisms/3-ups.json");
+    let q = forward(&m, &[0.05, 0.04, -0.03, 0.02, 0.01, -0.05]);
+    check_assembly(&m, &q, &[LegKind::RevoluteSpherical; 3]);
+}
+
+/// A 3-SPR: spherical joints on a base circle of radius 1, revolutes tangent to a platform
+/// circle of radius 0.5 one unit above, sliders along the legs.
+fn three_spr() -> Manipulator {
+    let mut legs = Vec::new();
+    for k in 0..3 {
+        let t = f64::from(k) * 2.0 * std::f64::consts::PI / 3.0;
+        let a = Vector3::new(t.cos(), t.sin(), 0.0);
+        let b = Vector3::new(0.5 * t.cos(), 0.5 * t.sin(), 1.0);
+        let leg = (b - a).normalize();
+        let tangent = Vector3::new(-t.sin(), t.cos(), 0.0);
+        let mid = (a + b) / 2.0;
+        legs.push(format!(
+            r#"{{"chain": "SPR", "base": [{}, {}, 0.0], "platform": [{}, {}, 0.0], "points": [[{}, {}, {}]],
+               "axes": [[1,0,0],[0,1,0],[0,0,1],[{}, {}, {}],[{}, {}, 0.0]], "actuated": [4]}}"#,
+            a.x, a.y, b.x, b.y, mid.x, mid.y, mid.z, leg.x, leg.y, leg.z, tangent.x, tangent.y
+        ));
+    }
+    let text = format!(
+        r#"{{"format": "kinsyn-manipulator/1", "name": "3-SPR", "units": {{"length": "m", "angle": "deg"}},
+           "platform": {{"position": [0.0, 0.0, 1.0], "orientation": [0.0, 0.0, 0.0], "point": [0.0, 0.0, 0.0]}},
+           "legs": [{}]}}"#,
+        legs.join(",")
+    );
+    Manipulator::from_json(&text).unwrap()
+}
+
+#[test]
+fn three_spr_system_has_distance_and_moving_plane_per_leg() {
+    let m = three_spr();
+    let kinds = [LegKind::SphericalRevolute; 3];
+    check_assembly(&m, &m.reference(), &kinds);
+    let q = forward(&m, &[0.05, -0.02, 0.03]);
+    check_assembly(&m, &q, &kinds);
+}
+
+fn one_line(e: &PositionSystemError) -> String {
+    let text = e.to_string();
+    assert!(!text.contains('\n'), "{text}");
+    text
+}
+
+#[test]
+fn unsupported_manipulators_get_one_clear_line() {
+    let planar = manipulator("mechanisms/3-rrr-planar.json");
+    let e = planar
+        .position_system(&inputs_at(&planar, &planar.reference()), &Chart::Unit)
+        .unwrap_err();
+    assert!(
+        matches!(e, PositionSystemError::UnsupportedLeg { leg: 1, .. }),
+        "{e}"
+    );
+    let text = one_line(&e);
+    assert!(
+        text.starts_with("leg 1 (RaRaRa): ") && text.contains("supported"),
+        "{text}"
+    );
+
+    let prrr = manipulator("mechanisms/3-prrr.json");
+    let e = prrr
+        .position_system(&inputs_at(&prrr, &prrr.reference()), &Chart::Unit)
+        .unwrap_err();
+    assert!(
+        matches!(e, PositionSystemError::UnsupportedLeg { leg: 1, .. }),
+        "{e}"
+    );
+    one_line(&e);
+
+    let multi = manipulator("mechanisms/multibody/3-rps-3-spr.json");
+    let e = multi
+        .position_system(&inputs_at(&multi, &multi.reference()), &Chart::Unit)
+        .unwrap_err();
+    assert!(matches!(e, PositionSystemError::Multibody { .. }), "{e}");
+    assert!(one_line(&e).contains("not supported yet"));
+}
+
+#[test]
+fn missing_inputs_leave_degrees_of_freedom() {
+    // The 3-UPS with only its sliders given: three distances, three dof left.
+    let m = manipulator("mechanisms/3-ups.json");
+    let sliders: Vec<(usize, f64)> = ["P1.3", "P2.3", "P3.3"]
+        .iter()
+        .map(|l| (m.actuator_named(l).unwrap(), 0.0))
+        .collect();
+    let e = m.position_system(&sliders, &Chart::Unit).unwrap_err();
+    assert_eq!(
+        e,
+        PositionSystemError::Underdetermined {
+            constraints: 3,
+            missing: vec!["R1.1".into(), "R2.1".into(), "R3.1".into()]
+        }
+    );
+    let text = one_line(&e);
+    assert!(
+        text.contains("3 dof left") && text.contains("R1.1 R2.1 R3.1"),
+        "{text}"
+    );
+    // Only the U's first revolutes given: the sliders are passive P joints.
+    let alphas: Vec<(usize, f64)> = ["R1.1", "R2.1", "R3.1"]
+        .iter()
+        .map(|l| (m.actuator_named(l).unwrap(), 0.0))
+        .collect();
+    let e = m.position_system(&alphas, &Chart::Unit).unwrap_err();
+    assert!(
+        one_line(&e).contains("passive P (its input P1.3 is not given)"),
+        "{e}"
+    );
+    // Bad inputs.
+    assert!(matches!(
+        m.position_system(&[(99, 0.0)], &Chart::Unit),
+        Err(PositionSystemError::UnknownInput { index: 99, .. })
+    ));
+    assert!(matches!(
+        m.position_system(&[(0, 0.0), (0, 1.0)], &Chart::Unit),
+        Err(PositionSystemError::InputTwice(_))
+    ));
+    assert!(matches!(
+        m.position_system(&[(0, f64::NAN)], &Chart::Unit),
+        Err(PositionSystemError::NotFinite { .. })
+    ));
+}
