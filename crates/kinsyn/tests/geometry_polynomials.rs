@@ -80,7 +80,7 @@ fn study_points_and_vectors_match_the_displacement() {
         let chart = Chart::random_linear(9);
         let lin = chart.representative(&s).unwrap();
         assert!(eval(&sv.chart(&chart), &lin).abs() < 1e-12);
-        assert_eq!(unit_rep[0] >= 0.0, true, "x0 ≥ 0 on the unit chart");
+        assert!(unit_rep[0] >= 0.0, "x0 ≥ 0 on the unit chart");
     }
 }
 
@@ -291,9 +291,9 @@ fn plain_distance_unit_vector_and_sine_cosine() {
 
 /// A general Gough–Stewart platform: base points on a circle of radius ~1 with random
 /// perturbations, platform points on one of radius ~0.5, and the leg lengths of a random pose.
-fn random_gough_stewart(
-    rng: &mut ChaCha8Rng,
-) -> ([Vector3<f64>; 6], [Vector3<f64>; 6], Displacement, [f64; 6]) {
+type GoughStewart = ([Vector3<f64>; 6], [Vector3<f64>; 6], Displacement, [f64; 6]);
+
+fn random_gough_stewart(rng: &mut ChaCha8Rng) -> GoughStewart {
     let base: [Vector3<f64>; 6] = std::array::from_fn(|_| vec3(rng, 1.0));
     let platform: [Vector3<f64>; 6] = std::array::from_fn(|_| vec3(rng, 0.5));
     let g = spatial::displacement(
@@ -448,7 +448,7 @@ fn six_ups_inputs_are_slider_displacements_from_the_reference() {
     };
     let q = m.solve_position(&m.reference(), &request).unwrap().q;
     let a = Vector3::new(1.0, 0.0, 0.0);
-    let b = Vector3::new(0.469846310393, 0.171010071663, 0.0);
+    let b = Vector3::new(0.469_846_310_393, 0.171_010_071_663, 0.0);
     let len = |z: f64| (Vector3::new(0.0, 0.0, z) + b - a).norm();
     let p1 = m.actuator_named("P1.3").unwrap();
     let ps = m

@@ -338,17 +338,20 @@ impl StudyVariables {
     /// paper 004 eqs. 12), in Husty's quadratic form (Husty 1996, *An algorithm for solving
     /// the direct kinematics of general Stewart–Gough platforms*, Mech. Mach. Theory 31(4)).
     ///
-    /// Derivation: expand `|R b + t − a|² − l² = |a|² + |b|² − l² − 2 a·R b − 2 a·t
-    /// + 2 (R b)·t + |t|²` and multiply by `Δ`. With `Δ R b = M_R b`, `Δ t = M_T`,
-    /// `Δ (R b)·t = −2 (x b)·y` and, on the quadric, `Δ |t|² = 4 y·y` (module documentation):
+    /// Derivation: expand
+    ///
+    /// `|R b + t − a|² − l² = |a|² + |b|² − l² − 2 a·R b − 2 a·t + 2 (R b)·t + |t|²`
+    ///
+    /// and multiply by `Δ`. With `Δ R b = M_R b`, `Δ t = M_T`, `Δ (R b)·t = −2 (x b)·y` and,
+    /// on the quadric, `Δ |t|² = 4 y·y` (module documentation):
     ///
     /// `(|a|² + |b|² − l²) Δ − 2 a·(M_R b) − 2 a·M_T − 4 (x b)·y + 4 y·y = 0`,
     ///
-    /// a homogeneous **quadric** in `(x, y)` (degree 2), equal to `Δ (|R b + t − a|² − l²)
-    /// + 4 (x·y)² / Δ` for any eight numbers, hence to `Δ (d² − l²)` on the Study quadric: for
-    /// a displacement it vanishes exactly when the points are `l` apart. (Paper 004's
-    /// `g5 … g8` have this form, with the factor `1 + t₁ᵢ²` of their half-angle substitution:
-    /// `(4 t² + 4) y·y`.)
+    /// a homogeneous **quadric** in `(x, y)` (degree 2), equal to
+    /// `Δ (|R b + t − a|² − l²) + 4 (x·y)² / Δ` for any eight numbers, hence to `Δ (d² − l²)`
+    /// on the Study quadric: for a displacement it vanishes exactly when the points are `l`
+    /// apart. (Paper 004's `g5 … g8` have this form, with the factor `1 + t₁ᵢ²` of their
+    /// half-angle substitution: `(4 t² + 4) y·y`.)
     #[must_use]
     pub fn distance(&self, a: &Vector3<f64>, b: &Vector3<f64>, length: f64) -> Poly {
         let av = constant_vector(self.nvars, a);
