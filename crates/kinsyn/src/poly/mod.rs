@@ -25,6 +25,7 @@
 
 pub mod bertini;
 pub mod families;
+pub mod geometry;
 pub mod phc;
 mod program;
 
