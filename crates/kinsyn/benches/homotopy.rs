@@ -12,7 +12,7 @@ fn bench(c: &mut Criterion) {
         let report = solve(&system, &SolveSettings::default()).expect("square");
         assert_eq!(report.nonsingular(), roots, "{name}: {}", report.summary());
         group.bench_function(name, |b| {
-            b.iter(|| solve(&system, &SolveSettings::default()))
+            b.iter(|| solve(&system, &SolveSettings::default()));
         });
     }
     group.finish();

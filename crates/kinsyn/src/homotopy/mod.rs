@@ -2,7 +2,7 @@
 //! each path's endpoint classified (finite or at infinity, regular or singular with its
 //! multiplicity, real or not) — the numerical algebraic geometry of Sommese & Wampler, *The
 //! Numerical Solution of Systems of Polynomials Arising in Engineering and Science* (2005), and
-//! of the solvers Bertini, PHCpack and HomotopyContinuation.jl, written anew for kinsyn.
+//! of the solvers Bertini, `PHCpack` and `HomotopyContinuation.jl`, written anew for kinsyn.
 //!
 //! [`solve`] deforms a start system with known solutions into the target along the γ-trick
 //! homotopy in projective coordinates ([`StartSystem`]: total degree or multi-homogeneous),
@@ -46,6 +46,7 @@ use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 use rayon::prelude::*;
 use start::ProjectiveHomotopy;
+use std::fmt::Write as _;
 use tracker::Tracker;
 
 /// The most paths [`solve`] tracks: beyond, the system is refused rather than left to run for
@@ -234,11 +235,11 @@ impl SolveReport {
             self.real()
         );
         if self.singular() > 0 {
-            s += &format!(", {} singular", self.singular());
+            let _ = write!(s, ", {} singular", self.singular());
         }
-        s += &format!(", {} at infinity", self.at_infinity());
+        let _ = write!(s, ", {} at infinity", self.at_infinity());
         if self.failed() > 0 {
-            s += &format!(", {} failed", self.failed());
+            let _ = write!(s, ", {} failed", self.failed());
         }
         s + &format!(", {} paths", self.paths())
     }
@@ -468,7 +469,11 @@ fn close(a: &[C64], b: &[C64], tolerance: f64) -> bool {
         .map(|(p, q)| (p - q).norm_sqr())
         .sum::<f64>()
         .sqrt();
-    let size: f64 = a.iter().map(|p| p.norm_sqr()).sum::<f64>().sqrt();
+    let size: f64 = a
+        .iter()
+        .map(nalgebra::Complex::norm_sqr)
+        .sum::<f64>()
+        .sqrt();
     d <= tolerance * (1.0 + size)
 }
 
@@ -517,7 +522,11 @@ fn distinct_solutions(system: &System, ends: &[PathEnd]) -> Vec<Solution> {
             s.regular &= e.kind == EndpointKind::Regular;
             continue;
         }
-        let size = x.iter().map(|c| c.norm_sqr()).sum::<f64>().sqrt();
+        let size = x
+            .iter()
+            .map(nalgebra::Complex::norm_sqr)
+            .sum::<f64>()
+            .sqrt();
         let real = real_system
             && x.iter()
                 .all(|c| c.im.abs() <= REAL_TOLERANCE * (1.0 + size));

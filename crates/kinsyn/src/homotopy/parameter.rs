@@ -96,6 +96,9 @@ impl ParametrizedSystem {
     ///
     /// # Errors
     /// [`ParameterError::ParameterCount`] if `p` has the wrong length.
+    ///
+    /// # Panics
+    /// Never: the member keeps the family's own (distinct) variable names.
     pub fn at(&self, p: &[C64]) -> Result<System, ParameterError> {
         self.check(p)?;
         let n = self.unknowns;
@@ -292,7 +295,11 @@ fn distance(a: &[C64], b: &[C64]) -> f64 {
         .map(|(p, q)| (p - q).norm_sqr())
         .sum::<f64>()
         .sqrt();
-    let size: f64 = a.iter().map(|p| p.norm_sqr()).sum::<f64>().sqrt();
+    let size: f64 = a
+        .iter()
+        .map(nalgebra::Complex::norm_sqr)
+        .sum::<f64>()
+        .sqrt();
     d / (1.0 + size)
 }
 

@@ -166,20 +166,20 @@ impl Poly {
     /// The total degree (0 for constants and for the zero polynomial).
     #[must_use]
     pub fn total_degree(&self) -> u32 {
-        self.degree_in_iter(0..self.nvars)
+        self.terms
+            .keys()
+            .map(|e| e.iter().sum::<u32>())
+            .max()
+            .unwrap_or(0)
     }
 
     /// The degree in the variables `vars` together (the others counted as constants): the
     /// degree of the polynomial in one group of a multi-homogeneous structure.
     #[must_use]
     pub fn degree_in(&self, vars: &[usize]) -> u32 {
-        self.degree_in_iter(vars.iter().copied())
-    }
-
-    fn degree_in_iter(&self, vars: impl Iterator<Item = usize> + Clone) -> u32 {
         self.terms
             .keys()
-            .map(|e| vars.clone().map(|i| e[i]).sum::<u32>())
+            .map(|e| vars.iter().map(|i| e[*i]).sum::<u32>())
             .max()
             .unwrap_or(0)
     }
@@ -219,7 +219,7 @@ impl Poly {
         let mut powers = vec![Self::real(self.nvars, 1.0)];
         for (e, c) in &self.terms {
             while powers.len() <= e[i] as usize {
-                let next = powers.last().expect("starts with 1") * q;
+                let next = &powers[powers.len() - 1] * q;
                 powers.push(next);
             }
             let mut rest = e.clone();
@@ -288,6 +288,10 @@ impl Poly {
     /// # Panics
     /// If fewer names than variables are given.
     #[must_use]
+    #[allow(
+        clippy::float_cmp,
+        reason = "a coefficient of exactly ±1 is left out of the text"
+    )]
     pub fn display_with(&self, names: &[String]) -> String {
         assert!(names.len() >= self.nvars, "a name per variable");
         if self.terms.is_empty() {
@@ -376,6 +380,10 @@ impl Sub<&Poly> for &Poly {
 
 impl Mul<&Poly> for &Poly {
     type Output = Poly;
+    #[allow(
+        clippy::suspicious_arithmetic_impl,
+        reason = "exponents add when monomials multiply"
+    )]
     fn mul(self, rhs: &Poly) -> Poly {
         same_ring(self, rhs);
         let mut out = Poly::zero(self.nvars);

@@ -48,12 +48,12 @@ pub struct Program {
     power_offset: Vec<usize>,
     power_len: usize,
     /// Each monomial as a range of `factors` (indices into the power table).
-    monomials: Vec<(u32, u32)>,
-    factors: Vec<u32>,
+    monomials: Vec<(usize, usize)>,
+    factors: Vec<usize>,
     /// Coefficient and monomial of every term of every output.
-    terms: Vec<(C64, u32)>,
+    terms: Vec<(C64, usize)>,
     /// The outputs, each a range of `terms`: the equations, then the Jacobian row by row.
-    outputs: Vec<(u32, u32)>,
+    outputs: Vec<(usize, usize)>,
 }
 
 /// Scratch space of a [`Program`] over one scalar type: the power table, the monomials and the
@@ -93,27 +93,27 @@ impl Program {
             power_offset.push(power_len);
             power_len += *m as usize;
         }
-        let mut index: HashMap<Vec<u32>, u32> = HashMap::new();
+        let mut index: HashMap<Vec<u32>, usize> = HashMap::new();
         let mut monomials = Vec::new();
         let mut factors = Vec::new();
         let mut terms = Vec::new();
         let mut outputs = Vec::with_capacity(equations.len() * (nvars + 1));
         for p in equations.iter().chain(&derivatives) {
-            let start = terms.len() as u32;
+            let start = terms.len();
             for (e, c) in p.terms() {
                 let m = *index.entry(e.to_vec()).or_insert_with(|| {
-                    let first = factors.len() as u32;
+                    let first = factors.len();
                     for (i, k) in e.iter().enumerate() {
                         if *k > 0 {
-                            factors.push((power_offset[i] + *k as usize - 1) as u32);
+                            factors.push(power_offset[i] + *k as usize - 1);
                         }
                     }
-                    monomials.push((first, factors.len() as u32));
-                    (monomials.len() - 1) as u32
+                    monomials.push((first, factors.len()));
+                    monomials.len() - 1
                 });
                 terms.push((c, m));
             }
-            outputs.push((start, terms.len() as u32));
+            outputs.push((start, terms.len()));
         }
         Self {
             nvars,
@@ -176,16 +176,16 @@ impl Program {
             }
         }
         for (slot, (a, b)) in ws.monomials.iter_mut().zip(&self.monomials) {
-            *slot = self.factors[*a as usize..*b as usize]
+            *slot = self.factors[*a..*b]
                 .iter()
-                .fold(S::one(), |acc, f| acc * ws.powers[*f as usize]);
+                .fold(S::one(), |acc, f| acc * ws.powers[*f]);
         }
     }
 
     fn output<S: Scalar>(&self, k: usize, ws: &Workspace<S>) -> S {
         let (a, b) = self.outputs[k];
-        (a as usize..b as usize).fold(S::zero(), |acc, t| {
-            acc + ws.coefficients[t] * ws.monomials[self.terms[t].1 as usize]
+        (a..b).fold(S::zero(), |acc, t| {
+            acc + ws.coefficients[t] * ws.monomials[self.terms[t].1]
         })
     }
 
