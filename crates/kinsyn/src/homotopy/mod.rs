@@ -40,6 +40,7 @@ pub use start::StartSystem;
 pub use tracker::{PathFailure, TrackerSettings};
 
 pub use crate::poly::C64;
+use crate::certify::{Certificate, Reality, certify_roots};
 use crate::poly::System;
 use nalgebra::DVector;
 use rand::SeedableRng;
@@ -94,6 +95,8 @@ pub struct SolveSettings {
     pub start: StartSystem,
     /// Step control and endgame.
     pub tracker: TrackerSettings,
+    /// Whether to certify the regular solutions (Krawczyk, [`crate::certify`]).
+    pub certify: bool,
     /// How many times paths with suspect endpoints (coinciding regular endpoints: a path jump;
     /// failures) are tracked again with stricter steps.
     pub retrack_rounds: usize,
@@ -105,6 +108,7 @@ impl Default for SolveSettings {
             seed: 1,
             start: StartSystem::TotalDegree,
             tracker: TrackerSettings::default(),
+            certify: true,
             retrack_rounds: 2,
         }
     }
@@ -161,6 +165,20 @@ pub struct Solution {
     pub residual: f64,
     /// The paths that ended here.
     pub paths: Vec<usize>,
+    /// The Krawczyk certificate of a regular solution ([`crate::certify`]): a proof that a
+    /// unique root lies in a small box around `x`, distinct from the other solutions' boxes, and
+    /// real or non-real where that is proven. `None` for singular solutions (no certificate
+    /// exists for them) and when certification was not asked for.
+    pub certificate: Option<Certificate>,
+}
+
+impl Solution {
+    /// Whether the solution is certified: a unique regular root proven in its box, and that
+    /// box disjoint from every other solution's.
+    #[must_use]
+    pub fn is_certified(&self) -> bool {
+        self.certificate.as_ref().is_some_and(|c| c.is_certified() && c.distinct)
+    }
 }
 
 /// All that [`solve`] found.
@@ -199,6 +217,21 @@ impl SolveReport {
         self.solutions
             .iter()
             .filter(|s| s.regular && s.real)
+            .count()
+    }
+
+    /// The number of certified solutions ([`Solution::is_certified`]).
+    #[must_use]
+    pub fn certified(&self) -> usize {
+        self.solutions.iter().filter(|s| s.is_certified()).count()
+    }
+
+    /// The number of solutions certified real.
+    #[must_use]
+    pub fn certified_real(&self) -> usize {
+        self.solutions
+            .iter()
+            .filter(|s| s.is_certified() && s.certificate.as_ref().is_some_and(|c| c.real == Reality::CertifiedReal))
             .count()
     }
 
@@ -312,7 +345,10 @@ pub fn solve_with_progress(
             ends[k] = e;
         }
     }
-    let solutions = distinct_solutions(system, &ends);
+    let mut solutions = distinct_solutions(system, &ends);
+    if settings.certify {
+        certify_solutions(system, &mut solutions);
+    }
     Ok(SolveReport {
         start: settings.start,
         seed: settings.seed,
@@ -503,6 +539,27 @@ fn suspect_paths(ends: &[PathEnd]) -> Vec<usize> {
     suspects
 }
 
+/// Certifies the regular solutions in place; a certified reality replaces the tolerance's.
+fn certify_solutions(system: &System, solutions: &mut [Solution]) {
+    let regular: Vec<usize> = (0..solutions.len()).filter(|k| solutions[*k].regular).collect();
+    let roots: Vec<Vec<C64>> = regular.iter().map(|k| solutions[*k].x.clone()).collect();
+    let Ok(certificates) = certify_roots(&system.program(), &roots, system.is_real()) else {
+        return;
+    };
+    for (k, c) in regular.into_iter().zip(certificates) {
+        let s = &mut solutions[k];
+        match c.real {
+            Reality::CertifiedReal => s.real = true,
+            Reality::CertifiedNonReal => s.real = false,
+            Reality::Unknown => {}
+        }
+        if c.is_certified() {
+            s.x.clone_from(&c.refined);
+        }
+        s.certificate = Some(c);
+    }
+}
+
 /// The finite endpoints grouped into distinct solutions.
 fn distinct_solutions(system: &System, ends: &[PathEnd]) -> Vec<Solution> {
     let real_system = system.is_real();
@@ -542,6 +599,7 @@ fn distinct_solutions(system: &System, ends: &[PathEnd]) -> Vec<Solution> {
             real,
             residual,
             paths: vec![e.path],
+            certificate: None,
         });
     }
     solutions
