@@ -39,8 +39,8 @@ pub use parameter::{
 pub use start::StartSystem;
 pub use tracker::{PathFailure, TrackerSettings};
 
-pub use crate::poly::C64;
 use crate::certify::{Certificate, Reality, certify_roots};
+pub use crate::poly::C64;
 use crate::poly::System;
 use nalgebra::DVector;
 use rand::SeedableRng;
@@ -177,7 +177,9 @@ impl Solution {
     /// box disjoint from every other solution's.
     #[must_use]
     pub fn is_certified(&self) -> bool {
-        self.certificate.as_ref().is_some_and(|c| c.is_certified() && c.distinct)
+        self.certificate
+            .as_ref()
+            .is_some_and(|c| c.is_certified() && c.distinct)
     }
 }
 
@@ -231,7 +233,12 @@ impl SolveReport {
     pub fn certified_real(&self) -> usize {
         self.solutions
             .iter()
-            .filter(|s| s.is_certified() && s.certificate.as_ref().is_some_and(|c| c.real == Reality::CertifiedReal))
+            .filter(|s| {
+                s.is_certified()
+                    && s.certificate
+                        .as_ref()
+                        .is_some_and(|c| c.real == Reality::CertifiedReal)
+            })
             .count()
     }
 
@@ -541,7 +548,9 @@ fn suspect_paths(ends: &[PathEnd]) -> Vec<usize> {
 
 /// Certifies the regular solutions in place; a certified reality replaces the tolerance's.
 fn certify_solutions(system: &System, solutions: &mut [Solution]) {
-    let regular: Vec<usize> = (0..solutions.len()).filter(|k| solutions[*k].regular).collect();
+    let regular: Vec<usize> = (0..solutions.len())
+        .filter(|k| solutions[*k].regular)
+        .collect();
     let roots: Vec<Vec<C64>> = regular.iter().map(|k| solutions[*k].x.clone()).collect();
     let Ok(certificates) = certify_roots(&system.program(), &roots, system.is_real()) else {
         return;
