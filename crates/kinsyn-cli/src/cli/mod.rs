@@ -8,8 +8,10 @@
 
 mod args;
 mod catalogue;
+mod files;
 mod manipulator;
 mod notation;
+mod solve;
 mod terminal;
 
 use args::{Cli, Command};
@@ -140,6 +142,15 @@ fn execute(command: Command) -> Result<String, CliError> {
         }
         Command::Analyze {
             file,
+            inputs,
+            body,
+            all_assemblies: true,
+            seed,
+            json: as_json,
+            ..
+        } => manipulator::all_assemblies(&file, inputs.as_deref(), body.as_deref(), seed, as_json),
+        Command::Analyze {
+            file,
             pose,
             inputs,
             from,
@@ -148,6 +159,7 @@ fn execute(command: Command) -> Result<String, CliError> {
             study,
             seed,
             json: as_json,
+            ..
         } => manipulator::analyze(
             &file,
             &manipulator::Placement {
@@ -167,6 +179,27 @@ fn execute(command: Command) -> Result<String, CliError> {
         Command::Build { spec, output } => {
             manipulator::build_command(&spec.into(), output.as_deref())
         }
+        Command::Solve {
+            file,
+            start,
+            seed,
+            runs,
+            threads,
+            show,
+            no_certify,
+            json: as_json,
+        } => solve::solve(
+            &file,
+            &solve::SolveOptions {
+                start: start.into(),
+                seed,
+                runs,
+                threads,
+                certify: !no_certify,
+                show,
+            },
+            as_json,
+        ),
         Command::Stack {
             modules,
             radii,

@@ -57,6 +57,20 @@ pub fn working<T>(message: &str, work: impl FnOnce() -> T) -> T {
     result
 }
 
+/// A progress bar over `count` items (`unit`: "paths", "lock subsets") on stderr, labelled
+/// `message`. indicatif hides it (draws nothing) when stderr is not a terminal, so pipes, files
+/// and tests see only the output and the errors.
+pub fn progress(count: usize, unit: &str, message: &str) -> indicatif::ProgressBar {
+    let bar = indicatif::ProgressBar::new(count as u64);
+    if let Ok(style) = indicatif::ProgressStyle::with_template(&format!(
+        "{{msg}} [{{bar:30}}] {{pos}}/{{len}} {unit}, {{elapsed}} elapsed, about {{eta}} left"
+    )) {
+        bar.set_style(style.progress_chars("=> "));
+    }
+    bar.set_message(message.to_string());
+    bar
+}
+
 /// Prints `kinsyn: error: MESSAGE` as one line on stderr.
 pub fn error(message: &str) {
     line(&format!("kinsyn: error: {}", one_line(message)));

@@ -375,15 +375,21 @@ pub struct RunsReport {
     pub runs: Vec<SolveReport>,
     /// The distinct non-singular solutions found by any run.
     pub union: Vec<Vec<C64>>,
-    /// The runs that found every solution of the union.
-    pub complete: usize,
+    /// For each run, whether it found every solution of the union.
+    pub complete: Vec<bool>,
 }
 
 impl RunsReport {
+    /// The number of runs that found every solution any run found.
+    #[must_use]
+    pub fn complete_count(&self) -> usize {
+        self.complete.iter().filter(|c| **c).count()
+    }
+
     /// The fraction of runs that found every solution any run found.
     #[must_use]
     pub fn complete_fraction(&self) -> f64 {
-        self.complete as f64 / self.runs.len().max(1) as f64
+        self.complete_count() as f64 / self.runs.len().max(1) as f64
     }
 }
 
@@ -407,8 +413,15 @@ pub fn solve_runs(
             )
         })
         .collect::<Result<_, _>>()?;
+    Ok(combine_runs(reports))
+}
+
+/// The union of the non-singular solutions of independent runs of one system, and which runs
+/// found all of it.
+#[must_use]
+pub fn combine_runs(runs: Vec<SolveReport>) -> RunsReport {
     let mut union: Vec<Vec<C64>> = Vec::new();
-    for s in reports
+    for s in runs
         .iter()
         .flat_map(|r| r.solutions.iter().filter(|s| s.regular))
     {
@@ -416,21 +429,21 @@ pub fn solve_runs(
             union.push(s.x.clone());
         }
     }
-    let complete = reports
+    let complete = runs
         .iter()
-        .filter(|r| {
+        .map(|r| {
             union.iter().all(|u| {
                 r.solutions
                     .iter()
                     .any(|s| s.regular && close(u, &s.x, 1e-6))
             })
         })
-        .count();
-    Ok(RunsReport {
-        runs: reports,
+        .collect();
+    RunsReport {
+        runs,
         union,
         complete,
-    })
+    }
 }
 
 /// Tracks path `k` from its start solution `z` and classifies its end.

@@ -3,59 +3,24 @@
 //! `modes` and `analyze` are in their own files.
 
 mod analyze;
+mod assemblies;
 mod modes;
 
 pub use analyze::{Placement, analyze};
+pub use assemblies::all_assemblies;
 pub use modes::{DEFAULT_MAX_SUBSETS, MAX_SUBSETS_CEILING, Selection, modes};
 
 use super::CliError;
 use kinsyn::manipulator::build::{BuildField, BuildSpec, build};
 use kinsyn::manipulator::{Manipulator, ManipulatorError, file};
-use std::io::Read as _;
 use std::path::Path;
 
-/// The largest manipulator file read, in bytes: the largest description within the limits of
-/// docs/limits.md (12 legs of 6 joints, written out with every optional field) is under
-/// 64 KiB; anything much larger is not a description.
-pub const MAX_FILE_BYTES: u64 = 1 << 20;
-
 /// Reads and builds a manipulator file; errors name the file and the field. A path that is
-/// not a regular file, a file over [`MAX_FILE_BYTES`], or text that is not UTF-8 or not a
+/// not a regular file, a file over [`crate::cli::files::MAX_FILE_BYTES`], or text that is not UTF-8 or not a
 /// description is refused as "not a kinsyn manipulator file" before it is parsed further.
 pub fn load(path: &Path) -> Result<Manipulator, CliError> {
     let shown = path.display();
-    let refuse =
-        |why: String| CliError::Input(format!("{shown} is {} ({why})", file::NOT_A_DESCRIPTION));
-    let metadata = std::fs::metadata(path).map_err(|e| CliError::Input(format!("{shown}: {e}")))?;
-    if !metadata.is_file() {
-        return Err(refuse(if metadata.is_dir() {
-            "a directory".into()
-        } else {
-            "not a regular file".into()
-        }));
-    }
-    if metadata.len() > MAX_FILE_BYTES {
-        return Err(refuse(format!(
-            "{} bytes; description files are at most {} bytes",
-            metadata.len(),
-            MAX_FILE_BYTES
-        )));
-    }
-    let mut bytes = Vec::new();
-    std::fs::File::open(path)
-        .and_then(|f| f.take(MAX_FILE_BYTES + 1).read_to_end(&mut bytes))
-        .map_err(|e| CliError::Input(format!("{shown}: {e}")))?;
-    if bytes.len() as u64 > MAX_FILE_BYTES {
-        return Err(refuse(format!(
-            "more than {MAX_FILE_BYTES} bytes; description files are at most that"
-        )));
-    }
-    let text = String::from_utf8(bytes).map_err(|e| {
-        refuse(format!(
-            "not UTF-8 text: invalid byte at offset {}",
-            e.utf8_error().valid_up_to()
-        ))
-    })?;
+    let text = crate::cli::files::read_text(path, file::NOT_A_DESCRIPTION)?;
     Manipulator::from_json(&text).map_err(|e| match &e {
         ManipulatorError::Description(d) if d.is_not_a_description() => {
             CliError::Input(format!("{shown} is {}", d.message))

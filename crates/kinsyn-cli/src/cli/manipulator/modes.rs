@@ -4,7 +4,6 @@
 use super::analyze::configuration_at_pose;
 use super::{body_names, clean, leg_warnings, load_with_body, warn};
 use crate::cli::{CliError, json};
-use indicatif::{ProgressBar, ProgressStyle};
 use kinsyn::manipulator::{Manipulator, Mode, Modes, PatternModes};
 use kinsyn::mechanism::SampleSettings;
 use kinsyn::motion::MIN_SEPARATION;
@@ -87,19 +86,6 @@ fn selected_subsets(
     )))
 }
 
-/// A progress bar over `count` lock subsets on stderr. indicatif hides it (draws nothing) when
-/// stderr is not a terminal, so pipes, files and tests see only the output and the errors.
-fn subset_progress(count: usize) -> ProgressBar {
-    let bar = ProgressBar::new(count as u64);
-    if let Ok(style) = ProgressStyle::with_template(
-        "{msg} [{bar:30}] {pos}/{len} lock subsets, {elapsed} elapsed, about {eta} left",
-    ) {
-        bar.set_style(style.progress_chars("=> "));
-    }
-    bar.set_message("modes");
-    bar
-}
-
 /// `kinsyn modes`: the platform's motion for the selected lock subsets, with the locked inputs
 /// held at their values at the start configuration (the reference, or `--pose`).
 pub fn modes(
@@ -114,7 +100,7 @@ pub fn modes(
     let subsets = selected_subsets(path, &m, selection, max_subsets)?;
     let start = start_configuration(&m, pose)?;
     let modes = if subsets.len() > 1 {
-        let bar = subset_progress(subsets.len());
+        let bar = crate::cli::terminal::progress(subsets.len(), "lock subsets", "modes");
         let modes = m.modes_from(&start, &subsets, settings, &|| bar.inc(1));
         bar.finish_and_clear();
         modes

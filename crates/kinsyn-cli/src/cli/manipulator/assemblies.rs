@@ -1,0 +1,223 @@
+//! `kinsyn analyze FILE --inputs … --all-assemblies`: every assembly of a manipulator at given
+//! inputs, from its constraint polynomials in Study parameters solved by homotopy continuation.
+
+use super::{clean, leg_warnings, load_with_body, warn};
+use crate::cli::solve::{certificate_line, solve_with_bar};
+use crate::cli::{CliError, json};
+use kinsyn::homotopy::SolveSettings;
+use kinsyn::manipulator::{LegKind, Manipulator, PositionRequest};
+use kinsyn::mechanism::rotation_log;
+use kinsyn::poly::geometry::Chart;
+use kinsyn::spatial::Displacement;
+use std::fmt::Write as _;
+use std::path::Path;
+
+/// One real assembly: the platform frame and the largest leg residual.
+struct Assembly {
+    pose: Displacement,
+    residual: f64,
+    certified: bool,
+    current: bool,
+}
+
+/// The pose as `--pose` takes it: `x,y,z,rx,ry,rz`, lengths in the file's unit and the rotation
+/// vector in its angle unit.
+fn pose_text(m: &Manipulator, g: &Displacement) -> String {
+    let t = g.translation.vector;
+    let r = rotation_log(&g.rotation).map(|a| m.units().angle.from_radians(a));
+    [t.x, t.y, t.z, r.x, r.y, r.z]
+        .iter()
+        .map(|v| format!("{:.6}", clean(*v)))
+        .collect::<Vec<_>>()
+        .join(",")
+}
+
+/// `kinsyn analyze FILE [--inputs …] --all-assemblies`.
+pub fn all_assemblies(
+    path: &Path,
+    inputs_text: Option<&str>,
+    body: Option<&str>,
+    seed: u64,
+    as_json: bool,
+) -> Result<String, CliError> {
+    let m = load_with_body(path, body)?;
+    let mut inputs = match inputs_text {
+        Some(text) => m
+            .parse_inputs(text)
+            .map_err(|e| CliError::Input(format!("--inputs {text:?}: {e}")))?,
+        None => Vec::new(),
+    };
+    // Inputs not named keep their values at the reference configuration (value 0).
+    for a in 0..m.actuators().len() {
+        if !inputs.iter().any(|(b, _)| *b == a) {
+            inputs.push((a, 0.0));
+        }
+    }
+    let ps = m
+        .position_system(&inputs, &Chart::random_linear(seed))
+        .map_err(|e| CliError::Input(format!("--all-assemblies: {e}")))?;
+    let settings = SolveSettings {
+        seed,
+        ..SolveSettings::default()
+    };
+    let runs = solve_with_bar(ps.system(), &settings, 1)?;
+    let report = &runs.runs[0];
+    // The assembly Newton continuation reaches from the reference, to mark it.
+    let request = PositionRequest {
+        inputs: inputs.clone(),
+        ..PositionRequest::default()
+    };
+    let current = m
+        .solve_position(&m.reference(), &request)
+        .ok()
+        .map(|p| m.platform_frame(&p.q));
+    let assemblies: Vec<Assembly> = report
+        .solutions
+        .iter()
+        .filter(|s| s.regular && s.real)
+        .filter_map(|s| {
+            let x: Vec<f64> = s.x.iter().map(|c| c.re).collect();
+            let pose = ps.displacement(&x).ok()?;
+            let residual = ps
+                .leg_residuals(&pose)
+                .iter()
+                .map(|r| r.distance.abs().max(r.plane.map_or(0.0, f64::abs)))
+                .fold(0.0, f64::max);
+            let current = current.as_ref().is_some_and(|c| {
+                (c.to_homogeneous() - pose.to_homogeneous()).amax()
+                    < 1e-6 * (1.0 + c.translation.vector.norm())
+            });
+            Some(Assembly {
+                pose,
+                residual,
+                certified: s.is_certified(),
+                current,
+            })
+        })
+        .collect();
+    // Singular endpoints where x0² + x1² + x2² + x3² = 0: the constraints were multiplied by
+    // this Δ (or vanish with it), so the null cone solves them without being a displacement.
+    let null_cone = report
+        .solutions
+        .iter()
+        .filter(|s| {
+            let delta: kinsyn::poly::C64 = s.x[..4].iter().map(|c| c * c).sum();
+            let size: f64 = s.x[..4].iter().map(|c| c.norm_sqr()).sum();
+            !s.regular && delta.norm() <= 1e-8 * size
+        })
+        .count();
+    let warnings = leg_warnings(&m);
+    warn(path, &warnings);
+    let kinds: Vec<&str> = ps
+        .legs()
+        .iter()
+        .map(|l| match l.kind {
+            LegKind::Distance => "distance",
+            LegKind::RevoluteSpherical => "R–S: distance and plane",
+            LegKind::SphericalRevolute => "S–R: distance and moving plane",
+            LegKind::Coincident => "coincident points",
+        })
+        .collect();
+    let input_text: Vec<String> = inputs
+        .iter()
+        .map(|(a, v)| {
+            let actuator = &m.actuators()[*a];
+            let value = if actuator.label().starts_with('R') {
+                m.units().angle.from_radians(*v)
+            } else {
+                *v
+            };
+            format!("{} = {}", actuator.label(), clean(value))
+        })
+        .collect();
+    if as_json {
+        let v = serde_json::json!({
+            "manipulator": m.name(),
+            "inputs": input_text,
+            "formulation": {
+                "variables": ps.system().variables(),
+                "equations": ps.system().len(),
+                "degrees": ps.system().degrees(),
+                "bezout_number": ps.system().bezout_number().to_string(),
+                "legs": kinds,
+            },
+            "summary": report.summary(),
+            "paths": report.paths(),
+            "nonsingular": report.nonsingular(),
+            "real": report.real(),
+            "singular": report.singular(),
+            "singular_on_null_cone": null_cone,
+            "at_infinity": report.at_infinity(),
+            "certified": report.certified(),
+            "certified_real": report.certified_real(),
+            "seconds": report.seconds,
+            "seed": seed,
+            "real_assemblies": assemblies.iter().map(|a| serde_json::json!({
+                "pose": pose_text(&m, &a.pose),
+                "position": a.pose.translation.vector.as_slice(),
+                "rotation_vector_rad": rotation_log(&a.pose.rotation).as_slice(),
+                "largest_leg_residual": a.residual,
+                "certified": a.certified,
+                "continued_from_reference": a.current,
+            })).collect::<Vec<_>>(),
+            "complex_assemblies": report.solutions.iter().filter(|s| s.regular && !s.real).map(|s| {
+                s.x.iter().map(|c| [c.re, c.im]).collect::<Vec<_>>()
+            }).collect::<Vec<_>>(),
+            "warnings": warnings,
+        });
+        return Ok(json(&v));
+    }
+    let mut out = String::new();
+    let _ = writeln!(out, "{} at {}", m.name(), input_text.join(", "));
+    let _ = writeln!(
+        out,
+        "formulation: {} equations in the Study parameters x0…y3 of the platform frame (legs: {}; the Study quadric; a random linear chart, seed {seed}), Bézout number {}",
+        ps.system().len(),
+        kinds.join(", "),
+        ps.system().bezout_number()
+    );
+    let _ = writeln!(
+        out,
+        "{}",
+        report.summary().replace("solutions", "assemblies")
+    );
+    let _ = writeln!(out, "{}", certificate_line(report));
+    if null_cone > 0 {
+        let _ = writeln!(
+            out,
+            "{null_cone} of the singular endpoints lie on the null cone x0² + x1² + x2² + x3² = 0, which solves the constraints without being a displacement"
+        );
+    }
+    let _ = writeln!(out, "time: {:.3} s", report.seconds);
+    let unit = m.units();
+    let _ = writeln!(
+        out,
+        "real assemblies ({}), as --pose x,y,z,rx,ry,rz ({}, {}):",
+        assemblies.len(),
+        unit.length,
+        unit.angle.name()
+    );
+    for (k, a) in assemblies.iter().enumerate() {
+        let _ = writeln!(
+            out,
+            "  {:>3}  {}  [legs within {:.1e}{}{}]",
+            k + 1,
+            pose_text(&m, &a.pose),
+            a.residual,
+            if a.certified { ", certified" } else { "" },
+            if a.current {
+                "; the assembly continued from the reference"
+            } else {
+                ""
+            }
+        );
+    }
+    if !assemblies.is_empty() {
+        let _ = writeln!(
+            out,
+            "analyse one with: kinsyn analyze {} --pose X,Y,Z,RX,RY,RZ",
+            path.display()
+        );
+    }
+    Ok(out)
+}

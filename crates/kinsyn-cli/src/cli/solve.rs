@@ -1,0 +1,401 @@
+//! `kinsyn solve`: every isolated solution of a polynomial system in a Bertini input file, by
+//! homotopy continuation, certified.
+
+use super::{CliError, json, terminal};
+use kinsyn::certify::Reality;
+use kinsyn::homotopy::{self, RunsReport, Solution, SolveReport, SolveSettings, StartSystem};
+use kinsyn::poly::{C64, System, bertini};
+use serde::Serialize;
+use std::fmt::Write as _;
+use std::path::Path;
+
+/// Which solutions the text lists.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum Show {
+    /// Every finite solution.
+    All,
+    /// The real non-singular ones.
+    Real,
+    /// None: the counts only.
+    None,
+}
+
+/// How `kinsyn solve` runs.
+#[derive(Debug, Clone)]
+pub struct SolveOptions {
+    /// The start system.
+    pub start: StartSystem,
+    /// The first seed.
+    pub seed: u64,
+    /// Independent runs (seeds `seed, seed + 1, …`).
+    pub runs: usize,
+    /// Worker threads (`None`: one per core).
+    pub threads: Option<usize>,
+    /// Certify the regular solutions.
+    pub certify: bool,
+    /// Which solutions the text lists.
+    pub show: Show,
+}
+
+/// The most independent runs `--runs` takes.
+pub const MAX_RUNS: usize = 64;
+
+/// The most threads `--threads` takes.
+pub const MAX_THREADS: usize = 256;
+
+/// Reads a Bertini input file into a system; errors name the file and the line.
+pub fn read_system(path: &Path) -> Result<System, CliError> {
+    const NOT_BERTINI: &str = "not a Bertini input file";
+    let text = super::files::read_text(path, NOT_BERTINI)?;
+    if !text.lines().any(|l| {
+        l.split('%')
+            .next()
+            .is_some_and(|code| code.trim_start().starts_with("INPUT"))
+    }) {
+        return Err(CliError::Input(format!(
+            "{} is {NOT_BERTINI} (no INPUT section)",
+            path.display()
+        )));
+    }
+    bertini::parse(&text)
+        .map(|input| input.system)
+        .map_err(|e| CliError::Input(format!("{}: {e}", path.display())))
+}
+
+/// Runs `work` on a pool of `threads` workers (all cores when `None`).
+pub fn with_threads<T: Send>(
+    threads: Option<usize>,
+    work: impl FnOnce() -> T + Send,
+) -> Result<T, CliError> {
+    match threads {
+        None => Ok(work()),
+        Some(n) if n == 0 || n > MAX_THREADS => Err(CliError::Input(format!(
+            "--threads {n}: give 1 to {MAX_THREADS}"
+        ))),
+        Some(n) => rayon::ThreadPoolBuilder::new()
+            .num_threads(n)
+            .build()
+            .map(|pool| pool.install(work))
+            .map_err(|e| CliError::Internal(format!("cannot start {n} threads: {e}"))),
+    }
+}
+
+/// The number of paths of the chosen start system.
+fn path_count(system: &System, start: StartSystem) -> u128 {
+    match start {
+        StartSystem::TotalDegree => system.bezout_number(),
+        StartSystem::MultiHomogeneous => system.multihomogeneous_bezout(),
+    }
+}
+
+/// Solves with a progress bar over the paths (shown only on a terminal).
+pub fn solve_with_bar(
+    system: &System,
+    settings: &SolveSettings,
+    runs: usize,
+) -> Result<RunsReport, CliError> {
+    let paths = usize::try_from(path_count(system, settings.start)).unwrap_or(usize::MAX);
+    let bar = terminal::progress(paths.saturating_mul(runs), "paths", "solve");
+    let mut reports = Vec::with_capacity(runs);
+    for k in 0..runs as u64 {
+        let s = SolveSettings {
+            seed: settings.seed.wrapping_add(k),
+            ..settings.clone()
+        };
+        let report = homotopy::solve_with_progress(system, &s, &|| bar.inc(1))
+            .map_err(|e| CliError::Input(e.to_string()))?;
+        reports.push(report);
+    }
+    bar.finish_and_clear();
+    Ok(homotopy::combine_runs(reports))
+}
+
+/// `kinsyn solve FILE`.
+pub fn solve(path: &Path, options: &SolveOptions, as_json: bool) -> Result<String, CliError> {
+    if options.runs == 0 || options.runs > MAX_RUNS {
+        return Err(CliError::Input(format!(
+            "--runs {}: give 1 to {MAX_RUNS}",
+            options.runs
+        )));
+    }
+    let system = read_system(path)?;
+    if options.start == StartSystem::MultiHomogeneous && system.groups().len() < 2 {
+        super::terminal::warning(&format!(
+            "{}: one variable group: the multi-homogeneous start system is the total-degree count",
+            path.display()
+        ));
+    }
+    let settings = SolveSettings {
+        seed: options.seed,
+        start: options.start,
+        certify: options.certify,
+        ..SolveSettings::default()
+    };
+    let runs = with_threads(options.threads, || {
+        solve_with_bar(&system, &settings, options.runs)
+    })??;
+    let threads = options.threads.unwrap_or_else(rayon::current_num_threads);
+    if as_json {
+        Ok(json(&SolveJson::new(
+            path, &system, options, threads, &runs,
+        )))
+    } else {
+        Ok(text(path, &system, options, threads, &runs))
+    }
+}
+
+/// A complex number as text: `1.2345678901` or `1.2345678901 - 0.5000000000i`.
+pub fn complex_text(c: C64) -> String {
+    if c.im == 0.0 {
+        format!("{:.10}", c.re)
+    } else {
+        format!(
+            "{:.10} {} {:.10}i",
+            c.re,
+            if c.im < 0.0 { '-' } else { '+' },
+            c.im.abs()
+        )
+    }
+}
+
+fn reality(s: &Solution) -> &'static str {
+    match s.certificate.as_ref().map(|c| c.real) {
+        Some(Reality::CertifiedReal) => "real",
+        Some(Reality::CertifiedNonReal) => "non-real",
+        _ if s.real => "real (not proven)",
+        _ => "complex (not proven)",
+    }
+}
+
+/// The certificate counts in one line.
+pub fn certificate_line(report: &SolveReport) -> String {
+    let regular = report.nonsingular();
+    let non_real = report
+        .solutions
+        .iter()
+        .filter(|s| {
+            s.is_certified()
+                && s.certificate
+                    .as_ref()
+                    .is_some_and(|c| c.real == Reality::CertifiedNonReal)
+        })
+        .count();
+    format!(
+        "certified (Krawczyk, interval arithmetic): {} of {regular} non-singular solutions unique and distinct, {} proven real, {non_real} proven non-real",
+        report.certified(),
+        report.certified_real()
+    )
+}
+
+fn text(
+    path: &Path,
+    system: &System,
+    options: &SolveOptions,
+    threads: usize,
+    runs: &RunsReport,
+) -> String {
+    let report = &runs.runs[0];
+    let mut out = String::new();
+    let _ = writeln!(
+        out,
+        "{}: {} equations in {} variables ({})",
+        path.display(),
+        system.len(),
+        system.nvars(),
+        system.variables().join(", ")
+    );
+    let _ = writeln!(
+        out,
+        "start system: {}, {} paths (Bézout number {}, multi-homogeneous {} for {} variable group{}), seed {}",
+        match options.start {
+            StartSystem::TotalDegree => "total degree",
+            StartSystem::MultiHomogeneous => "multi-homogeneous",
+        },
+        report.paths(),
+        system.bezout_number(),
+        system.multihomogeneous_bezout(),
+        system.groups().len(),
+        if system.groups().len() == 1 { "" } else { "s" },
+        options.seed
+    );
+    let _ = writeln!(out, "{}", report.summary());
+    if options.certify {
+        let _ = writeln!(out, "{}", certificate_line(report));
+    }
+    if runs.runs.len() > 1 {
+        let _ = writeln!(
+            out,
+            "runs: {} independent runs (seeds {}–{}) found {} distinct non-singular solutions; {} of {} runs found all of them",
+            runs.runs.len(),
+            options.seed,
+            options.seed.wrapping_add(runs.runs.len() as u64 - 1),
+            runs.union.len(),
+            runs.complete_count(),
+            runs.runs.len()
+        );
+    }
+    if report.retracked > 0 {
+        let _ = writeln!(
+            out,
+            "re-tracked: {} paths (coinciding endpoints or failures)",
+            report.retracked
+        );
+    }
+    let _ = writeln!(
+        out,
+        "time: {:.3} s on {threads} thread{}",
+        report.seconds,
+        if threads == 1 { "" } else { "s" }
+    );
+    let listed: Vec<&Solution> = match options.show {
+        Show::None => Vec::new(),
+        Show::Real => report
+            .solutions
+            .iter()
+            .filter(|s| s.regular && s.real)
+            .collect(),
+        Show::All => report.solutions.iter().collect(),
+    };
+    if !listed.is_empty() {
+        let _ = writeln!(
+            out,
+            "{} solutions ({}):",
+            if options.show == Show::Real {
+                "real"
+            } else {
+                "finite"
+            },
+            listed.len()
+        );
+    }
+    for (k, s) in listed.iter().enumerate() {
+        let coordinates: Vec<String> = system
+            .variables()
+            .iter()
+            .zip(&s.x)
+            .map(|(n, c)| format!("{n} = {}", complex_text(*c)))
+            .collect();
+        let kind = if s.regular {
+            reality(s).to_string()
+        } else {
+            format!("singular, multiplicity {}", s.multiplicity)
+        };
+        let _ = writeln!(
+            out,
+            "  {:>3}  {}  [{kind}; residual {:.1e}]",
+            k + 1,
+            coordinates.join(", "),
+            s.residual
+        );
+    }
+    out
+}
+
+/// `kinsyn solve --json`.
+#[derive(Serialize)]
+struct SolveJson {
+    file: String,
+    variables: Vec<String>,
+    equations: usize,
+    bezout_number: String,
+    multihomogeneous_bezout_number: String,
+    start: StartSystem,
+    seed: u64,
+    threads: usize,
+    summary: String,
+    paths: usize,
+    nonsingular: usize,
+    real: usize,
+    singular: usize,
+    at_infinity: usize,
+    failed: usize,
+    certified: Option<usize>,
+    certified_real: Option<usize>,
+    retracked: usize,
+    seconds: f64,
+    solutions: Vec<SolutionJson>,
+    runs: Vec<RunJson>,
+    complete_fraction: f64,
+}
+
+#[derive(Serialize)]
+struct SolutionJson {
+    /// Coordinates as `[re, im]` pairs, in the variables' order.
+    x: Vec<[f64; 2]>,
+    regular: bool,
+    real: bool,
+    reality: &'static str,
+    multiplicity: usize,
+    residual: f64,
+    certified: bool,
+    certificate_radius: Option<f64>,
+    paths: Vec<usize>,
+}
+
+#[derive(Serialize)]
+struct RunJson {
+    seed: u64,
+    nonsingular: usize,
+    complete: bool,
+    seconds: f64,
+}
+
+impl SolveJson {
+    fn new(
+        path: &Path,
+        system: &System,
+        options: &SolveOptions,
+        threads: usize,
+        runs: &RunsReport,
+    ) -> Self {
+        let r = &runs.runs[0];
+        let solution = |s: &Solution| SolutionJson {
+            x: s.x.iter().map(|c| [c.re, c.im]).collect(),
+            regular: s.regular,
+            real: s.real,
+            reality: if s.regular { reality(s) } else { "singular" },
+            multiplicity: s.multiplicity,
+            residual: s.residual,
+            certified: s.is_certified(),
+            certificate_radius: s
+                .certificate
+                .as_ref()
+                .and_then(kinsyn::certify::Certificate::radius),
+            paths: s.paths.clone(),
+        };
+        Self {
+            file: path.display().to_string(),
+            variables: system.variables().to_vec(),
+            equations: system.len(),
+            bezout_number: system.bezout_number().to_string(),
+            multihomogeneous_bezout_number: system.multihomogeneous_bezout().to_string(),
+            start: options.start,
+            seed: options.seed,
+            threads,
+            summary: r.summary(),
+            paths: r.paths(),
+            nonsingular: r.nonsingular(),
+            real: r.real(),
+            singular: r.singular(),
+            at_infinity: r.at_infinity(),
+            failed: r.failed(),
+            certified: options.certify.then(|| r.certified()),
+            certified_real: options.certify.then(|| r.certified_real()),
+            retracked: r.retracked,
+            seconds: r.seconds,
+            solutions: r.solutions.iter().map(solution).collect(),
+            runs: runs
+                .runs
+                .iter()
+                .zip(&runs.complete)
+                .map(|(run, complete)| RunJson {
+                    seed: run.seed,
+                    nonsingular: run.nonsingular(),
+                    complete: *complete,
+                    seconds: run.seconds,
+                })
+                .collect(),
+            complete_fraction: runs.complete_fraction(),
+        }
+    }
+}
