@@ -52,8 +52,8 @@ fn univariate_against_companion_eigenvalues() {
     ];
     let x = Poly::variable(1, 0);
     let mut p = x.pow(5);
-    for (k, c) in coefficients.iter().enumerate() {
-        p = p + x.pow(k as u32).scale(*c);
+    for (k, c) in (0u32..).zip(&coefficients) {
+        p = p + x.pow(k).scale(*c);
     }
     let report = solve(
         &System::new(names(1), vec![p]).unwrap(),
@@ -155,7 +155,7 @@ fn monodromy_fills_a_generic_family_from_one_solution() {
     let family = quadrics_family();
     let x: Vec<C64> = vec![C64::new(0.3, -0.2), C64::new(-1.1, 0.4), C64::new(0.7, 0.9)];
     let a: Vec<C64> = (0..9)
-        .map(|k| C64::new((k as f64 * 0.77).sin(), (k as f64 * 1.3).cos()))
+        .map(|k| C64::new((f64::from(k) * 0.77).sin(), (f64::from(k) * 1.3).cos()))
         .collect();
     let b: Vec<C64> = (0..3)
         .map(|i| -(x[i] * x[i] + (0..3).map(|j| a[3 * i + j] * x[j]).sum::<C64>()))
@@ -194,10 +194,10 @@ fn monodromy_fills_a_generic_family_from_one_solution() {
 
     // Parameter homotopy: all 8 followed to a real member equal its total-degree solutions.
     let q: Vec<C64> = (0..12)
-        .map(|k| C64::new(((k * k) as f64 * 0.31).cos() * 2.0, 0.0))
+        .map(|k| C64::new((f64::from(k * k) * 0.31).cos() * 2.0, 0.0))
         .collect();
     let moved =
-        kinsyn::homotopy::track_parameters(&family, &p, &q, &report.solutions, Default::default())
+        kinsyn::homotopy::track_parameters(&family, &p, &q, &report.solutions, kinsyn::homotopy::TrackerSettings::default())
             .unwrap();
     let direct = solve(&family.at(&q).unwrap(), &SolveSettings::default()).unwrap();
     assert_eq!(direct.nonsingular(), 8);

@@ -210,7 +210,7 @@ pub(super) enum Command {
         /// A Bertini input file, e.g. examples/systems/cyclic5.bertini.
         file: PathBuf,
         /// The start system: total-degree (Bézout's number of paths) or multi-homogeneous
-        /// (products of linear forms per variable_group: fewer paths when the equations have
+        /// (products of linear forms per `variable_group`: fewer paths when the equations have
         /// low degree in each group).
         #[arg(long, value_enum, default_value = "total-degree")]
         start: StartArg,
