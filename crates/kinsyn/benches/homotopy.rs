@@ -17,17 +17,31 @@ use rand_chacha::ChaCha8Rng;
 /// random pose) in Study parameters.
 fn gough_stewart_system(seed: u64) -> System {
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
-    let mut v = |s: f64| Vector3::new(rng.random_range(-1.0..1.0), rng.random_range(-1.0..1.0), rng.random_range(-1.0..1.0)) * s;
+    let mut v = |s: f64| {
+        Vector3::new(
+            rng.random_range(-1.0..1.0),
+            rng.random_range(-1.0..1.0),
+            rng.random_range(-1.0..1.0),
+        ) * s
+    };
     let base: [Vector3<f64>; 6] = std::array::from_fn(|_| v(1.0));
     let platform: [Vector3<f64>; 6] = std::array::from_fn(|_| v(0.6));
-    let pose = spatial::exp(&Twist { w: v(0.5), v: v(0.3) + Vector3::z() });
-    let lengths = std::array::from_fn(|i| (pose.transform_point(&Point3::from(platform[i])).coords - base[i]).norm());
+    let pose = spatial::exp(&Twist {
+        w: v(0.5),
+        v: v(0.3) + Vector3::z(),
+    });
+    let lengths = std::array::from_fn(|i| {
+        (pose.transform_point(&Point3::from(platform[i])).coords - base[i]).norm()
+    });
     gough_stewart(&base, &platform, &lengths, &Chart::random_linear(5))
 }
 
 fn bench(c: &mut Criterion) {
     let phc_path = phc::find_phc();
-    let single = rayon::ThreadPoolBuilder::new().num_threads(1).build().expect("a thread");
+    let single = rayon::ThreadPoolBuilder::new()
+        .num_threads(1)
+        .build()
+        .expect("a thread");
     let mut group = c.benchmark_group("homotopy");
     group.sample_size(10);
     for (name, system, roots) in [
@@ -37,16 +51,36 @@ fn bench(c: &mut Criterion) {
     ] {
         let check = |found: usize| assert_eq!(found, roots, "{name}: every root");
         group.bench_function(format!("{name}/kinsyn"), |b| {
-            b.iter(|| check(solve(&system, &SolveSettings::default()).expect("square").nonsingular()));
+            b.iter(|| {
+                check(
+                    solve(&system, &SolveSettings::default())
+                        .expect("square")
+                        .nonsingular(),
+                )
+            });
         });
         group.bench_function(format!("{name}/kinsyn-1-thread"), |b| {
-            b.iter(|| single.install(|| check(solve(&system, &SolveSettings::default()).expect("square").nonsingular())));
+            b.iter(|| {
+                single.install(|| {
+                    check(
+                        solve(&system, &SolveSettings::default())
+                            .expect("square")
+                            .nonsingular(),
+                    )
+                })
+            });
         });
         if let Some(path) = &phc_path {
             group.bench_function(format!("{name}/phc-b"), |b| {
                 b.iter(|| {
                     let out = phc::solve(&system, path).expect("phc runs");
-                    check(out.output.solutions.iter().filter(|s| s.is_finite() && s.is_regular()).count());
+                    check(
+                        out.output
+                            .solutions
+                            .iter()
+                            .filter(|s| s.is_finite() && s.is_regular())
+                            .count(),
+                    );
                 });
             });
         }

@@ -196,9 +196,14 @@ fn monodromy_fills_a_generic_family_from_one_solution() {
     let q: Vec<C64> = (0..12)
         .map(|k| C64::new((f64::from(k * k) * 0.31).cos() * 2.0, 0.0))
         .collect();
-    let moved =
-        kinsyn::homotopy::track_parameters(&family, &p, &q, &report.solutions, kinsyn::homotopy::TrackerSettings::default())
-            .unwrap();
+    let moved = kinsyn::homotopy::track_parameters(
+        &family,
+        &p,
+        &q,
+        &report.solutions,
+        kinsyn::homotopy::TrackerSettings::default(),
+    )
+    .unwrap();
     let direct = solve(&family.at(&q).unwrap(), &SolveSettings::default()).unwrap();
     assert_eq!(direct.nonsingular(), 8);
     for m in &moved {

@@ -269,7 +269,9 @@ fn three_rps_has_16_assemblies() {
     // 3-RPS parallel manipulator from an algebraic viewpoint*, Mech. Mach. Theory 75, 2014).
     let text = std::fs::read_to_string("../../mechanisms/3-rps.json").unwrap();
     let m = Manipulator::from_json(&text).unwrap();
-    let ps = m.position_system(&[(0, 0.0), (1, 0.0), (2, 0.0)], &Chart::random_linear(2026)).unwrap();
+    let ps = m
+        .position_system(&[(0, 0.0), (1, 0.0), (2, 0.0)], &Chart::random_linear(2026))
+        .unwrap();
     let report = solve(ps.system(), &SolveSettings::default()).unwrap();
     assert_eq!(report.nonsingular(), 16, "{}", report.summary());
     assert_eq!(report.certified(), 16);
@@ -278,7 +280,11 @@ fn three_rps_has_16_assemblies() {
     for s in report.solutions.iter().filter(|s| !s.regular) {
         let delta: C64 = s.x[..4].iter().map(|c| c * c).sum();
         let size: f64 = s.x[..4].iter().map(|c| c.norm_sqr()).sum();
-        assert!(delta.norm() < 1e-6 * size, "a singular endpoint off the null cone: {:?}", s.x);
+        assert!(
+            delta.norm() < 1e-6 * size,
+            "a singular endpoint off the null cone: {:?}",
+            s.x
+        );
     }
     // The reference pose is a real assembly; every real one satisfies each leg's distance and
     // plane (checked on the pose by the leg geometry, not by the polynomials).
@@ -286,12 +292,20 @@ fn three_rps_has_16_assemblies() {
         .solutions
         .iter()
         .filter(|s| s.regular && s.real)
-        .map(|s| ps.displacement(&s.x.iter().map(|c| c.re).collect::<Vec<_>>()).unwrap())
+        .map(|s| {
+            ps.displacement(&s.x.iter().map(|c| c.re).collect::<Vec<_>>())
+                .unwrap()
+        })
         .collect();
-    assert!(poses.iter().any(|g| (g.to_homogeneous() - m.platform_frame(&m.reference()).to_homogeneous()).amax() < 1e-9));
+    assert!(poses.iter().any(|g| {
+        (g.to_homogeneous() - m.platform_frame(&m.reference()).to_homogeneous()).amax() < 1e-9
+    }));
     for g in &poses {
         for r in ps.leg_residuals(g) {
-            assert!(r.distance.abs() < 1e-9 && r.plane.is_some_and(|p| p.abs() < 1e-9), "{r:?}");
+            assert!(
+                r.distance.abs() < 1e-9 && r.plane.is_some_and(|p| p.abs() < 1e-9),
+                "{r:?}"
+            );
         }
     }
 }

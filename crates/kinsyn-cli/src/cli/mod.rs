@@ -105,7 +105,10 @@ fn usage_error(e: &clap::Error) -> String {
     }
 }
 
-#[allow(clippy::too_many_lines, reason = "a dispatcher: one arm per subcommand, each only naming its options")]
+#[allow(
+    clippy::too_many_lines,
+    reason = "a dispatcher: one arm per subcommand, each only naming its options"
+)]
 fn execute(command: Command) -> Result<String, CliError> {
     match command {
         Command::Notation { chain, json } => notation::notation(&chain, json),

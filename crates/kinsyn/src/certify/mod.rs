@@ -409,53 +409,37 @@ trait BoxScalar: Scalar {
     fn join(self, other: Self) -> Self;
 }
 
-impl BoxScalar for Interval {
-    fn from_point(z: C64) -> Self {
-        Interval::point(z.re)
-    }
-    fn ball(r: f64) -> Self {
-        Interval::symmetric(r)
-    }
-    fn magnitude(self) -> f64 {
-        self.mag()
-    }
-    fn finite(self) -> bool {
-        self.is_finite()
-    }
-    fn inside(self, outer: Self) -> bool {
-        self.interior_of(outer)
-    }
-    fn meet(self, other: Self) -> Option<Self> {
-        self.intersection(other)
-    }
-    fn join(self, other: Self) -> Self {
-        self.hull(other)
-    }
+/// The two box scalars share their method names: one implementation, spelled once.
+macro_rules! box_scalar {
+    ($t:ty, $point:expr) => {
+        impl BoxScalar for $t {
+            fn from_point(z: C64) -> Self {
+                $point(z)
+            }
+            fn ball(r: f64) -> Self {
+                <$t>::symmetric(r)
+            }
+            fn magnitude(self) -> f64 {
+                self.mag()
+            }
+            fn finite(self) -> bool {
+                self.is_finite()
+            }
+            fn inside(self, outer: Self) -> bool {
+                self.interior_of(outer)
+            }
+            fn meet(self, other: Self) -> Option<Self> {
+                self.intersection(other)
+            }
+            fn join(self, other: Self) -> Self {
+                self.hull(other)
+            }
+        }
+    };
 }
 
-impl BoxScalar for ComplexInterval {
-    fn from_point(z: C64) -> Self {
-        ComplexInterval::point(z)
-    }
-    fn ball(r: f64) -> Self {
-        ComplexInterval::symmetric(r)
-    }
-    fn magnitude(self) -> f64 {
-        self.mag()
-    }
-    fn finite(self) -> bool {
-        self.is_finite()
-    }
-    fn inside(self, outer: Self) -> bool {
-        self.interior_of(outer)
-    }
-    fn meet(self, other: Self) -> Option<Self> {
-        self.intersection(other)
-    }
-    fn join(self, other: Self) -> Self {
-        self.hull(other)
-    }
-}
+box_scalar!(Interval, |z: C64| Interval::point(z.re));
+box_scalar!(ComplexInterval, ComplexInterval::point);
 
 /// The Krawczyk operator of one centre and one `Y` over scalars `S`, with its scratch space.
 struct Krawczyk<'a, S: BoxScalar> {

@@ -518,7 +518,8 @@ fn track_path(
     }
 }
 
-fn close(a: &[C64], b: &[C64], tolerance: f64) -> bool {
+/// `|a − b| / (1 + |a|)`: how far apart two points are, relative to the first one's size.
+pub(crate) fn relative_distance(a: &[C64], b: &[C64]) -> f64 {
     let d: f64 = a
         .iter()
         .zip(b)
@@ -530,7 +531,11 @@ fn close(a: &[C64], b: &[C64], tolerance: f64) -> bool {
         .map(nalgebra::Complex::norm_sqr)
         .sum::<f64>()
         .sqrt();
-    d <= tolerance * (1.0 + size)
+    d / (1.0 + size)
+}
+
+fn close(a: &[C64], b: &[C64], tolerance: f64) -> bool {
+    relative_distance(a, b) <= tolerance
 }
 
 /// Paths to track again: failed ones, and regular endpoints reached by more than one path (a

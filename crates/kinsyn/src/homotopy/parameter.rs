@@ -288,21 +288,6 @@ pub struct MonodromyReport {
     pub paths: usize,
 }
 
-fn distance(a: &[C64], b: &[C64]) -> f64 {
-    let d: f64 = a
-        .iter()
-        .zip(b)
-        .map(|(p, q)| (p - q).norm_sqr())
-        .sum::<f64>()
-        .sqrt();
-    let size: f64 = a
-        .iter()
-        .map(nalgebra::Complex::norm_sqr)
-        .sum::<f64>()
-        .sqrt();
-    d / (1.0 + size)
-}
-
 /// Fills the solutions of `F(x; base) = 0` from one solution `start` by monodromy: each loop
 /// moves the parameters `base → p1 → p2 → base` through two random complex points and follows
 /// every known solution; endpoints not yet known are new solutions. For generic `base`, the
@@ -372,7 +357,7 @@ pub fn monodromy_solve(
         let before = known.len();
         for e in ends.into_iter().flatten() {
             if family.residual(&e, base) <= 1e-8 * size * size
-                && known.iter().all(|k| distance(k, &e) > 1e-6)
+                && known.iter().all(|k| super::relative_distance(k, &e) > 1e-6)
             {
                 known.push(e);
             }

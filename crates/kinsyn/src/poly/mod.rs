@@ -32,7 +32,6 @@ mod program;
 pub use program::{Program, Scalar, Workspace};
 
 use std::collections::BTreeMap;
-use std::fmt::Write as _;
 use std::ops::{Add, Mul, Neg, Sub};
 
 /// A complex number in double precision: the coefficients and values of polynomials.
@@ -288,56 +287,9 @@ impl Poly {
     /// # Panics
     /// If fewer names than variables are given.
     #[must_use]
-    #[allow(
-        clippy::float_cmp,
-        reason = "a coefficient of exactly ±1 is left out of the text"
-    )]
     pub fn display_with(&self, names: &[String]) -> String {
         assert!(names.len() >= self.nvars, "a name per variable");
-        if self.terms.is_empty() {
-            return "0".into();
-        }
-        let mut out = String::new();
-        for (k, (e, c)) in self.terms.iter().rev().enumerate() {
-            let monomial: Vec<String> = e
-                .iter()
-                .enumerate()
-                .filter(|(_, k)| **k > 0)
-                .map(|(i, k)| {
-                    if *k == 1 {
-                        names[i].clone()
-                    } else {
-                        format!("{}^{k}", names[i])
-                    }
-                })
-                .collect();
-            let (sign, coefficient) = if c.im == 0.0 {
-                let s = if c.re < 0.0 { "-" } else { "+" };
-                (
-                    s,
-                    if c.re.abs() == 1.0 && !monomial.is_empty() {
-                        String::new()
-                    } else {
-                        format!("{:?}", c.re.abs())
-                    },
-                )
-            } else {
-                ("+", format!("({:?}{:+?}*I)", c.re, c.im))
-            };
-            if k == 0 {
-                if sign == "-" {
-                    out.push('-');
-                }
-            } else {
-                let _ = write!(out, " {sign} ");
-            }
-            out.push_str(&coefficient);
-            if !coefficient.is_empty() && !monomial.is_empty() {
-                out.push('*');
-            }
-            out.push_str(&monomial.join("*"));
-        }
-        out
+        bertini::format_poly(self, names, "I")
     }
 }
 
