@@ -43,8 +43,8 @@ pub const MAX_RUNS: usize = 64;
 /// The most threads `--threads` takes.
 pub const MAX_THREADS: usize = 256;
 
-/// Reads a Bertini input file into a system; errors name the file and the line.
-pub fn read_system(path: &Path) -> Result<System, CliError> {
+/// Reads a Bertini input file; errors name the file and the line.
+pub fn read_input(path: &Path) -> Result<bertini::BertiniInput, CliError> {
     const NOT_BERTINI: &str = "not a Bertini input file";
     let text = super::files::read_text(path, NOT_BERTINI)?;
     if !text.lines().any(|l| {
@@ -57,9 +57,142 @@ pub fn read_system(path: &Path) -> Result<System, CliError> {
             path.display()
         )));
     }
-    bertini::parse(&text)
-        .map(|input| input.system)
-        .map_err(|e| CliError::Input(format!("{}: {e}", path.display())))
+    bertini::parse(&text).map_err(|e| CliError::Input(format!("{}: {e}", path.display())))
+}
+
+/// `n word` or `n words`.
+fn count(n: usize, word: &str) -> String {
+    format!("{n} {word}{}", if n == 1 { "" } else { "s" })
+}
+
+/// The number of paths of a total-degree start system: Bézout's number, the product of the
+/// degrees, saturating at `u128::MAX` (the comparison with [`homotopy::MAX_PATHS`] stays exact).
+#[must_use]
+pub fn total_degree_paths(system: &System) -> u128 {
+    system
+        .degrees()
+        .iter()
+        .fold(1, |n, d| n.saturating_mul(u128::from(*d)))
+}
+
+/// The number of paths of a multi-homogeneous start system: the coefficient of
+/// `Π_j α_j^{n_j}` in `Π_i Σ_j d_ij α_j` (`n_j` the size of variable group `j`, `d_ij` the
+/// degree of equation `i` in it), saturating at `u128::MAX`. Zero unless the system is square.
+#[must_use]
+pub fn multihomogeneous_paths(system: &System) -> u128 {
+    if !system.is_square() {
+        return 0;
+    }
+    let sizes: Vec<usize> = system.groups().iter().map(Vec::len).collect();
+    // The weight of each way to give the equations so far to groups (group j at most n_j).
+    let mut weights: std::collections::BTreeMap<Vec<usize>, u128> =
+        std::iter::once((vec![0; sizes.len()], 1)).collect();
+    for row in system.multihomogeneous_degrees() {
+        let mut next = std::collections::BTreeMap::new();
+        for (used, w) in &weights {
+            for (j, d) in row.iter().enumerate() {
+                if *d > 0 && used[j] < sizes[j] {
+                    let mut u = used.clone();
+                    u[j] += 1;
+                    let e: &mut u128 = next.entry(u).or_insert(0);
+                    *e = e.saturating_add(w.saturating_mul(u128::from(*d)));
+                }
+            }
+        }
+        weights = next;
+    }
+    weights.get(&sizes).copied().unwrap_or(0)
+}
+
+/// A path count as text: the number, or "more than 10^38" when it saturated (at `u128::MAX`).
+fn paths_text(n: u128) -> String {
+    if n == u128::MAX {
+        "more than 10^38".into()
+    } else {
+        n.to_string()
+    }
+}
+
+/// Refuses, naming the file and the equation, a system homotopy continuation cannot solve:
+/// not square, an equation that is a constant (no solution, or no isolated one if zero), a
+/// coefficient that overflowed double precision, or more paths than [`homotopy::MAX_PATHS`].
+fn check_solvable(
+    path: &Path,
+    input: &bertini::BertiniInput,
+    start: StartSystem,
+) -> Result<(), CliError> {
+    let system = &input.system;
+    let file = path.display();
+    let (equations, variables) = (system.len(), system.nvars());
+    if equations != variables {
+        return Err(CliError::Input(format!(
+            "{file}: {} in {}: {} equations than variables; kinsyn solve needs a square system (as many equations as variables)",
+            count(equations, "equation"),
+            count(variables, "variable"),
+            if equations > variables {
+                "more"
+            } else {
+                "fewer"
+            }
+        )));
+    }
+    let name = |i: usize| {
+        input
+            .functions
+            .get(i)
+            .map_or_else(|| (i + 1).to_string(), Clone::clone)
+    };
+    for (i, p) in system.equations().iter().enumerate() {
+        if p.total_degree() == 0 {
+            let value = p.terms().map(|(_, c)| c).sum::<C64>();
+            return Err(CliError::Input(if value == C64::new(0.0, 0.0) {
+                format!(
+                    "{file}: equation {} is identically zero: the solutions are not isolated",
+                    name(i)
+                )
+            } else {
+                format!(
+                    "{file}: equation {} is the non-zero constant {}: the system has no solution",
+                    name(i),
+                    if value.im == 0.0 {
+                        value.re.to_string()
+                    } else {
+                        complex_text(value)
+                    }
+                )
+            }));
+        }
+        if p.terms()
+            .any(|(_, c)| !(c.re.is_finite() && c.im.is_finite()))
+        {
+            return Err(CliError::Input(format!(
+                "{file}: equation {} has a coefficient beyond the range of double precision (its expansion overflows)",
+                name(i)
+            )));
+        }
+    }
+    let paths = path_count(system, start);
+    if paths > homotopy::MAX_PATHS {
+        let hint = match start {
+            StartSystem::TotalDegree if multihomogeneous_paths(system) <= homotopy::MAX_PATHS => {
+                format!(
+                    "; --start multi-homogeneous needs {} for these variable groups",
+                    multihomogeneous_paths(system)
+                )
+            }
+            _ => String::new(),
+        };
+        return Err(CliError::Input(format!(
+            "{file}: the {} start system has {} paths; the limit is {} (2^20){hint}",
+            match start {
+                StartSystem::TotalDegree => "total-degree",
+                StartSystem::MultiHomogeneous => "multi-homogeneous",
+            },
+            paths_text(paths),
+            homotopy::MAX_PATHS
+        )));
+    }
+    Ok(())
 }
 
 /// Runs `work` on a pool of `threads` workers (all cores when `None`).
@@ -83,8 +216,8 @@ pub fn with_threads<T: Send>(
 /// The number of paths of the chosen start system.
 fn path_count(system: &System, start: StartSystem) -> u128 {
     match start {
-        StartSystem::TotalDegree => system.bezout_number(),
-        StartSystem::MultiHomogeneous => system.multihomogeneous_bezout(),
+        StartSystem::TotalDegree => total_degree_paths(system),
+        StartSystem::MultiHomogeneous => multihomogeneous_paths(system),
     }
 }
 
@@ -118,7 +251,9 @@ pub fn solve(path: &Path, options: &SolveOptions, as_json: bool) -> Result<Strin
             options.runs
         )));
     }
-    let system = read_system(path)?;
+    let input = read_input(path)?;
+    check_solvable(path, &input, options.start)?;
+    let system = input.system;
     if options.start == StartSystem::MultiHomogeneous && system.groups().len() < 2 {
         super::terminal::warning(&format!(
             "{}: one variable group: the multi-homogeneous start system is the total-degree count",
@@ -198,10 +333,10 @@ fn text(
     let mut out = String::new();
     let _ = writeln!(
         out,
-        "{}: {} equations in {} variables ({})",
+        "{}: {} in {} ({})",
         path.display(),
-        system.len(),
-        system.nvars(),
+        count(system.len(), "equation"),
+        count(system.nvars(), "variable"),
         system.variables().join(", ")
     );
     let _ = writeln!(
@@ -212,8 +347,8 @@ fn text(
             StartSystem::MultiHomogeneous => "multi-homogeneous",
         },
         report.paths(),
-        system.bezout_number(),
-        system.multihomogeneous_bezout(),
+        paths_text(total_degree_paths(system)),
+        paths_text(multihomogeneous_paths(system)),
         system.groups().len(),
         if system.groups().len() == 1 { "" } else { "s" },
         options.seed
@@ -367,8 +502,8 @@ impl SolveJson {
             file: path.display().to_string(),
             variables: system.variables().to_vec(),
             equations: system.len(),
-            bezout_number: system.bezout_number().to_string(),
-            multihomogeneous_bezout_number: system.multihomogeneous_bezout().to_string(),
+            bezout_number: paths_text(total_degree_paths(system)),
+            multihomogeneous_bezout_number: paths_text(multihomogeneous_paths(system)),
             start: options.start,
             seed: options.seed,
             threads,

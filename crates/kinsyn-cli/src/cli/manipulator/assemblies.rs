@@ -33,6 +33,10 @@ fn pose_text(m: &Manipulator, g: &Displacement) -> String {
 }
 
 /// `kinsyn analyze FILE [--inputs …] --all-assemblies`.
+#[expect(
+    clippy::too_many_lines,
+    reason = "one report: the solve, then the same facts as JSON or as text"
+)]
 pub fn all_assemblies(
     path: &Path,
     inputs_text: Option<&str>,
@@ -102,7 +106,7 @@ pub fn all_assemblies(
         .iter()
         .filter(|s| {
             let delta: kinsyn::poly::C64 = s.x[..4].iter().map(|c| c * c).sum();
-            let size: f64 = s.x[..4].iter().map(|c| c.norm_sqr()).sum();
+            let size: f64 = s.x[..4].iter().map(kinsyn::poly::C64::norm_sqr).sum();
             !s.regular && delta.norm() <= 1e-8 * size
         })
         .count();
