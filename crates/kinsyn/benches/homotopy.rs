@@ -1,7 +1,7 @@
-//! Homotopy continuation side by side with PHCpack (`cargo bench --bench homotopy`): the
+//! Homotopy continuation side by side with `PHCpack` (`cargo bench --bench homotopy`): the
 //! forward kinematics of a general Gough–Stewart platform (40 roots of 128 paths), Katsura-7
 //! (128 roots) and cyclic-5 (70 roots). kinsyn on all cores and on one, and `phc -b` (the
-//! blackbox solver of PHCpack, Debian package `phcpack`; skipped when absent) on the same
+//! blackbox solver of `PHCpack`, Debian package `phcpack`; skipped when absent) on the same
 //! systems. Every measured solve is checked to find every root.
 
 use criterion::{Criterion, criterion_group, criterion_main};
@@ -56,7 +56,7 @@ fn bench(c: &mut Criterion) {
                     solve(&system, &SolveSettings::default())
                         .expect("square")
                         .nonsingular(),
-                )
+                );
             });
         });
         group.bench_function(format!("{name}/kinsyn-1-thread"), |b| {
@@ -66,8 +66,8 @@ fn bench(c: &mut Criterion) {
                         solve(&system, &SolveSettings::default())
                             .expect("square")
                             .nonsingular(),
-                    )
-                })
+                    );
+                });
             });
         });
         if let Some(path) = &phc_path {

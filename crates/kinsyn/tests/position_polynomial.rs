@@ -1,5 +1,5 @@
 //! All assemblies by homotopy continuation, against published root counts and an independent
-//! solver (PHCpack, Debian package `phcpack`, run in the same test when `phc` is installed —
+//! solver (`PHCpack`, Debian package `phcpack`, run in the same test when `phc` is installed —
 //! `.ci/run` installs it).
 //!
 //! - A generic Gough–Stewart platform has 40 complex assemblies (M. Raghavan, *The Stewart
@@ -29,7 +29,7 @@ fn random_vector(rng: &mut ChaCha8Rng, scale: f64) -> Vector3<f64> {
 /// leg lengths of that pose.
 struct Platform {
     base: [Vector3<f64>; 6],
-    platform: [Vector3<f64>; 6],
+    moving: [Vector3<f64>; 6],
     pose: Displacement,
     lengths: [f64; 6],
 }
@@ -47,7 +47,7 @@ fn generic_platform(seed: u64) -> Platform {
     });
     Platform {
         base,
-        platform,
+        moving: platform,
         pose,
         lengths,
     }
@@ -69,7 +69,7 @@ fn real_poses(report: &SolveReport) -> Vec<Displacement> {
 #[test]
 fn generic_gough_stewart_has_40_assemblies_each_reproducing_the_leg_lengths() {
     let p = generic_platform(11);
-    let system = gough_stewart(&p.base, &p.platform, &p.lengths, &Chart::random_linear(5));
+    let system = gough_stewart(&p.base, &p.moving, &p.lengths, &Chart::random_linear(5));
     assert_eq!(system.bezout_number(), 128);
     let report = solve(&system, &SolveSettings::default()).unwrap();
     eprintln!(
@@ -93,7 +93,7 @@ fn generic_gough_stewart_has_40_assemblies_each_reproducing_the_leg_lengths() {
     // measured on the pose, not the polynomials' residuals).
     for g in &poses {
         for i in 0..6 {
-            let l = (g.transform_point(&Point3::from(p.platform[i])).coords - p.base[i]).norm();
+            let l = (g.transform_point(&Point3::from(p.moving[i])).coords - p.base[i]).norm();
             assert!(
                 (l - p.lengths[i]).abs() < 1e-9,
                 "leg {i}: {l} against {}",
@@ -116,7 +116,7 @@ fn every_root_in_every_run_and_seed_stable() {
     // HomotopyContinuation.jl issues #545, #574).
     for platform_seed in [11, 12] {
         let p = generic_platform(platform_seed);
-        let system = gough_stewart(&p.base, &p.platform, &p.lengths, &Chart::random_linear(5));
+        let system = gough_stewart(&p.base, &p.moving, &p.lengths, &Chart::random_linear(5));
         let runs = solve_runs(&system, &SolveSettings::default(), 8).unwrap();
         assert_eq!(runs.union.len(), 40);
         assert!(
@@ -133,7 +133,7 @@ fn unit_invariance_of_the_assembly_count() {
     let p = generic_platform(11);
     let k = 1000.0;
     let base = p.base.map(|v| v * k);
-    let platform = p.platform.map(|v| v * k);
+    let platform = p.moving.map(|v| v * k);
     let lengths = p.lengths.map(|l| l * k);
     let report = solve(
         &gough_stewart(&base, &platform, &lengths, &Chart::random_linear(5)),
@@ -143,7 +143,7 @@ fn unit_invariance_of_the_assembly_count() {
     assert_eq!(report.nonsingular(), 40, "{}", report.summary());
     assert_eq!(real_poses(&report).len(), {
         let metres = solve(
-            &gough_stewart(&p.base, &p.platform, &p.lengths, &Chart::random_linear(5)),
+            &gough_stewart(&p.base, &p.moving, &p.lengths, &Chart::random_linear(5)),
             &SolveSettings::default(),
         )
         .unwrap();
@@ -212,8 +212,8 @@ fn phc_or_skip() -> Option<std::path::PathBuf> {
     found
 }
 
-/// kinsyn and PHCpack agree: the same number of regular finite roots, the same number of real
-/// ones, and each of PHCpack's roots is one of kinsyn's.
+/// kinsyn and `PHCpack` agree: the same number of regular finite roots, the same number of real
+/// ones, and each of `PHCpack`'s roots is one of kinsyn's.
 fn agree_with_phc(system: &System, expected: usize) {
     let Some(phc) = phc_or_skip() else { return };
     let ours = solve(system, &SolveSettings::default()).unwrap();
@@ -257,7 +257,7 @@ fn phcpack_agrees_on_katsura_and_cyclic() {
 fn phcpack_agrees_on_gough_stewart() {
     let p = generic_platform(11);
     agree_with_phc(
-        &gough_stewart(&p.base, &p.platform, &p.lengths, &Chart::random_linear(5)),
+        &gough_stewart(&p.base, &p.moving, &p.lengths, &Chart::random_linear(5)),
         40,
     );
 }
@@ -279,7 +279,7 @@ fn three_rps_has_16_assemblies() {
     // displacement: the distance quadric is Δ(d² − l²) + 4(x·y)²/Δ, degenerate there).
     for s in report.solutions.iter().filter(|s| !s.regular) {
         let delta: C64 = s.x[..4].iter().map(|c| c * c).sum();
-        let size: f64 = s.x[..4].iter().map(|c| c.norm_sqr()).sum();
+        let size: f64 = s.x[..4].iter().map(nalgebra::Complex::norm_sqr).sum();
         assert!(
             delta.norm() < 1e-6 * size,
             "a singular endpoint off the null cone: {:?}",
@@ -308,4 +308,46 @@ fn three_rps_has_16_assemblies() {
             );
         }
     }
+}
+
+#[test]
+fn planar_platform_at_a_parallel_pose_keeps_its_40_in_every_run() {
+    // Planar base and platform in general position (J.-C. Faugère, D. Lazard, *Combinatorial
+    // classes of parallel manipulators*, Mech. Mach. Theory 30(6), 1995: the planar–planar
+    // class keeps the general 40), at the pose where the two planes are parallel. One root has
+    // coordinates near 160 and its path runs outwards like t^0.3 down to t ≈ 2e-7 before
+    // turning back: a divergence test by valuations alone declared it at infinity in 4 runs
+    // of 10. Every run must find all 40, and PHCpack the same number.
+    let b = [
+        [1.03, 0.05],
+        [0.46, 0.91],
+        [-0.55, 0.80],
+        [-0.97, -0.08],
+        [-0.42, -0.90],
+        [0.58, -0.83],
+    ];
+    let p = [
+        [0.41, 0.22],
+        [0.33, 0.38],
+        [-0.40, 0.27],
+        [-0.52, 0.10],
+        [-0.03, -0.55],
+        [0.15, -0.45],
+    ];
+    let base: [Vector3<f64>; 6] = std::array::from_fn(|i| Vector3::new(b[i][0], b[i][1], 0.0));
+    let platform: [Vector3<f64>; 6] = std::array::from_fn(|i| Vector3::new(p[i][0], p[i][1], 0.0));
+    let lengths = std::array::from_fn(|i| (platform[i] + Vector3::z() - base[i]).norm());
+    let system = gough_stewart(&base, &platform, &lengths, &Chart::random_linear(2026));
+    let runs = solve_runs(&system, &SolveSettings::default(), 10).unwrap();
+    assert_eq!(runs.union.len(), 40);
+    assert_eq!(
+        runs.complete_count(),
+        10,
+        "{:?}",
+        runs.runs
+            .iter()
+            .map(SolveReport::summary)
+            .collect::<Vec<_>>()
+    );
+    agree_with_phc(&system, 40);
 }

@@ -65,45 +65,6 @@ fn count(n: usize, word: &str) -> String {
     format!("{n} {word}{}", if n == 1 { "" } else { "s" })
 }
 
-/// The number of paths of a total-degree start system: Bézout's number, the product of the
-/// degrees, saturating at `u128::MAX` (the comparison with [`homotopy::MAX_PATHS`] stays exact).
-#[must_use]
-pub fn total_degree_paths(system: &System) -> u128 {
-    system
-        .degrees()
-        .iter()
-        .fold(1, |n, d| n.saturating_mul(u128::from(*d)))
-}
-
-/// The number of paths of a multi-homogeneous start system: the coefficient of
-/// `Π_j α_j^{n_j}` in `Π_i Σ_j d_ij α_j` (`n_j` the size of variable group `j`, `d_ij` the
-/// degree of equation `i` in it), saturating at `u128::MAX`. Zero unless the system is square.
-#[must_use]
-pub fn multihomogeneous_paths(system: &System) -> u128 {
-    if !system.is_square() {
-        return 0;
-    }
-    let sizes: Vec<usize> = system.groups().iter().map(Vec::len).collect();
-    // The weight of each way to give the equations so far to groups (group j at most n_j).
-    let mut weights: std::collections::BTreeMap<Vec<usize>, u128> =
-        std::iter::once((vec![0; sizes.len()], 1)).collect();
-    for row in system.multihomogeneous_degrees() {
-        let mut next = std::collections::BTreeMap::new();
-        for (used, w) in &weights {
-            for (j, d) in row.iter().enumerate() {
-                if *d > 0 && used[j] < sizes[j] {
-                    let mut u = used.clone();
-                    u[j] += 1;
-                    let e: &mut u128 = next.entry(u).or_insert(0);
-                    *e = e.saturating_add(w.saturating_mul(u128::from(*d)));
-                }
-            }
-        }
-        weights = next;
-    }
-    weights.get(&sizes).copied().unwrap_or(0)
-}
-
 /// A path count as text: the number, or "more than 10^38" when it saturated (at `u128::MAX`).
 fn paths_text(n: u128) -> String {
     if n == u128::MAX {
@@ -174,10 +135,10 @@ fn check_solvable(
     let paths = path_count(system, start);
     if paths > homotopy::MAX_PATHS {
         let hint = match start {
-            StartSystem::TotalDegree if multihomogeneous_paths(system) <= homotopy::MAX_PATHS => {
+            StartSystem::TotalDegree if system.multihomogeneous_bezout() <= homotopy::MAX_PATHS => {
                 format!(
                     "; --start multi-homogeneous needs {} for these variable groups",
-                    multihomogeneous_paths(system)
+                    system.multihomogeneous_bezout()
                 )
             }
             _ => String::new(),
@@ -216,8 +177,8 @@ pub fn with_threads<T: Send>(
 /// The number of paths of the chosen start system.
 fn path_count(system: &System, start: StartSystem) -> u128 {
     match start {
-        StartSystem::TotalDegree => total_degree_paths(system),
-        StartSystem::MultiHomogeneous => multihomogeneous_paths(system),
+        StartSystem::TotalDegree => system.bezout_number(),
+        StartSystem::MultiHomogeneous => system.multihomogeneous_bezout(),
     }
 }
 
@@ -347,8 +308,8 @@ fn text(
             StartSystem::MultiHomogeneous => "multi-homogeneous",
         },
         report.paths(),
-        paths_text(total_degree_paths(system)),
-        paths_text(multihomogeneous_paths(system)),
+        paths_text(system.bezout_number()),
+        paths_text(system.multihomogeneous_bezout()),
         system.groups().len(),
         if system.groups().len() == 1 { "" } else { "s" },
         options.seed
@@ -502,8 +463,8 @@ impl SolveJson {
             file: path.display().to_string(),
             variables: system.variables().to_vec(),
             equations: system.len(),
-            bezout_number: paths_text(total_degree_paths(system)),
-            multihomogeneous_bezout_number: paths_text(multihomogeneous_paths(system)),
+            bezout_number: paths_text(system.bezout_number()),
+            multihomogeneous_bezout_number: paths_text(system.multihomogeneous_bezout()),
             start: options.start,
             seed: options.seed,
             threads,

@@ -109,6 +109,18 @@ pub enum PathFailure {
     NotFinite,
 }
 
+/// A point whose homogenising coordinates fall below this fraction of their group (an affine
+/// point beyond 10⁵ in the patch's scale) while the valuations say the path diverges is
+/// declared at infinity.
+const FINITE_THRESHOLD: f64 = 1e-5;
+
+/// The smallest `t` the endgame's descent reaches before deciding by the valuations alone.
+const MIN_ENDGAME_T: f64 = 1e-12;
+
+/// The most steps of one quarter of the endgame's descent (`t` to `t/4`) before the path is
+/// decided by its valuations so far.
+const DESCENT_BUDGET: usize = 60;
+
 /// The limit of a path at `t = 0` found by the endgame.
 #[derive(Debug, Clone)]
 pub(crate) struct Endpoint {
@@ -327,33 +339,99 @@ impl<'a, H: Homotopy> Tracker<'a, H> {
     pub(crate) fn track_to_end(&mut self, z: &mut DVector<C64>) -> Result<Endpoint, PathFailure> {
         let te = self.settings.endgame_start;
         self.follow(z, Segment::Line(C64::from(1.0), C64::from(te)), 0.05)?;
-        let at_start = z.clone();
-        // A regular endpoint is reached by tracking on to t = 0: a few steps, and Newton
-        // converging at t = 0 on a well-conditioned Jacobian. Anything else takes the endgame.
-        if self
-            .follow_within(
-                z,
-                Segment::Line(C64::from(te), C64::from(0.0)),
-                0.25,
-                0.25,
-                40,
-            )
-            .is_ok()
-        {
-            let mut end = z.clone();
-            if self.correct(&mut end, C64::from(0.0), 1e-13, 4).is_some()
-                && self.well_conditioned(&end)
-            {
+        if let Some(end) = self.finish_regular(z, te) {
+            return Ok(end);
+        }
+        self.endgame(z, te)
+    }
+
+    /// A regular endpoint from `z` at `t`: tracking on to `t = 0` in a few steps, and Newton
+    /// converging at `t = 0` on a well-conditioned Jacobian; `None` (and `z` unchanged)
+    /// otherwise.
+    fn finish_regular(&mut self, z: &DVector<C64>, t: f64) -> Option<Endpoint> {
+        let mut w = z.clone();
+        let reached = self.follow_within(
+            &mut w,
+            Segment::Line(C64::from(t), C64::from(0.0)),
+            0.25,
+            0.25,
+            40,
+        );
+        (reached.is_ok()
+            && self.correct(&mut w, C64::from(0.0), 1e-13, 4).is_some()
+            && self.well_conditioned(&w))
+        .then_some(Endpoint {
+            z: w,
+            winding: 1,
+            converged: true,
+            diverges: false,
+        })
+    }
+
+    /// The endgame from `z` at `t = r` for a path that is not plainly regular. Along
+    /// `t = r/4, r/16, …` the valuation `v = d log m / d log t` of the homogenising coordinates
+    /// (`m`, [`Homotopy::infinity_measure`]) tells where the path goes: stable and positive with
+    /// `m` below [`FINITE_THRESHOLD`] (the point already beyond `1/FINITE_THRESHOLD` in the
+    /// patch's scale), or stable and positive all the way down to [`MIN_ENDGAME_T`], is a
+    /// diverging path (Bertini declares infinity by such a norm threshold); stable and zero is a
+    /// finite limit, regular (tracked on to 0) or singular (the Cauchy loops). A path can look
+    /// diverging for decades of `t` and still turn back to a finite root with large
+    /// coordinates, hence both conditions.
+    fn endgame(&mut self, z: &mut DVector<C64>, mut r: f64) -> Result<Endpoint, PathFailure> {
+        if let Some(mut m) = self.homotopy.infinity_measure(z) {
+            let mut valuations: Vec<f64> = Vec::new();
+            let mut stable_positive = false;
+            while r > MIN_ENDGAME_T {
+                let inner = r / 4.0;
+                // A path that stalls on its way down (ever smaller steps near a singular point
+                // at infinity) is decided by what its valuations said so far.
+                if self
+                    .follow_within(
+                        z,
+                        Segment::Line(C64::from(r), C64::from(inner)),
+                        0.25,
+                        1.0,
+                        DESCENT_BUDGET,
+                    )
+                    .is_err()
+                {
+                    break;
+                }
+                r = inner;
+                let next = self.homotopy.infinity_measure(z).unwrap_or(m);
+                valuations.push((next / m).ln() / 0.25f64.ln());
+                m = next;
+                if let [.., a, b, c] = valuations[..] {
+                    let stable = (a - b).abs() < 0.01 && (b - c).abs() < 0.01;
+                    stable_positive = stable && c > 0.04;
+                    if stable_positive && m < FINITE_THRESHOLD {
+                        return Ok(Endpoint {
+                            z: z.clone(),
+                            winding: 0,
+                            converged: true,
+                            diverges: true,
+                        });
+                    }
+                    if stable && c.abs() < 0.01 {
+                        if let Some(end) = self.finish_regular(z, r) {
+                            return Ok(end);
+                        }
+                        break;
+                    }
+                }
+            }
+            // Beyond 10¹⁰ in the patch's scale, a point is at infinity whatever its valuations
+            // (they are noise there).
+            if stable_positive || m < FINITE_THRESHOLD * FINITE_THRESHOLD {
                 return Ok(Endpoint {
-                    z: end,
-                    winding: 1,
+                    z: z.clone(),
+                    winding: 0,
                     converged: true,
-                    diverges: false,
+                    diverges: true,
                 });
             }
         }
-        *z = at_start;
-        self.cauchy_endgame(z, te)
+        self.cauchy_endgame(z, r)
     }
 
     /// The Cauchy endgame from `z` at `t = r`: loops around `t = 0` at radii `r, r/4, …` until
@@ -364,35 +442,6 @@ impl<'a, H: Homotopy> Tracker<'a, H> {
         mut r: f64,
     ) -> Result<Endpoint, PathFailure> {
         const SAMPLES: usize = 8;
-        if let Some(mut m) = self.homotopy.infinity_measure(z) {
-            // Divergence first, by the valuation `v = d log m / d log t` of the homogenising
-            // coordinates along the real segment (cheap: no loops): stable and positive means
-            // `m ~ t^v → 0`, a point at infinity; stable and zero means a finite limit, which
-            // the loops below find.
-            let mut valuations: Vec<f64> = Vec::new();
-            for _ in 0..10 {
-                let inner = r / 4.0;
-                self.follow(z, Segment::Line(C64::from(r), C64::from(inner)), 0.25)?;
-                r = inner;
-                let next = self.homotopy.infinity_measure(z).unwrap_or(m);
-                valuations.push((next / m).ln() / 0.25f64.ln());
-                m = next;
-                if let [.., a, b, c] = valuations[..] {
-                    let stable = (a - b).abs() < 0.01 && (b - c).abs() < 0.01;
-                    if stable && c > 0.04 {
-                        return Ok(Endpoint {
-                            z: z.clone(),
-                            winding: 0,
-                            converged: true,
-                            diverges: true,
-                        });
-                    }
-                    if stable && c.abs() < 0.01 {
-                        break;
-                    }
-                }
-            }
-        }
         let mut previous: Option<DVector<C64>> = None;
         let mut last_winding = 0;
         for _ in 0..12 {

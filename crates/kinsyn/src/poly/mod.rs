@@ -509,10 +509,13 @@ impl System {
     }
 
     /// Bézout's number, the product of the degrees: for a square system, the number of paths
-    /// of a total-degree homotopy and a bound on the isolated solutions in ℂⁿ.
+    /// of a total-degree homotopy and a bound on the isolated solutions in ℂⁿ. Saturates at
+    /// `u128::MAX` (read: more than 10^38).
     #[must_use]
     pub fn bezout_number(&self) -> u128 {
-        self.degrees().iter().map(|d| u128::from(*d)).product()
+        self.degrees()
+            .iter()
+            .fold(1, |n, d| n.saturating_mul(u128::from(*d)))
     }
 
     /// The degree of each equation in each variable group: `[equation][group]`.
@@ -527,7 +530,7 @@ impl System {
     /// The multi-homogeneous Bézout number of the grouping: the coefficient of
     /// `Π_j α_j^{n_j}` in `Π_i Σ_j d_ij α_j` (`n_j` the size of group `j`, `d_ij` the degree
     /// of equation `i` in it), the number of paths of the multi-homogeneous start system.
-    /// Zero unless the system is square.
+    /// Zero unless the system is square; saturates at `u128::MAX` (read: more than 10^38).
     #[must_use]
     pub fn multihomogeneous_bezout(&self) -> u128 {
         if !self.is_square() {
@@ -546,7 +549,8 @@ impl System {
                     if *dij > 0 && used[j] < sizes[j] {
                         let mut u = used.clone();
                         u[j] += 1;
-                        *next.entry(u).or_insert(0) += w * u128::from(*dij);
+                        let slot = next.entry(u).or_insert(0u128);
+                        *slot = slot.saturating_add(w.saturating_mul(u128::from(*dij)));
                     }
                 }
             }

@@ -21,13 +21,15 @@ struct Assembly {
 }
 
 /// The pose as `--pose` takes it: `x,y,z,rx,ry,rz`, lengths in the file's unit and the rotation
-/// vector in its angle unit.
+/// vector in its angle unit, each number in full (the shortest text that reads back to the same
+/// double): a platform of fewer than six dof meets its constraints only at the exact pose, and
+/// six rounded decimals leave it off them by more than the assembly tolerance.
 fn pose_text(m: &Manipulator, g: &Displacement) -> String {
     let t = g.translation.vector;
     let r = rotation_log(&g.rotation).map(|a| m.units().angle.from_radians(a));
     [t.x, t.y, t.z, r.x, r.y, r.z]
         .iter()
-        .map(|v| format!("{:.6}", clean(*v)))
+        .map(|v| format!("{}", clean(*v)))
         .collect::<Vec<_>>()
         .join(",")
 }
@@ -219,7 +221,7 @@ pub fn all_assemblies(
     if !assemblies.is_empty() {
         let _ = writeln!(
             out,
-            "analyse one with: kinsyn analyze {} --pose X,Y,Z,RX,RY,RZ",
+            "analyse one with: kinsyn analyze {} --pose=X,Y,Z,RX,RY,RZ",
             path.display()
         );
     }
