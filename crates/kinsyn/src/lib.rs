@@ -22,6 +22,7 @@
 pub mod catalogue;
 pub mod certify;
 pub mod chain;
+pub mod configurable;
 pub mod homotopy;
 mod linalg;
 pub mod lockset;
