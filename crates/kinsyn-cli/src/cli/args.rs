@@ -235,6 +235,9 @@ pub(super) enum Command {
         #[arg(long)]
         json: bool,
     },
+    /// Figures of the papers drawn by kinsyn (SVG).
+    #[command(subcommand)]
+    Plot(PlotCommand),
     /// Write a series-parallel stack of three-legged modules (paper 002) as a description file.
     ///
     /// Equilateral platforms joined in series, each module a 3-RPS (revolutes on its lower
@@ -452,4 +455,24 @@ impl From<StartArg> for kinsyn::homotopy::StartSystem {
             StartArg::MultiHomogeneous => Self::MultiHomogeneous,
         }
     }
+}
+
+/// `kinsyn plot …`.
+#[derive(Debug, clap::Subcommand)]
+pub(super) enum PlotCommand {
+    /// Paper 003 §5: the inputs' trajectory followed from Table 2's assembly by parameter
+    /// homotopy; the corner speeds against time (like Fig. 12) as SVG, and where the followed
+    /// assembly stops existing (a turning point, where it meets another assembly).
+    #[command(after_help = "Example:\n  kinsyn plot trajectory --out figures")]
+    Trajectory {
+        /// The folder for trajectory-velocities.svg (created if missing).
+        #[arg(long, default_value = ".")]
+        out: PathBuf,
+        /// Instants over t in [0, 2π] (2 to 100000).
+        #[arg(long, default_value_t = 2000)]
+        steps: usize,
+        /// Print JSON (every instant) instead of text.
+        #[arg(long)]
+        json: bool,
+    },
 }

@@ -11,6 +11,7 @@ mod catalogue;
 mod files;
 mod manipulator;
 mod notation;
+mod plot;
 mod solve;
 mod terminal;
 
@@ -204,6 +205,11 @@ fn execute(command: Command) -> Result<String, CliError> {
             },
             as_json,
         ),
+        Command::Plot(args::PlotCommand::Trajectory {
+            out,
+            steps,
+            json: as_json,
+        }) => plot::trajectory(&out, steps, as_json),
         Command::Stack {
             modules,
             radii,

@@ -1,0 +1,173 @@
+//! `kinsyn plot`: the figures of paper 003 drawn by kinsyn, as SVG.
+
+use super::{CliError, json};
+use kinsyn::configurable::trajectory::{
+    TrajectoryEnd, TrajectoryReport, assemble, follow, paper_input_rates, paper_inputs,
+};
+use kinsyn::configurable::{Configurable, CornerPose};
+use nalgebra::Vector2;
+use plotters::prelude::*;
+use std::fmt::Write as _;
+use std::path::Path;
+
+/// The most instants `--steps` takes.
+pub const MAX_STEPS: usize = 100_000;
+
+/// Table 1's converged solution (paper 003, eq. 13's parametrisation), the start of §5.
+fn table1() -> CornerPose {
+    CornerPose {
+        c4: Vector2::new(25.112, -147.043),
+        theta: 79.999f64.to_radians(),
+        phi: 105.0f64.to_radians(),
+    }
+}
+
+fn draw_error(e: impl std::fmt::Display) -> CliError {
+    CliError::Io(std::io::Error::other(e.to_string()))
+}
+
+/// `kinsyn plot trajectory`: paper 003 §5 followed from Table 2's assembly; the corner speeds
+/// against time (like Fig. 12) as `DIR/trajectory-velocities.svg`, the report on stdout.
+pub fn trajectory(out: &Path, steps: usize, as_json: bool) -> Result<String, CliError> {
+    if !(2..=MAX_STEPS).contains(&steps) {
+        return Err(CliError::Input(format!(
+            "--steps {steps}: give 2 to {MAX_STEPS}"
+        )));
+    }
+    let m = Configurable::paper003();
+    let start = assemble(&m, &paper_inputs(0.0), &table1())
+        .ok_or_else(|| CliError::Internal("Table 1's assembly does not close at q(0)".into()))?;
+    let times: Vec<f64> = (0..=steps)
+        .map(|k| std::f64::consts::TAU * k as f64 / steps as f64)
+        .collect();
+    let report = follow(&m, &start, paper_inputs, paper_input_rates, &times);
+    std::fs::create_dir_all(out)?;
+    let file = out.join("trajectory-velocities.svg");
+    draw_speeds(&report, &file)?;
+    if as_json {
+        let v = serde_json::json!({
+            "figure": file.display().to_string(),
+            "samples": report.samples.iter().map(|s| serde_json::json!({
+                "t": s.t,
+                "q": s.q,
+                "corners": s.corners.iter().map(|c| [c.x, c.y]).collect::<Vec<_>>(),
+                "corner_velocities": s.corner_velocities.iter().map(|c| [c.x, c.y]).collect::<Vec<_>>(),
+                "inverse_condition": s.inverse_condition,
+            })).collect::<Vec<_>>(),
+            "end": match &report.end {
+                TrajectoryEnd::Completed => serde_json::json!({"completed": true}),
+                TrajectoryEnd::Ceased { last, next, reason } => serde_json::json!({"completed": false, "last": last, "next": next, "reason": reason}),
+            },
+        });
+        return Ok(json(&v));
+    }
+    let mut text = String::new();
+    let _ = writeln!(
+        text,
+        "paper 003 §5: q1 = 2.477 − 1.5 sin t cos t, q2 = 3.549 − 1.25 sin t cos t, q3 = 5.895 − 2 sin t cos t, q4 = 5.331 + 1.5 sin t cos t (rad), t in [0, 2π] s, {steps} steps"
+    );
+    let _ = writeln!(
+        text,
+        "start: Table 1's assembly at q(0): C4 = ({:.3}, {:.3}) mm, θ = {:.3}°, φ = {:.3}°",
+        start.c4.x,
+        start.c4.y,
+        start.theta.to_degrees(),
+        start.phi.to_degrees()
+    );
+    match &report.end {
+        TrajectoryEnd::Completed => {
+            let _ = writeln!(
+                text,
+                "followed over the whole period ({} instants)",
+                report.samples.len()
+            );
+        }
+        TrajectoryEnd::Ceased { last, next, reason } => {
+            let _ = writeln!(
+                text,
+                "followed to t = {last:.6} s ({} instants); not beyond t = {next:.6} s: {reason}",
+                report.samples.len()
+            );
+        }
+    }
+    if let Some(s) = report.samples.last() {
+        let speeds: Vec<String> = s
+            .corner_velocities
+            .iter()
+            .enumerate()
+            .map(|(i, v)| format!("|Ċ{}| = {:.3}", i + 1, v.norm()))
+            .collect();
+        let _ = writeln!(
+            text,
+            "at the last instant t = {:.6} s: {} mm/s",
+            s.t,
+            speeds.join(", ")
+        );
+    }
+    let _ = writeln!(text, "figure: {}", file.display());
+    Ok(text)
+}
+
+/// The corner speeds against time, the end of the followed branch marked.
+fn draw_speeds(report: &TrajectoryReport, file: &Path) -> Result<(), CliError> {
+    let root = SVGBackend::new(file, (900, 560)).into_drawing_area();
+    root.fill(&WHITE).map_err(draw_error)?;
+    let top = report
+        .samples
+        .iter()
+        .flat_map(|s| s.corner_velocities.iter().map(nalgebra::Vector2::norm))
+        .fold(1.0, f64::max)
+        .min(1e6);
+    // The followed branch only: up to its end (with a margin), or the whole period.
+    let right = match report.end {
+        TrajectoryEnd::Ceased { last, .. } => (last * 1.15).min(std::f64::consts::TAU),
+        TrajectoryEnd::Completed => std::f64::consts::TAU,
+    };
+    let mut chart = ChartBuilder::on(&root)
+        .caption(
+            "Paper 003 §5: corner speeds along the followed assembly",
+            ("sans-serif", 20),
+        )
+        .margin(12)
+        .x_label_area_size(40)
+        .y_label_area_size(60)
+        .build_cartesian_2d(0.0..right, 0.0..top * 1.05)
+        .map_err(draw_error)?;
+    chart
+        .configure_mesh()
+        .x_desc("t (s)")
+        .y_desc("|dC_i/dt| (mm/s)")
+        .draw()
+        .map_err(draw_error)?;
+    for (i, colour) in [RED, BLUE, GREEN, MAGENTA].into_iter().enumerate() {
+        chart
+            .draw_series(LineSeries::new(
+                report
+                    .samples
+                    .iter()
+                    .map(|s| (s.t, s.corner_velocities[i].norm().min(top))),
+                colour,
+            ))
+            .map_err(draw_error)?
+            .label(format!("C{}", i + 1))
+            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], colour));
+    }
+    if let TrajectoryEnd::Ceased { last, .. } = report.end {
+        chart
+            .draw_series(LineSeries::new(
+                [(last, 0.0), (last, top * 1.05)],
+                BLACK.stroke_width(1),
+            ))
+            .map_err(draw_error)?
+            .label(format!("turning point, t = {last:.4} s"))
+            .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], BLACK));
+    }
+    chart
+        .configure_series_labels()
+        .background_style(WHITE.mix(0.8))
+        .border_style(BLACK)
+        .draw()
+        .map_err(draw_error)?;
+    root.present().map_err(draw_error)?;
+    Ok(())
+}

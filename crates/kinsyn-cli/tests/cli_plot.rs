@@ -1,0 +1,47 @@
+//! `kinsyn plot trajectory`: paper 003 §5's trajectory drawn, and where it ends said.
+
+use std::process::Command;
+
+fn kinsyn(args: &[&str]) -> std::process::Output {
+    Command::new(env!("CARGO_BIN_EXE_kinsyn"))
+        .args(args)
+        .current_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/../.."))
+        .output()
+        .expect("the binary runs")
+}
+
+#[test]
+fn the_trajectory_figure_is_written_and_the_turning_point_named() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = kinsyn(&[
+        "plot",
+        "trajectory",
+        "--out",
+        dir.path().to_str().unwrap(),
+        "--steps",
+        "400",
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = String::from_utf8(out.stdout).unwrap();
+    // The turning point found by the library test (crates/kinsyn/tests/configurable_trajectory.rs,
+    // checked there by the homotopy's real-assembly counts on either side).
+    assert!(text.contains("followed to t = 0.1785"), "{text}");
+    assert!(text.contains("turning point"), "{text}");
+    let svg = std::fs::read_to_string(dir.path().join("trajectory-velocities.svg")).unwrap();
+    assert!(svg.starts_with("<svg") && svg.contains("C1") && svg.contains("C4"));
+}
+
+#[test]
+fn bad_steps_are_one_line_and_exit_2() {
+    for steps in ["0", "1", "100001"] {
+        let out = kinsyn(&["plot", "trajectory", "--steps", steps]);
+        assert_eq!(out.status.code(), Some(2), "--steps {steps}");
+        let err = String::from_utf8(out.stderr).unwrap();
+        assert_eq!(err.lines().count(), 1, "{err}");
+        assert!(err.contains("--steps"), "{err}");
+    }
+}
