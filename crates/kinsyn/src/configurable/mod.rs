@@ -21,6 +21,8 @@
 //! example (θ = 75°, φ = 100° in eq. 11's sense, `C = (20, −30)`) is Table 1's converged pose
 //! (θ = 80°, φ = 105° in eq. 13's sense), which is why the q of the one reproduce the other.
 
+pub mod velocity;
+
 use nalgebra::Vector2;
 
 /// The geometry of the manipulator (§2, §5).
