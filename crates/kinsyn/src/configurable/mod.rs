@@ -22,6 +22,7 @@
 //! (θ = 80°, φ = 105° in eq. 13's sense), which is why the q of the one reproduce the other.
 
 pub mod trajectory;
+pub mod velocity;
 
 use nalgebra::Vector2;
 
