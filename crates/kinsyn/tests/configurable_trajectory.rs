@@ -6,10 +6,11 @@
 use kinsyn::configurable::trajectory::{
     TrajectoryEnd, assemble, elbow_family, follow, paper_input_rates, paper_inputs,
 };
+use kinsyn::configurable::velocity::{Configuration, velocities};
 use kinsyn::configurable::{Configurable, CornerPose};
 use kinsyn::homotopy::{SolveSettings, solve};
 use kinsyn::poly::C64;
-use nalgebra::Vector2;
+use nalgebra::{Vector2, Vector4};
 
 fn table1() -> CornerPose {
     // Table 1's converged solution (eq. 13's parametrisation), printed to 3 decimals.
