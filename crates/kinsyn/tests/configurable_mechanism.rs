@@ -59,18 +59,37 @@ fn the_file_is_table_2_closed_with_the_papers_lengths_and_inputs() {
         // §5: A_i, a = 80, b = 120, c = 120; the elbow of eq. 7 at the brief's q.
         assert!((a - paper.base[i]).norm() < 1e-12, "A_{}", i + 1);
         let elbow = paper.elbow(i, Q_DEG[i].to_radians());
-        assert!((b - elbow).norm() < 1e-9, "B_{} = A + a(cos q, sin q)", i + 1);
-        assert!(((c - b).norm() - paper.b).abs() < 1e-9, "|B_{0} C_{0}| = b", i + 1);
+        assert!(
+            (b - elbow).norm() < 1e-9,
+            "B_{} = A + a(cos q, sin q)",
+            i + 1
+        );
+        assert!(
+            ((c - b).norm() - paper.b).abs() < 1e-9,
+            "|B_{0} C_{0}| = b",
+            i + 1
+        );
         let next = corners[(i + 1) % 4];
-        assert!(((next - c).norm() - paper.c).abs() < 1e-9, "|C_i C_i+1| = c");
+        assert!(
+            ((next - c).norm() - paper.c).abs() < 1e-9,
+            "|C_i C_i+1| = c"
+        );
         // Each body's reference point is its corner C_i (m_i runs from C_i to C_{i+1}).
         let p = m.bodies()[i].point;
         assert!((Vector2::new(p.x, p.y) - c).norm() < 1e-12);
         // Table 2 as printed, to its rounding: q to 0.0005° moves B by a·8.7e-6 = 7e-4 mm (plus
         // B's own rounding, 7e-4), and the platform, solved from four such q, by several times
         // that (measured: 2.7e-3 at C_2, 3.0e-3 from Table 1's pose at C_1).
-        assert!((b - Vector2::from(TABLE2_B[i])).norm() < 1.5e-3, "Table 2 B_{}", i + 1);
-        assert!((c - Vector2::from(TABLE2_C[i])).norm() < 5e-3, "Table 2 C_{}", i + 1);
+        assert!(
+            (b - Vector2::from(TABLE2_B[i])).norm() < 1.5e-3,
+            "Table 2 B_{}",
+            i + 1
+        );
+        assert!(
+            (c - Vector2::from(TABLE2_C[i])).norm() < 5e-3,
+            "Table 2 C_{}",
+            i + 1
+        );
     }
     // Table 1's converged pose (eq. 13: C_4, θ of C_4C_1, φ of C_4C_3) to its three decimals.
     let table1 = CornerPose {
@@ -118,7 +137,10 @@ fn each_link_moves_in_the_plane_and_opposite_links_translate_relative_to_each_ot
         // the planar group G(xy), all three of them reached (4 dof > 3).
         let (_, dof) = m.body_twists(k, &q0, &[]);
         assert_eq!(dof, 3, "{}", body.name);
-        let mode = m.with_end_effector(&body.name).unwrap().mode(&[], &settings);
+        let mode = m
+            .with_end_effector(&body.name)
+            .unwrap()
+            .mode(&[], &settings);
         assert_eq!(mode.pattern_text(), "G(xy)", "{}", body.name);
         assert!(mode.group);
     }
@@ -141,17 +163,31 @@ fn each_link_moves_in_the_plane_and_opposite_links_translate_relative_to_each_ot
     // Finite motion: the direction of translation turns with m2, so the motion is the
     // curvilinear translation 1T0R, not the group T(d); adjacent links turn about their common
     // corner, the group R(z) through C_2.
-    let seen = |body: &str| m.with_end_effector(body).unwrap().relative_to("m1").unwrap();
+    let seen = |body: &str| {
+        m.with_end_effector(body)
+            .unwrap()
+            .relative_to("m1")
+            .unwrap()
+    };
     let opposite = seen("m3").mode(&[], &settings);
-    assert_eq!((opposite.pattern_text().as_str(), opposite.dof), ("1T0R", 1));
+    assert_eq!(
+        (opposite.pattern_text().as_str(), opposite.dof),
+        ("1T0R", 1)
+    );
     let adjacent = seen("m2").mode(&[], &settings);
-    assert_eq!((adjacent.pattern_text().as_str(), adjacent.dof), ("R(z)", 1));
+    assert_eq!(
+        (adjacent.pattern_text().as_str(), adjacent.dof),
+        ("R(z)", 1)
+    );
     let point = adjacent.classification.unwrap();
     let kinsyn::motion::Pattern::Group(g) = point.pattern else {
         panic!("a group")
     };
     let p = Vector3::from(g.point.unwrap());
-    assert!((p - m.bodies()[m2].point).norm() < 1e-6, "axis through C_2: {p}");
+    assert!(
+        (p - m.bodies()[m2].point).norm() < 1e-6,
+        "axis through C_2: {p}"
+    );
     // Every input locked: nothing moves relative to anything.
     let all: Vec<usize> = (0..4).collect();
     assert_eq!(m.relative_twists(m3, m1, &q0, &all).1, 0);
@@ -180,7 +216,11 @@ fn opposite_links_stay_parallel_at_every_assembly_and_the_relative_twist_is_the_
     let predicted = &jac * &rates;
     let dt = 1e-6;
     let step = |s: f64| {
-        let q: Vec<f64> = q0.iter().zip(rates.iter()).map(|(a, r)| a + s * r).collect();
+        let q: Vec<f64> = q0
+            .iter()
+            .zip(rates.iter())
+            .map(|(a, r)| a + s * r)
+            .collect();
         mech.assemble(&q, &[], None).unwrap()
     };
     let (qp, qm) = (step(dt), step(-dt));

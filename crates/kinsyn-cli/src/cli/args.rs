@@ -105,7 +105,7 @@ pub(super) enum Command {
         #[arg(long, value_name = "NAME")]
         body: Option<String>,
         /// Report the patterns of the body's motion relative to this other moving body (the
-        /// displacements g_NAME⁻¹ g_body, in NAME's frame at the reference) instead of relative
+        /// displacements of the body seen from NAME, in NAME's frame at the reference) instead of relative
         /// to the ground.
         #[arg(long, value_name = "NAME")]
         relative_to: Option<String>,

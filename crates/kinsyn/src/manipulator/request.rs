@@ -28,7 +28,9 @@ pub enum RequestError {
         known: Vec<String>,
     },
     /// A body's motion asked for relative to itself.
-    #[error("{name:?} is the body analysed: its motion relative to itself is none; name another moving body")]
+    #[error(
+        "{name:?} is the body analysed: its motion relative to itself is none; name another moving body"
+    )]
     RelativeToItself {
         /// The name asked for.
         name: String,

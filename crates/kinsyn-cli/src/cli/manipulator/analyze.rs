@@ -174,25 +174,12 @@ pub fn analyze(
     warn(path, &warnings);
     if as_json {
         let mut v = analysis_json(&m, &a, &reached, &warnings);
-        if let Some(r) = relative_motion(&m, &a) {
-            v["relative_motion"] = serde_json::json!({
-                "body": m.bodies()[m.end_effector()].name,
-                "relative_to": r.base,
-                "dof": r.dof,
-                "rotations": r.rotations,
-                "twists_at_point": r.twists,
-            });
-        }
         if !study_json.is_empty() {
             v["study"] = serde_json::Value::Array(study_json);
         }
         return Ok(json(&v));
     }
-    let mut text = study_lines + &analysis_text(&m, &a, &reached);
-    if let Some(r) = relative_motion(&m, &a) {
-        text += &relative_text(&m, &r);
-    }
-    Ok(text)
+    Ok(study_lines + &analysis_text(&m, &a, &reached))
 }
 
 /// The analysed body's instantaneous motion relative to the body of `--relative-to`.
@@ -239,6 +226,16 @@ fn relative_motion(m: &Manipulator, a: &Analysis) -> Option<RelativeMotion> {
         dof,
         rotations,
         twists,
+    })
+}
+
+fn relative_json(m: &Manipulator, r: &RelativeMotion) -> serde_json::Value {
+    serde_json::json!({
+        "body": m.bodies()[m.end_effector()].name,
+        "relative_to": r.base,
+        "dof": r.dof,
+        "rotations": r.rotations,
+        "twists_at_point": r.twists,
     })
 }
 
@@ -303,7 +300,7 @@ fn analysis_json(
         .iter()
         .map(|r| serde_json::json!({"row": row_label(m, r.kind), "jd": r.wrench, "ji": r.input}))
         .collect();
-    serde_json::json!({
+    let mut v = serde_json::json!({
         "manipulator": m.name(),
         "units": m.units(),
         "locked": m.lock_text(&a.locked),
@@ -334,7 +331,11 @@ fn analysis_json(
             "generic": a.generic.inputs_with_end_effector_held,
         },
         "series_parallel": series_json(m, a),
-    })
+    });
+    if let Some(r) = relative_motion(m, a) {
+        v["relative_motion"] = relative_json(m, &r);
+    }
+    v
 }
 
 /// The stack of three-legged modules the manipulator is, when it has two or more (paper 002):
@@ -736,6 +737,9 @@ fn analysis_text(m: &Manipulator, a: &Analysis, reached: &Reached) -> String {
     }
     for sing in &a.singularities {
         let _ = writeln!(s, "singularity ({:?}): {}", sing.kind, sing.detail());
+    }
+    if let Some(r) = relative_motion(m, a) {
+        s += &relative_text(m, &r);
     }
     s
 }
