@@ -26,6 +26,13 @@ fn files() -> Vec<String> {
                 let p = e.unwrap().path();
                 (p.extension().is_some_and(|x| x == "json")).then(|| p.display().to_string())
             })
+            // The invariances transform `/1` fields; `/2` files (4-rrr-configurable.json) are
+            // checked in their own tests (configurable_mechanism.rs).
+            .filter(|p| {
+                !std::fs::read_to_string(p)
+                    .unwrap()
+                    .contains("\"kinsyn-manipulator/2\"")
+            })
             .collect();
         names.sort();
         out.extend(names);

@@ -104,6 +104,11 @@ pub(super) enum Command {
         /// end-effector's.
         #[arg(long, value_name = "NAME")]
         body: Option<String>,
+        /// Report the patterns of the body's motion relative to this other moving body (the
+        /// displacements of the body seen from NAME, in NAME's frame at the reference) instead of relative
+        /// to the ground.
+        #[arg(long, value_name = "NAME")]
+        relative_to: Option<String>,
         /// Refuse more lock subsets than this (each is a sampled motion of about 1–5 ms of CPU;
         /// 4096 take about 16–20 s on a 6-UPS).
         #[arg(long, value_name = "COUNT", default_value_t = super::manipulator::DEFAULT_MAX_SUBSETS,
@@ -163,6 +168,11 @@ pub(super) enum Command {
         /// (its pose is then the one --pose, --from and P refer to).
         #[arg(long, value_name = "NAME")]
         body: Option<String>,
+        /// Also report the analysed body's motion relative to this other moving body: its
+        /// relative dof and twists (in NAME's frame at the reference), and whether they are all
+        /// translations.
+        #[arg(long, value_name = "NAME")]
+        relative_to: Option<String>,
         /// Every assembly at the inputs instead of one: the manipulator's constraint
         /// polynomials in the Study parameters of its platform (legs recognised with their
         /// inputs locked: S–S such as UPS, R–S such as RPS, S–R such as SPR), solved by

@@ -128,6 +128,7 @@ fn execute(command: Command) -> Result<String, CliError> {
             lock,
             max_subsets,
             body,
+            relative_to,
             sampling,
             json: as_json,
         } => {
@@ -138,7 +139,7 @@ fn execute(command: Command) -> Result<String, CliError> {
             };
             manipulator::modes(
                 &file,
-                (pose.as_deref(), body.as_deref()),
+                (pose.as_deref(), body.as_deref(), relative_to.as_deref()),
                 &selection,
                 max_subsets,
                 &sampling.settings(),
@@ -161,6 +162,7 @@ fn execute(command: Command) -> Result<String, CliError> {
             from,
             lock,
             body,
+            relative_to,
             study,
             seed,
             json: as_json,
@@ -173,6 +175,7 @@ fn execute(command: Command) -> Result<String, CliError> {
                 from: from.as_deref(),
                 body: body.as_deref(),
                 study: &study,
+                relative_to: relative_to.as_deref(),
             },
             lock.as_deref(),
             &kinsyn::mechanism::SampleSettings {

@@ -136,6 +136,9 @@ pub struct Manipulator {
     bodies: Vec<Body>,
     /// The end-effector: an index into `bodies`.
     end_effector: usize,
+    /// The moving body the end-effector's motion patterns are taken relative to
+    /// ([`Manipulator::relative_to`]): an index into `bodies`; `None`: relative to the ground.
+    relative_to: Option<usize>,
     /// The end-effector's body in the mechanism (`platform()`).
     platform: usize,
     /// P at the reference configuration, in the ground frame.
@@ -303,6 +306,7 @@ impl Manipulator {
             point: ee.point,
             frame: ee.frame,
             end_effector: layout.end_effector,
+            relative_to: None,
             bodies,
         })
     }
@@ -323,10 +327,76 @@ impl Manipulator {
             })?;
         let mut copy = self.clone();
         copy.end_effector = k;
+        copy.relative_to = self.relative_to.filter(|&r| r != k);
         copy.platform = self.bodies[k].body;
         copy.point = self.bodies[k].point;
         copy.frame = self.bodies[k].frame;
         Ok(copy)
+    }
+
+    /// The same manipulator with the end-effector's motion taken relative to the moving body
+    /// `name` (`--relative-to NAME`): its motion patterns ([`Manipulator::mode_from`],
+    /// [`Manipulator::modes_from`]) are those of the displacements `g_name⁻¹ g_end-effector`,
+    /// directions and points in the frame of `name` at its reference pose.
+    ///
+    /// # Errors
+    /// A name that is not a moving body (the message lists them), or the end-effector itself.
+    pub fn relative_to(&self, name: &str) -> Result<Self, RequestError> {
+        let k = self
+            .body_named(name)
+            .ok_or_else(|| RequestError::UnknownBody {
+                name: name.to_string(),
+                manipulator: self.name.clone(),
+                known: self.bodies.iter().map(|b| b.name.clone()).collect(),
+            })?;
+        if k == self.end_effector {
+            return Err(RequestError::RelativeToItself {
+                name: name.to_string(),
+            });
+        }
+        let mut copy = self.clone();
+        copy.relative_to = Some(k);
+        Ok(copy)
+    }
+
+    /// The moving body the end-effector's motion is taken relative to (an index into
+    /// [`Manipulator::bodies`]), if any ([`Manipulator::relative_to`]).
+    #[must_use]
+    pub fn relative_body(&self) -> Option<usize> {
+        self.relative_to
+    }
+
+    /// The twist space of moving body `body` relative to moving body `base` (indices into
+    /// [`Manipulator::bodies`]) at `q` with the `locked` inputs held: a basis of the twists
+    /// `(ω; v)` of `g_base⁻¹ g_body` (columns, in the frame of `base` at its reference pose, v
+    /// the velocity of the point at the ground origin) and the relative degrees of freedom
+    /// ([`Mechanism::relative_twist_space`]).
+    #[must_use]
+    pub fn relative_twists(
+        &self,
+        body: usize,
+        base: usize,
+        q: &[f64],
+        locked: &[usize],
+    ) -> (DMatrix<f64>, usize) {
+        self.mechanism.relative_twist_space(
+            self.bodies[body].body,
+            self.bodies[base].body,
+            q,
+            &self.lock_mask(locked),
+        )
+    }
+
+    /// The reference point of moving body `body` at `q` as seen from moving body `base`
+    /// (indices into [`Manipulator::bodies`]): carried by `g_base⁻¹ g_body`, in the frame of
+    /// `base` at its reference pose (the ground frame where `base` has not moved).
+    #[must_use]
+    pub fn relative_point(&self, body: usize, base: usize, q: &[f64]) -> Vector3<f64> {
+        let b = &self.bodies[body];
+        self.mechanism
+            .relative_pose(b.body, self.bodies[base].body, q)
+            .transform_point(&Point3::from(b.point))
+            .coords
     }
 
     /// The moving bodies, in description order (one, `platform`, for a `/1` description).

@@ -155,15 +155,25 @@ impl Manipulator {
     }
 
     /// The platform's motion with the `locked` inputs held at their values in the configuration
-    /// `start` (joint values; assembled first if it does not quite close), sampled from there.
+    /// `start` (joint values; assembled first if it does not quite close), sampled from there;
+    /// relative to the body of [`Manipulator::relative_to`] when one is set.
     #[must_use]
     pub fn mode_from(&self, start: &[f64], locked: &[usize], settings: &SampleSettings) -> Mode {
         let mask = self.lock_mask(locked);
         let lock_text = self.lock_text(locked);
-        match self
-            .mechanism
-            .motion_pattern(self.platform, start, &mask, settings)
-        {
+        let pattern = match self.relative_to {
+            None => self
+                .mechanism
+                .motion_pattern(self.platform, start, &mask, settings),
+            Some(base) => self.mechanism.relative_motion_pattern(
+                self.platform,
+                self.bodies[base].body,
+                start,
+                &mask,
+                settings,
+            ),
+        };
+        match pattern {
             Ok(c) => Mode {
                 locked: locked.to_vec(),
                 lock_text,

@@ -27,6 +27,14 @@ pub enum RequestError {
         /// The names of its moving bodies.
         known: Vec<String>,
     },
+    /// A body's motion asked for relative to itself.
+    #[error(
+        "{name:?} is the body analysed: its motion relative to itself is none; name another moving body"
+    )]
+    RelativeToItself {
+        /// The name asked for.
+        name: String,
+    },
     /// An input value item without `=`.
     #[error("{item:?} is not LABEL=VALUE (e.g. {example}=0.1)")]
     NotLabelValue {

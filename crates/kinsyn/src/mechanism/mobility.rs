@@ -89,9 +89,22 @@ impl Mechanism {
         screws: &[Twist],
         locked: &[bool],
     ) -> (DMatrix<f64>, linalg::Rank) {
+        self.unitless_span(&self.body_jacobian(body, screws), screws, locked)
+    }
+
+    /// The twists a Jacobian `jacobian` (6 × joints, physical spatial twists over joint rates)
+    /// gives over the joint rates that keep every loop closed with the `locked` joints held, in
+    /// the dimensionless form: an orthonormal basis and the rank decision (see
+    /// [`Mechanism::unitless_twist_space`]).
+    pub(crate) fn unitless_span(
+        &self,
+        jacobian: &DMatrix<f64>,
+        screws: &[Twist],
+        locked: &[bool],
+    ) -> (DMatrix<f64>, linalg::Rank) {
         let free = self.free(locked);
         let (rates, _) = self.unitless_rates(screws, &free);
-        let j = self.dimensionless(&self.body_jacobian(body, screws));
+        let j = self.dimensionless(jacobian);
         let jf = DMatrix::from_fn(6, free.len(), |r, k| j[(r, free[k])]);
         let norm = jf.norm();
         linalg::span_basis_scaled(&(jf * rates), MOBILITY_TOLERANCE, Some(norm.max(1.0)))

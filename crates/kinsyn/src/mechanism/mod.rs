@@ -55,6 +55,7 @@ mod closure;
 mod joint;
 mod mobility;
 mod motion;
+mod relative;
 
 pub use assembly::{ASSEMBLY_STEPS, ASSEMBLY_TOLERANCE, AssemblySettings, Coordinate, Goal};
 pub use joint::JointSpec;

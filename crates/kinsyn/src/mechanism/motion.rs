@@ -154,6 +154,21 @@ impl Mechanism {
         locked: &[bool],
         settings: &SampleSettings,
     ) -> Result<SampledMotion, MechanismError> {
+        self.sample_observed(start, locked, settings, |q| {
+            let (twists, rank) = self.unitless_twist_space(body, &self.joint_screws(q), locked);
+            (self.poses(q)[body], twists, rank)
+        })
+    }
+
+    /// [`Mechanism::sample_motion`] of what `observe` sees at joint values `q`: a displacement
+    /// (telling samples apart) and a dimensionless twist space with its rank decision.
+    pub(super) fn sample_observed(
+        &self,
+        start: &[f64],
+        locked: &[bool],
+        settings: &SampleSettings,
+        observe: impl Fn(&[f64]) -> (Displacement, DMatrix<f64>, crate::linalg::Rank),
+    ) -> Result<SampledMotion, MechanismError> {
         let start = self.assemble(start, locked, None)?;
         let mut rng = ChaCha8Rng::seed_from_u64(settings.seed);
         let free = self.free(locked);
@@ -163,9 +178,7 @@ impl Mechanism {
             let mut best: Option<(f64, MotionSample)> = None;
             for _ in 0..WALK_ATTEMPTS {
                 let q = self.walk(&start, locked, &free, settings, &mut rng)?;
-                let pose = self.poses(&q)[body];
-                let (twists, rank) =
-                    self.unitless_twist_space(body, &self.joint_screws(&q), locked);
+                let (pose, twists, rank) = observe(&q);
                 let nearest = samples
                     .iter()
                     .map(|s| self.pose_distance(&s.pose, &pose))
@@ -238,6 +251,12 @@ impl Mechanism {
         settings: &SampleSettings,
     ) -> Result<Classification, MechanismError> {
         let motion = self.sample_motion(body, start, locked, settings)?;
+        Ok(self.classify_motion(&motion))
+    }
+
+    /// The pattern of a sampled motion ([`crate::motion::classify`]), the group's point and
+    /// pitch in the mechanism's length unit, the point of an axis the one nearest the origin.
+    pub(super) fn classify_motion(&self, motion: &SampledMotion) -> Classification {
         let spans: Vec<DMatrix<f64>> = motion.samples.iter().map(|s| s.twists.clone()).collect();
         let mut c = motion::classify(&spans, motion.min_separation, motion::SUBSPACE_TOLERANCE);
         // The rank decisions were made on the body's twists, not on these orthonormal bases.
@@ -255,6 +274,6 @@ impl Mechanism {
             });
             g.pitch = g.pitch.map(|p| p * self.scale);
         }
-        Ok(c)
+        c
     }
 }

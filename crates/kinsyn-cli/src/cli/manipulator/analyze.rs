@@ -58,6 +58,8 @@ pub struct Placement<'a> {
     pub body: Option<&'a str>,
     /// `--study`: one set of Study parameters per moving body, in series order from the ground.
     pub study: &'a [String],
+    /// `--relative-to`: a moving body from which the analysed body's motion is also reported.
+    pub relative_to: Option<&'a str>,
 }
 
 /// How the configuration analysed was reached, for the report.
@@ -80,7 +82,7 @@ pub fn analyze(
     settings: &SampleSettings,
     as_json: bool,
 ) -> Result<String, CliError> {
-    let m = load_with_body(path, placement.body)?;
+    let m = load_with_body(path, placement.body, placement.relative_to)?;
     let locked = match lock {
         Some(text) => m
             .parse_locks(text)
@@ -180,6 +182,86 @@ pub fn analyze(
     Ok(study_lines + &analysis_text(&m, &a, &reached))
 }
 
+/// The analysed body's instantaneous motion relative to the body of `--relative-to`.
+struct RelativeMotion {
+    /// The name of the body it is seen from.
+    base: String,
+    /// Its relative degrees of freedom.
+    dof: usize,
+    /// How many independent relative angular velocities it has (0: every relative twist is a
+    /// translation).
+    rotations: usize,
+    /// A basis of its relative twists `(v; ω)`, `v` the velocity of the analysed body's point,
+    /// in the frame of the base body at its reference pose.
+    twists: Vec<[f64; 6]>,
+}
+
+/// [`RelativeMotion`] at the configuration analysed, when `--relative-to` was given.
+fn relative_motion(m: &Manipulator, a: &Analysis) -> Option<RelativeMotion> {
+    let base = m.relative_body()?;
+    let body = m.end_effector();
+    let (twists, dof) = m.relative_twists(body, base, &a.q, &a.locked);
+    // The rotation rank is decided on the dimensionless basis (orthonormal columns).
+    let unitless = m.mechanism().unitless_twists(&twists);
+    let w = unitless.rows(0, 3).into_owned();
+    let rotations = if w.ncols() == 0 {
+        0
+    } else {
+        w.singular_values()
+            .iter()
+            .filter(|&&s| s > kinsyn::screw::DEFAULT_RANK_TOLERANCE)
+            .count()
+    };
+    let p = m.relative_point(body, base, &a.q);
+    let twists = (0..twists.ncols())
+        .map(|c| {
+            let w = nalgebra::Vector3::new(twists[(0, c)], twists[(1, c)], twists[(2, c)]);
+            let v = nalgebra::Vector3::new(twists[(3, c)], twists[(4, c)], twists[(5, c)]);
+            let vp = v + w.cross(&p);
+            [vp.x, vp.y, vp.z, w.x, w.y, w.z]
+        })
+        .collect();
+    Some(RelativeMotion {
+        base: m.bodies()[base].name.clone(),
+        dof,
+        rotations,
+        twists,
+    })
+}
+
+fn relative_json(m: &Manipulator, r: &RelativeMotion) -> serde_json::Value {
+    serde_json::json!({
+        "body": m.bodies()[m.end_effector()].name,
+        "relative_to": r.base,
+        "dof": r.dof,
+        "rotations": r.rotations,
+        "twists_at_point": r.twists,
+    })
+}
+
+fn relative_text(m: &Manipulator, r: &RelativeMotion) -> String {
+    let body = &m.bodies()[m.end_effector()].name;
+    let what = match (r.dof, r.rotations) {
+        (0, _) => "it does not move relative to it".to_string(),
+        (_, 0) => format!(
+            "every relative twist is a translation ({body:?} and {:?} have the same angular velocity)",
+            r.base
+        ),
+        (_, 1) => "1 independent relative angular velocity".to_string(),
+        (_, k) => format!("{k} independent relative angular velocities"),
+    };
+    let mut s = format!(
+        "motion of {body:?} relative to {:?}: {} dof; {what}; twist basis (v of {body:?}'s point; ω), in the frame of {:?} at the reference:",
+        r.base, r.dof, r.base
+    );
+    for t in &r.twists {
+        let t: Vec<String> = t.iter().map(|x| format!("{:.6}", clean(*x))).collect();
+        let _ = write!(s, " [{}]", t.join(", "));
+    }
+    s.push('\n');
+    s
+}
+
 /// The input values at `q` in the file's units (lengths, or angles in its angle unit), with
 /// their labels: `P1.3 = 0.050000`.
 fn input_values(m: &Manipulator, q: &[f64]) -> Vec<(String, f64)> {
@@ -218,7 +300,7 @@ fn analysis_json(
         .iter()
         .map(|r| serde_json::json!({"row": row_label(m, r.kind), "jd": r.wrench, "ji": r.input}))
         .collect();
-    serde_json::json!({
+    let mut v = serde_json::json!({
         "manipulator": m.name(),
         "units": m.units(),
         "locked": m.lock_text(&a.locked),
@@ -249,7 +331,11 @@ fn analysis_json(
             "generic": a.generic.inputs_with_end_effector_held,
         },
         "series_parallel": series_json(m, a),
-    })
+    });
+    if let Some(r) = relative_motion(m, a) {
+        v["relative_motion"] = relative_json(m, &r);
+    }
+    v
 }
 
 /// The stack of three-legged modules the manipulator is, when it has two or more (paper 002):
@@ -651,6 +737,9 @@ fn analysis_text(m: &Manipulator, a: &Analysis, reached: &Reached) -> String {
     }
     for sing in &a.singularities {
         let _ = writeln!(s, "singularity ({:?}): {}", sing.kind, sing.detail());
+    }
+    if let Some(r) = relative_motion(m, a) {
+        s += &relative_text(m, &r);
     }
     s
 }

@@ -46,7 +46,7 @@ pub fn all_assemblies(
     seed: u64,
     as_json: bool,
 ) -> Result<String, CliError> {
-    let m = load_with_body(path, body)?;
+    let m = load_with_body(path, body, None)?;
     let mut inputs = match inputs_text {
         Some(text) => m
             .parse_inputs(text)

@@ -29,14 +29,25 @@ pub fn load(path: &Path) -> Result<Manipulator, CliError> {
     })
 }
 
-/// [`load`], with the moving body `body` (`--body NAME`) as the end-effector when given.
-fn load_with_body(path: &Path, body: Option<&str>) -> Result<Manipulator, CliError> {
+/// [`load`], with the moving body `body` (`--body NAME`) as the end-effector when given, and its
+/// motion taken relative to the moving body `relative` (`--relative-to NAME`) when given.
+fn load_with_body(
+    path: &Path,
+    body: Option<&str>,
+    relative: Option<&str>,
+) -> Result<Manipulator, CliError> {
     let m = load(path)?;
-    match body {
-        None => Ok(m),
+    let m = match body {
+        None => m,
         Some(name) => m
             .with_end_effector(name)
-            .map_err(|e| CliError::Input(format!("--body {name:?}: {e}"))),
+            .map_err(|e| CliError::Input(format!("--body {name:?}: {e}")))?,
+    };
+    match relative {
+        None => Ok(m),
+        Some(name) => m
+            .relative_to(name)
+            .map_err(|e| CliError::Input(format!("--relative-to {name:?}: {e}"))),
     }
 }
 

@@ -90,13 +90,13 @@ fn selected_subsets(
 /// held at their values at the start configuration (the reference, or `--pose`).
 pub fn modes(
     path: &Path,
-    (pose, body): (Option<&str>, Option<&str>),
+    (pose, body, relative): (Option<&str>, Option<&str>, Option<&str>),
     selection: &Selection,
     max_subsets: u32,
     settings: &SampleSettings,
     as_json: bool,
 ) -> Result<String, CliError> {
-    let m = load_with_body(path, body)?;
+    let m = load_with_body(path, body, relative)?;
     let subsets = selected_subsets(path, &m, selection, max_subsets)?;
     let start = start_configuration(&m, pose)?;
     let modes = if subsets.len() > 1 {
@@ -190,7 +190,18 @@ fn modes_header(
         kinsyn::manipulator::file::AngleUnit::Deg => (r.map(f64::to_degrees), "deg"),
         kinsyn::manipulator::file::AngleUnit::Rad => (r, "rad"),
     };
-    if m.bodies().len() > 1 {
+    if let Some(base) = m.relative_body() {
+        let _ = writeln!(
+            s,
+            "patterns of {:?} relative to {:?}: the displacements of {:?} seen from {:?}, in the frame of {:?} at the reference (moving bodies: {})",
+            m.bodies()[m.end_effector()].name,
+            m.bodies()[base].name,
+            m.bodies()[m.end_effector()].name,
+            m.bodies()[base].name,
+            m.bodies()[base].name,
+            body_names(m)
+        );
+    } else if m.bodies().len() > 1 {
         let _ = writeln!(
             s,
             "patterns of the end-effector {:?} (moving bodies: {}; --body NAME for another)",
