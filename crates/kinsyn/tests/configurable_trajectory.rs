@@ -122,5 +122,17 @@ fn corner_velocities_equal_finite_differences_of_the_assembly() {
                 i + 1
             );
         }
+        // And the screw theory of §4 (eqs. 16–29) at the same instant: a third method.
+        let configuration = Configuration::new(&m, s.q, &s.pose);
+        let screws = velocities(&configuration, &Vector4::from(paper_input_rates(s.t))).unwrap();
+        for i in 0..4 {
+            let v = s.corner_velocities[i];
+            assert!(
+                (screws.corners[i] - v).norm() < 1e-8 * (1.0 + v.norm()),
+                "t {} C{}",
+                s.t,
+                i + 1
+            );
+        }
     }
 }
