@@ -21,6 +21,13 @@
 //! example (θ = 75°, φ = 100° in eq. 11's sense, `C = (20, −30)`) is Table 1's converged pose
 //! (θ = 80°, φ = 105° in eq. 13's sense), which is why the q of the one reproduce the other.
 
+mod position;
+pub use position::{
+    Assembly, CENTRE_VARIABLES, CORNER_VARIABLES, ForwardMethod, ForwardPosition, InversePosition,
+    LegInverse, MAX_RUNS, PositionError, angle_distance, centre_mirror, centre_system,
+    corner_system, forward_position, forward_position_with, inverse_position, leg_inverse,
+    solution_corners,
+};
 pub mod trajectory;
 pub mod velocity;
 
