@@ -245,6 +245,10 @@ pub(super) enum Command {
         #[arg(long)]
         json: bool,
     },
+    /// Paper 003's planar 4-RRR with a configurable platform by the paper's formulas: inverse
+    /// and forward position, velocities by screw theory (geometry of §5; angles in degrees).
+    #[command(subcommand)]
+    Configurable(ConfigurableCommand),
     /// Figures of the papers drawn by kinsyn (SVG).
     #[command(subcommand)]
     Plot(PlotCommand),
@@ -482,6 +486,66 @@ pub(super) enum PlotCommand {
         #[arg(long, default_value_t = 2000)]
         steps: usize,
         /// Print JSON (every instant) instead of text.
+        #[arg(long)]
+        json: bool,
+    },
+}
+
+/// `kinsyn configurable …`.
+#[derive(Debug, clap::Subcommand)]
+pub(super) enum ConfigurableCommand {
+    /// The input sets (two elbows per leg, up to 16) that put the platform at a pose (§3.2).
+    #[command(
+        after_help = "Examples:\n  kinsyn configurable inverse --centre 20,-30 --theta 75 --phi 100   # §5's example (eq. 11's θ, φ)\n  kinsyn configurable inverse --c4 25.112,-147.043 --theta 80 --phi 105   # the same platform (eq. 13's)"
+    )]
+    Inverse {
+        /// The platform centre C = (x, y) mm, with θ, φ in eq. 11's sense.
+        #[arg(long, allow_hyphen_values = true, conflicts_with = "c4")]
+        centre: Option<String>,
+        /// The corner C4 = (x, y) mm, with θ, φ the directions of C4→C1 and C4→C3 (eq. 13).
+        #[arg(long, allow_hyphen_values = true)]
+        c4: Option<String>,
+        /// θ in degrees.
+        #[arg(long, allow_hyphen_values = true)]
+        theta: f64,
+        /// φ in degrees.
+        #[arg(long, allow_hyphen_values = true)]
+        phi: f64,
+        /// Print JSON instead of text.
+        #[arg(long)]
+        json: bool,
+    },
+    /// Every assembly at the inputs (§3.2): method 1 or 2's equations solved by homotopy
+    /// continuation, certified; the real assemblies listed.
+    #[command(
+        after_help = "Example:\n  kinsyn configurable forward --q 141.956,203.366,337.773,305.499   # §5: two real assemblies"
+    )]
+    Forward {
+        /// q1, q2, q3, q4 in degrees.
+        #[arg(long, allow_hyphen_values = true)]
+        q: String,
+        /// 1: unknowns w1..w6 (eqs. 1-5, 10); 2: x4, y4 and the sines and cosines of θ, φ (eqs. 12-15).
+        #[arg(long, default_value_t = 2)]
+        method: u8,
+        /// Print JSON instead of text.
+        #[arg(long)]
+        json: bool,
+    },
+    /// The corner velocities by screw theory (§4) at the assembly nearest a pose.
+    #[command(
+        after_help = "Example:\n  kinsyn configurable velocity --q 141.956,203.366,337.773,305.499 --qdot=-1.5,-1.25,-2,1.5"
+    )]
+    Velocity {
+        /// q1, q2, q3, q4 in degrees.
+        #[arg(long, allow_hyphen_values = true)]
+        q: String,
+        /// q̇1, q̇2, q̇3, q̇4 in rad/s.
+        #[arg(long, allow_hyphen_values = true)]
+        qdot: String,
+        /// The assembly nearest C4x,C4y,θ,φ (mm, degrees; eq. 13); default Table 1's.
+        #[arg(long, allow_hyphen_values = true)]
+        near: Option<String>,
+        /// Print JSON instead of text.
         #[arg(long)]
         json: bool,
     },

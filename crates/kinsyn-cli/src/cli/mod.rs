@@ -8,6 +8,7 @@
 
 mod args;
 mod catalogue;
+mod configurable;
 mod files;
 mod manipulator;
 mod notation;
@@ -208,6 +209,26 @@ fn execute(command: Command) -> Result<String, CliError> {
             },
             as_json,
         ),
+        Command::Configurable(c) => match c {
+            args::ConfigurableCommand::Inverse {
+                centre,
+                c4,
+                theta,
+                phi,
+                json: as_json,
+            } => configurable::inverse(centre.as_deref(), c4.as_deref(), theta, phi, as_json),
+            args::ConfigurableCommand::Forward {
+                q,
+                method,
+                json: as_json,
+            } => configurable::forward(&q, method, as_json),
+            args::ConfigurableCommand::Velocity {
+                q,
+                qdot,
+                near,
+                json: as_json,
+            } => configurable::velocity(&q, &qdot, near.as_deref(), as_json),
+        },
         Command::Plot(args::PlotCommand::Trajectory {
             out,
             steps,
