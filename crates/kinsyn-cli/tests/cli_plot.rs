@@ -45,3 +45,28 @@ fn bad_steps_are_one_line_and_exit_2() {
         assert!(err.contains("--steps"), "{err}");
     }
 }
+
+#[test]
+fn the_inverse_figure_has_the_16_configurations_of_section_5() {
+    // Paper 003 §5, Fig. 9: 16 configurations for θ = 75°, φ = 100°, C = (20, −30) mm.
+    let dir = tempfile::tempdir().unwrap();
+    let out = kinsyn(&["plot", "inverse", "--out", dir.path().to_str().unwrap()]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(
+        String::from_utf8(out.stdout)
+            .unwrap()
+            .starts_with("16 configurations")
+    );
+    let svg = std::fs::read_to_string(dir.path().join("inverse-configurations.svg")).unwrap();
+    // One label of input angles per panel; the published q (141.956°, …) in one of them.
+    assert_eq!(
+        svg.matches("<text").count(),
+        17,
+        "a title and 16 panel labels"
+    );
+    assert!(svg.contains("142.0, 203.4, 337.8, 305.5"));
+}

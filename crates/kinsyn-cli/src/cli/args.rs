@@ -474,6 +474,23 @@ impl From<StartArg> for kinsyn::homotopy::StartSystem {
 /// `kinsyn plot …`.
 #[derive(Debug, clap::Subcommand)]
 pub(super) enum PlotCommand {
+    /// Paper 003's inverse position drawn: every input set of a platform pose, one panel each
+    /// (like Fig. 9); default §5's example.
+    #[command(after_help = "Example:\n  kinsyn plot inverse --out figures")]
+    Inverse {
+        /// The folder for inverse-configurations.svg (created if missing).
+        #[arg(long, default_value = ".")]
+        out: PathBuf,
+        /// The platform centre C = x,y (mm).
+        #[arg(long, default_value = "20,-30", allow_hyphen_values = true)]
+        centre: String,
+        /// θ in degrees (eq. 11's sense).
+        #[arg(long, default_value_t = 75.0, allow_hyphen_values = true)]
+        theta: f64,
+        /// φ in degrees (eq. 11's sense).
+        #[arg(long, default_value_t = 100.0, allow_hyphen_values = true)]
+        phi: f64,
+    },
     /// Paper 003 §5: the inputs' trajectory followed from Table 2's assembly by parameter
     /// homotopy; the corner speeds against time (like Fig. 12) as SVG, and where the followed
     /// assembly stops existing (a turning point, where it meets another assembly).

@@ -229,6 +229,15 @@ fn execute(command: Command) -> Result<String, CliError> {
                 json: as_json,
             } => configurable::velocity(&q, &qdot, near.as_deref(), as_json),
         },
+        Command::Plot(args::PlotCommand::Inverse {
+            out,
+            centre,
+            theta,
+            phi,
+        }) => {
+            let c = configurable::numbers("--centre", &centre, 2)?;
+            plot::inverse(&out, (c[0], c[1]), theta, phi)
+        }
         Command::Plot(args::PlotCommand::Trajectory {
             out,
             steps,

@@ -4,7 +4,7 @@ use super::{CliError, json};
 use kinsyn::configurable::trajectory::{
     TrajectoryEnd, TrajectoryReport, assemble, follow, paper_input_rates, paper_inputs,
 };
-use kinsyn::configurable::{Configurable, CornerPose};
+use kinsyn::configurable::{CentrePose, Configurable, CornerPose};
 use nalgebra::Vector2;
 use plotters::prelude::*;
 use std::fmt::Write as _;
@@ -164,10 +164,81 @@ fn draw_speeds(report: &TrajectoryReport, file: &Path) -> Result<(), CliError> {
     }
     chart
         .configure_series_labels()
+        .position(SeriesLabelPosition::UpperLeft)
         .background_style(WHITE.mix(0.8))
         .border_style(BLACK)
         .draw()
         .map_err(draw_error)?;
     root.present().map_err(draw_error)?;
     Ok(())
+}
+
+/// `kinsyn plot inverse`: the input sets of a platform pose drawn one panel each (like paper
+/// 003's Fig. 9), as `DIR/inverse-configurations.svg`; default the example of §5.
+pub fn inverse(out: &Path, centre: (f64, f64), theta: f64, phi: f64) -> Result<String, CliError> {
+    let m = Configurable::paper003();
+    let pose = CentrePose {
+        centre: Vector2::new(centre.0, centre.1),
+        theta: theta.to_radians(),
+        phi: phi.to_radians(),
+    };
+    let inverse = m
+        .inverse_centre_pose(&pose)
+        .map_err(|e| CliError::Input(e.to_string()))?;
+    let sets = inverse.sets();
+    std::fs::create_dir_all(out)?;
+    let file = out.join("inverse-configurations.svg");
+    let root = SVGBackend::new(&file, (1000, 1000)).into_drawing_area();
+    root.fill(&WHITE).map_err(draw_error)?;
+    let root = root
+        .titled(
+            &format!("Paper 003 inverse position: C = ({}, {}) mm, θ = {theta}°, φ = {phi}° (eq. 11): {} configurations", centre.0, centre.1, sets.len()),
+            ("sans-serif", 18),
+        )
+        .map_err(draw_error)?;
+    for (panel, q) in root.split_evenly((4, 4)).iter().zip(&sets) {
+        let mut chart = ChartBuilder::on(panel)
+            .margin(6)
+            .build_cartesian_2d(-300.0..300.0, -300.0..300.0)
+            .map_err(draw_error)?;
+        let elbows = m.elbows(q);
+        for i in 0..4 {
+            let (a, b, c) = (m.base[i], elbows[i], inverse.corners[i]);
+            chart
+                .draw_series(LineSeries::new(
+                    [(a.x, a.y), (b.x, b.y), (c.x, c.y)],
+                    BLUE.stroke_width(2),
+                ))
+                .map_err(draw_error)?;
+            chart
+                .draw_series([Circle::new((a.x, a.y), 3, BLACK.filled())])
+                .map_err(draw_error)?;
+        }
+        let c = inverse.corners;
+        chart
+            .draw_series(LineSeries::new(
+                [c[0], c[1], c[2], c[3], c[0]].map(|p| (p.x, p.y)),
+                RED.stroke_width(2),
+            ))
+            .map_err(draw_error)?;
+        chart
+            .draw_series([Text::new(
+                format!(
+                    "{:.1}, {:.1}, {:.1}, {:.1}",
+                    q[0].to_degrees(),
+                    q[1].to_degrees(),
+                    q[2].to_degrees(),
+                    q[3].to_degrees()
+                ),
+                (-290.0, 280.0),
+                ("sans-serif", 11),
+            )])
+            .map_err(draw_error)?;
+    }
+    root.present().map_err(draw_error)?;
+    Ok(format!(
+        "{} configurations of the inverse position (q in degrees in each panel)\nfigure: {}\n",
+        sets.len(),
+        file.display()
+    ))
 }
