@@ -1,14 +1,7 @@
 //! `kinsyn configurable …`: paper 003's example end to end from the command line (§5).
 
-use std::process::Command;
-
-fn kinsyn(args: &[&str]) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_kinsyn"))
-        .args(args)
-        .current_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/../.."))
-        .output()
-        .expect("the binary runs")
-}
+mod common;
+use common::kinsyn;
 
 fn json(args: &[&str]) -> serde_json::Value {
     let out = kinsyn(args);

@@ -1,14 +1,7 @@
 //! `kinsyn plot trajectory`: paper 003 §5's trajectory drawn, and where it ends said.
 
-use std::process::Command;
-
-fn kinsyn(args: &[&str]) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_kinsyn"))
-        .args(args)
-        .current_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/../.."))
-        .output()
-        .expect("the binary runs")
-}
+mod common;
+use common::kinsyn;
 
 #[test]
 fn the_trajectory_figure_is_written_and_the_turning_point_named() {

@@ -202,8 +202,7 @@ pub fn inverse(out: &Path, centre: (f64, f64), theta: f64, phi: f64) -> Result<S
             .build_cartesian_2d(-300.0..300.0, -300.0..300.0)
             .map_err(draw_error)?;
         let elbows = m.elbows(q);
-        for i in 0..4 {
-            let (a, b, c) = (m.base[i], elbows[i], inverse.corners[i]);
+        for ((a, b), c) in m.base.iter().zip(&elbows).zip(&inverse.corners) {
             chart
                 .draw_series(LineSeries::new(
                     [(a.x, a.y), (b.x, b.y), (c.x, c.y)],

@@ -296,34 +296,17 @@ pub fn follow(
     for &t in times {
         let q = inputs(t);
         let p = elbow_parameters(m, &q);
-        if let Some((t0, p0)) = &previous {
-            let moved = track_parameters(
-                &family,
-                p0,
-                &p,
-                std::slice::from_ref(&x),
-                TrackerSettings::default(),
-            )
-            .ok()
-            .and_then(|mut v| v.pop())
-            .and_then(Result::ok);
-            let size = 1.0 + x.iter().map(|c| c.norm()).fold(0.0, f64::max);
-            let reason = match &moved {
-                None => Some("the path of the assembly could not be followed (a turning point: the position Jacobian singular)".to_string()),
-                Some(y) if y.iter().any(|c| c.im.abs() > 1e-8 * size) => {
-                    Some("the assembly left the reals: two real assemblies met at a turning point and became a complex pair".to_string())
-                }
-                _ => None,
-            };
-            if let Some(reason) = reason {
+        if let Some((t0, _)) = &previous {
+            let Some(moved) = step(&family, m, &inputs, &x, *t0, t) else {
                 let (last, next) = bracket(&family, m, &inputs, &x, *t0, t);
+                let reason = "the assembly could not be followed as a real one: a turning point, where the position Jacobian is singular and two real assemblies meet and leave as a complex pair".to_string();
                 return TrajectoryReport {
                     samples,
                     end: TrajectoryEnd::Ceased { last, next, reason },
                     least_inverse_condition: least,
                 };
-            }
-            x = moved.expect("checked");
+            };
+            x = moved;
         }
         let real: Vec<f64> = x.iter().map(|c| c.re).collect();
         let Some(s) = sample(m, &family, t, q, input_rates(t), &real) else {
