@@ -218,3 +218,14 @@ fn monodromy_fills_a_generic_family_from_one_solution() {
         );
     }
 }
+
+#[test]
+fn cyclic6_count_without_failed_paths() {
+    // Cyclic-6 has 156 solutions (Björck & Fröberg 1991), all regular; 564 of its 720 paths
+    // go to positive-dimensional sets at infinity, where the endgame's descent stalls: such a
+    // path beyond 10⁵ is declared at infinity (Bertini's finite threshold), not failed.
+    let report = solve(&cyclic(6), &SolveSettings::default()).unwrap();
+    assert_eq!(report.nonsingular(), 156, "{}", report.summary());
+    assert_eq!(report.certified(), 156);
+    assert_eq!(report.failed(), 0, "{}", report.summary());
+}

@@ -121,6 +121,14 @@ const MIN_ENDGAME_T: f64 = 1e-12;
 /// decided by its valuations so far.
 const DESCENT_BUDGET: usize = 60;
 
+/// Above this `t` a quarter of the descent may take [`SHALLOW_DESCENT_BUDGET`] steps: a path
+/// that is hard to follow there (near a singularity of the homotopy for small `t`) is far from
+/// decided, and the Cauchy loops at so large a radius are no way out.
+const DEEP_DESCENT: f64 = 1e-4;
+
+/// The most steps of one quarter of the descent above [`DEEP_DESCENT`].
+const SHALLOW_DESCENT_BUDGET: usize = 1000;
+
 /// The limit of a path at `t = 0` found by the endgame.
 #[derive(Debug, Clone)]
 pub(crate) struct Endpoint {
@@ -391,7 +399,11 @@ impl<'a, H: Homotopy> Tracker<'a, H> {
                         Segment::Line(C64::from(r), C64::from(inner)),
                         0.25,
                         1.0,
-                        DESCENT_BUDGET,
+                        if r > DEEP_DESCENT {
+                            SHALLOW_DESCENT_BUDGET
+                        } else {
+                            DESCENT_BUDGET
+                        },
                     )
                     .is_err()
                 {
@@ -420,9 +432,10 @@ impl<'a, H: Homotopy> Tracker<'a, H> {
                     }
                 }
             }
-            // Beyond 10¹⁰ in the patch's scale, a point is at infinity whatever its valuations
-            // (they are noise there).
-            if stable_positive || m < FINITE_THRESHOLD * FINITE_THRESHOLD {
+            // Where the descent ends (at its floor, or stalled), a point beyond 10⁵ in the
+            // patch's scale is at infinity whatever its valuations (Bertini's finite threshold;
+            // the valuations are noise that far out).
+            if stable_positive || m < FINITE_THRESHOLD {
                 return Ok(Endpoint {
                     z: z.clone(),
                     winding: 0,
