@@ -30,6 +30,7 @@
 mod parameter;
 mod start;
 mod tracker;
+mod witness;
 
 pub use parameter::{
     MonodromyReport, MonodromySettings, ParameterError, ParametrizedSystem, monodromy_solve,
@@ -38,6 +39,7 @@ pub use parameter::{
 
 pub use start::StartSystem;
 pub use tracker::{PathFailure, TrackerSettings};
+pub use witness::{Component, DecomposeError, DecomposeSettings, Decomposition, decompose};
 
 use crate::certify::{Certificate, Reality, certify_roots};
 pub use crate::poly::C64;

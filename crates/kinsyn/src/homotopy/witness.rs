@@ -1,0 +1,561 @@
+//! Numerical irreducible decomposition: the solution set `V(F)` of a polynomial system of `n`
+//! equations in `N` unknowns (any `n`), as a list of irreducible components, each known by its
+//! dimension, its degree and a **witness set** — its points on a generic affine slice of
+//! complementary dimension (Sommese, Verschelde & Wampler, *Numerical decomposition of the
+//! solution sets of polynomial systems into irreducible components*, SIAM J. Numer. Anal. 38,
+//! 2001; Sommese & Wampler 2005, ch. 13–15).
+//!
+//! For each dimension `d` from the top down, [`decompose`]:
+//! 1. meets `V(F)` with `d` random complex affine hyperplanes `L_d` and randomises `F` to
+//!    `N − d` random complex combinations of its equations, and solves that square system with
+//!    [`solve`](super::solve); the finite endpoints that satisfy `F` itself (relative residual)
+//!    form the witness superset `Ŵ_d`;
+//! 2. keeps the **regular** endpoints as witness points: a point of `Ŵ_d` on a component of
+//!    larger dimension `d' > d` lies on the positive-dimensional set (that component) ∩ `L_d`,
+//!    so it is never a regular solution — junk is singular. Singular endpoints are put to the
+//!    **homotopy membership test** against every larger witness set (its slice is translated
+//!    to pass through the point; the point is on that component iff it is an endpoint); those
+//!    that pass are junk and dropped, those that fail would be witness points of non-reduced
+//!    components (multiplicity > 1), which this version does not decompose: they are reported
+//!    in [`Decomposition::unresolved`];
+//! 3. splits each witness set into irreducible pieces by **monodromy** (the slice moved
+//!    around loops through random complex slices; points that permute lie on one component)
+//!    and confirms each piece with the **linear trace test** (the sum of a linear function
+//!    over a piece's points is affine in a parallel translation of the slice exactly when the
+//!    piece is a union of whole components; tested with three translations). Pieces that fail
+//!    after the loops stop are merged along sets whose traces' nonlinear parts cancel.
+//!
+//! All random choices come from one seed.
+
+use super::parameter::{ParameterError, ParametrizedSystem, track_parameters};
+use super::{C64, HomotopyError, SolveSettings, relative_distance, solve};
+use crate::poly::{Poly, System};
+use rand::SeedableRng;
+use rand_chacha::ChaCha8Rng;
+use rand_distr::{Distribution, StandardNormal};
+
+/// Why a system cannot be decomposed.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum DecomposeError {
+    /// No unknowns or no equations.
+    #[error("the system has {equations} equations in {variables} unknowns: nothing to decompose")]
+    Empty {
+        /// Equations.
+        equations: usize,
+        /// Unknowns.
+        variables: usize,
+    },
+    /// An equation is identically zero: it constrains nothing.
+    #[error("equation {0} is identically zero")]
+    ZeroEquation(usize),
+    /// A sliced system could not be solved.
+    #[error("dimension {dimension}: {source}")]
+    Solve {
+        /// The dimension being sliced.
+        dimension: usize,
+        /// The solver's complaint.
+        source: HomotopyError,
+    },
+    /// The sliced family could not be formed (a variable named like a slice parameter).
+    #[error("the slice family: {0}")]
+    Family(String),
+}
+
+/// How to decompose.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DecomposeSettings {
+    /// The seed of every random choice (slices, randomisations, loops, the solver's γ).
+    pub seed: u64,
+    /// The solver of the sliced square systems (its seed is derived from `seed`).
+    pub solve: SolveSettings,
+    /// A point satisfies `F` when each `|f_i(x)|` is below this fraction of the sum of its
+    /// terms' magnitudes at `x` (taken `≥ 1`).
+    pub residual_tolerance: f64,
+    /// The most monodromy loops per dimension.
+    pub max_loops: usize,
+    /// Stop the loops after this many in a row that merge nothing while some piece still fails
+    /// the trace test.
+    pub stall_loops: usize,
+    /// A piece passes the trace test when the nonlinear part of its trace is below this
+    /// fraction of the size of its points' traces.
+    pub trace_tolerance: f64,
+}
+
+impl Default for DecomposeSettings {
+    fn default() -> Self {
+        Self {
+            seed: 1,
+            solve: SolveSettings {
+                certify: false,
+                ..SolveSettings::default()
+            },
+            residual_tolerance: 1e-8,
+            max_loops: 20,
+            stall_loops: 5,
+            trace_tolerance: 1e-6,
+        }
+    }
+}
+
+/// One irreducible component of `V(F)`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Component {
+    /// Its dimension.
+    pub dimension: usize,
+    /// Its degree: the number of points in which a generic affine slice of complementary
+    /// dimension meets it.
+    pub degree: usize,
+    /// Those points, on the slice of its dimension ([`Decomposition::slices`]).
+    pub witness_points: Vec<Vec<C64>>,
+    /// A point on the component.
+    pub sample_point: Vec<C64>,
+    /// Whether the linear trace test confirmed the piece as a whole component (always true in
+    /// dimension 0, where a point is a component).
+    pub trace_test_passed: bool,
+}
+
+/// The irreducible decomposition of `V(F)`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Decomposition {
+    /// The components, by decreasing dimension.
+    pub components: Vec<Component>,
+    /// The slice of each dimension `d` (index `d`): `d` rows `[a_0, …, a_{N−1}, b]`, the
+    /// hyperplanes `Σ a_j x_j + b = 0`.
+    pub slices: Vec<Vec<Vec<C64>>>,
+    /// Singular points of the witness supersets that no larger component contains: witness
+    /// points of non-reduced components, not decomposed here (`(dimension, point)`).
+    pub unresolved: Vec<(usize, Vec<C64>)>,
+    /// Singular points of the witness supersets found on larger components and dropped.
+    pub junk: usize,
+    /// Paths tracked (solves, loops, trace and membership tests).
+    pub paths: usize,
+    /// Wall time.
+    pub seconds: f64,
+}
+
+impl Decomposition {
+    /// The `(dimension, degree)` of every component, by decreasing dimension then degree.
+    #[must_use]
+    pub fn signature(&self) -> Vec<(usize, usize)> {
+        let mut s: Vec<(usize, usize)> = self
+            .components
+            .iter()
+            .map(|c| (c.dimension, c.degree))
+            .collect();
+        s.sort_unstable_by(|a, b| b.cmp(a));
+        s
+    }
+}
+
+/// A witness set of one dimension: its slice family and points.
+struct Witness {
+    family: ParametrizedSystem,
+    base: Vec<C64>,
+    points: Vec<Vec<C64>>,
+}
+
+/// The irreducible decomposition of `V(system)` (module documentation).
+///
+/// # Errors
+/// [`DecomposeError`] for a system without equations or unknowns, with a zero equation, or
+/// whose sliced systems the solver refuses (too many paths).
+pub fn decompose(
+    system: &System,
+    settings: &DecomposeSettings,
+) -> Result<Decomposition, DecomposeError> {
+    let clock = std::time::Instant::now();
+    let (n, big_n) = (system.len(), system.nvars());
+    if n == 0 || big_n == 0 {
+        return Err(DecomposeError::Empty {
+            equations: n,
+            variables: big_n,
+        });
+    }
+    if let Some(i) = system.equations().iter().position(Poly::is_empty) {
+        return Err(DecomposeError::ZeroEquation(i));
+    }
+    let mut rng = ChaCha8Rng::seed_from_u64(settings.seed);
+    let lowest = big_n.saturating_sub(n);
+    let mut witnesses: Vec<Option<Witness>> = (0..big_n).map(|_| None).collect();
+    let mut slices = vec![Vec::new(); big_n];
+    let mut decomposition = Decomposition {
+        components: Vec::new(),
+        slices: Vec::new(),
+        unresolved: Vec::new(),
+        junk: 0,
+        paths: 0,
+        seconds: 0.0,
+    };
+    for d in (lowest..big_n).rev() {
+        let family = slice_family(system, d, &mut rng)?;
+        let base: Vec<C64> = (0..d * (big_n + 1)).map(|_| gaussian(&mut rng)).collect();
+        slices[d] = base.chunks(big_n + 1).map(<[C64]>::to_vec).collect();
+        let sliced = family
+            .at(&base)
+            .map_err(|e| DecomposeError::Family(e.to_string()))?;
+        let solve_settings = SolveSettings {
+            seed: settings.seed.wrapping_mul(1000).wrapping_add(d as u64),
+            ..settings.solve.clone()
+        };
+        let report = solve(&sliced, &solve_settings)
+            .map_err(|source| DecomposeError::Solve {
+                dimension: d,
+                source,
+            })?;
+        decomposition.paths += report.paths();
+        let mut points = Vec::new();
+        for s in &report.solutions {
+            if s.regular && satisfies(system, &s.x, settings.residual_tolerance) {
+                points.push(s.x.clone());
+            } else if !s.regular && satisfies(system, &s.x, settings.residual_tolerance.sqrt()) {
+                let (on_larger, paths) = on_larger_component(&witnesses, &s.x, settings);
+                decomposition.paths += paths;
+                if on_larger {
+                    decomposition.junk += 1;
+                } else {
+                    decomposition.unresolved.push((d, s.x.clone()));
+                }
+            }
+        }
+        if points.is_empty() {
+            continue;
+        }
+        let witness = Witness {
+            family,
+            base,
+            points,
+        };
+        let (pieces, paths) = if d == 0 {
+            (
+                (0..witness.points.len()).map(|i| (vec![i], true)).collect(),
+                0,
+            )
+        } else {
+            irreducible_pieces(&witness, settings, &mut rng)
+        };
+        decomposition.paths += paths;
+        for (members, passed) in pieces {
+            let witness_points: Vec<Vec<C64>> =
+                members.iter().map(|i| witness.points[*i].clone()).collect();
+            decomposition.components.push(Component {
+                dimension: d,
+                degree: witness_points.len(),
+                sample_point: witness_points[0].clone(),
+                witness_points,
+                trace_test_passed: passed,
+            });
+        }
+        witnesses[d] = Some(witness);
+    }
+    decomposition.slices = slices;
+    decomposition.seconds = clock.elapsed().as_secs_f64();
+    Ok(decomposition)
+}
+
+fn gaussian(rng: &mut ChaCha8Rng) -> C64 {
+    let re: f64 = StandardNormal.sample(rng);
+    let im: f64 = StandardNormal.sample(rng);
+    C64::new(re, im)
+}
+
+/// The family, in the unknowns then the slice parameters, of `N − d` random combinations of
+/// `F` (or `F` itself when it has exactly `N − d` equations) and `d` affine hyperplanes whose
+/// coefficients are the parameters.
+fn slice_family(
+    system: &System,
+    d: usize,
+    rng: &mut ChaCha8Rng,
+) -> Result<ParametrizedSystem, DecomposeError> {
+    let big_n = system.nvars();
+    let total = big_n + d * (big_n + 1);
+    let widen: Vec<usize> = (0..big_n).collect();
+    let equations: Vec<Poly> = system
+        .equations()
+        .iter()
+        .map(|f| f.relabel(total, &widen))
+        .collect();
+    let mut all: Vec<Poly> = if equations.len() == big_n - d {
+        equations
+    } else {
+        (0..big_n - d)
+            .map(|_| {
+                equations.iter().fold(Poly::zero(total), |acc, f| {
+                    &acc + &f.scale(gaussian(rng))
+                })
+            })
+            .collect()
+    };
+    for k in 0..d {
+        let p = |j: usize| Poly::variable(total, big_n + k * (big_n + 1) + j);
+        let mut hyperplane = p(big_n);
+        for j in 0..big_n {
+            hyperplane = &hyperplane + &(&p(j) * &Poly::variable(total, j));
+        }
+        all.push(hyperplane);
+    }
+    let mut names = system.variables().to_vec();
+    for k in 0..d {
+        for j in 0..=big_n {
+            names.push(format!("slice#{k}#{j}"));
+        }
+    }
+    let family_system =
+        System::new(names, all).map_err(|e| DecomposeError::Family(e.to_string()))?;
+    ParametrizedSystem::new(family_system, d * (big_n + 1))
+        .map_err(|e: ParameterError| DecomposeError::Family(e.to_string()))
+}
+
+/// Whether `x` satisfies every equation of `system` to `tolerance`, relative to the sum of the
+/// equation's terms' magnitudes at `x`.
+fn satisfies(system: &System, x: &[C64], tolerance: f64) -> bool {
+    system.equations().iter().all(|f| {
+        let scale: f64 = f
+            .terms()
+            .map(|(e, c)| {
+                e.iter()
+                    .zip(x)
+                    .fold(c.norm(), |acc, (k, v)| acc * v.norm().powi(i32::try_from(*k).unwrap_or(i32::MAX)))
+            })
+            .sum::<f64>()
+            .max(1.0);
+        f.eval(x).norm() <= tolerance * scale
+    })
+}
+
+/// The homotopy membership test of `y` against every larger witness set: each set's slice is
+/// translated to pass through `y` and its points followed; `y` lies on one of those
+/// components iff it is among the endpoints. Returns the verdict and the paths tracked.
+fn on_larger_component(
+    witnesses: &[Option<Witness>],
+    y: &[C64],
+    settings: &DecomposeSettings,
+) -> (bool, usize) {
+    let big_n = y.len();
+    let mut paths = 0;
+    for w in witnesses.iter().flatten() {
+        let mut target = w.base.clone();
+        for row in target.chunks_mut(big_n + 1) {
+            row[big_n] = -row[..big_n]
+                .iter()
+                .zip(y)
+                .map(|(a, v)| a * v)
+                .sum::<C64>();
+        }
+        paths += w.points.len();
+        let Ok(ends) = track_parameters(
+            &w.family,
+            &w.base,
+            &target,
+            &w.points,
+            settings.solve.tracker,
+        ) else {
+            continue;
+        };
+        if ends
+            .iter()
+            .flatten()
+            .any(|e| relative_distance(e, y) <= MEMBERSHIP_TOLERANCE)
+        {
+            return (true, paths);
+        }
+    }
+    (false, paths)
+}
+
+/// A singular point and an endpoint of the membership test are the same point within this
+/// relative distance (singular endpoints are accurate to about the square root of the
+/// working precision).
+const MEMBERSHIP_TOLERANCE: f64 = 1e-5;
+
+/// Same point within this relative distance (regular endpoints of the monodromy loops).
+const SAME_POINT: f64 = 1e-6;
+
+/// The irreducible pieces of a positive-dimensional witness set (indices into its points, and
+/// whether the trace test confirmed the piece), and the paths tracked.
+fn irreducible_pieces(
+    w: &Witness,
+    settings: &DecomposeSettings,
+    rng: &mut ChaCha8Rng,
+) -> (Vec<(Vec<usize>, bool)>, usize) {
+    let m = w.points.len();
+    let mut paths = 0;
+    let (nonlinear, scale, traced) = trace_parts(w, settings, rng);
+    paths += 2 * m;
+    let mut parent: Vec<usize> = (0..m).collect();
+    let passes = |members: &[usize]| -> bool {
+        members.iter().all(|i| traced[*i]) && {
+            let s: C64 = members.iter().map(|i| nonlinear[*i]).sum();
+            let size: f64 = members.iter().map(|i| scale[*i]).sum::<f64>().max(1.0);
+            s.norm() <= settings.trace_tolerance * size
+        }
+    };
+    let (mut loops, mut stalled) = (0, 0);
+    loop {
+        let groups = groups_of(&mut parent);
+        if groups.iter().all(|g| passes(g))
+            || loops >= settings.max_loops
+            || stalled >= settings.stall_loops
+        {
+            break;
+        }
+        loops += 1;
+        let p1: Vec<C64> = (0..w.base.len()).map(|_| gaussian(rng)).collect();
+        let p2: Vec<C64> = (0..w.base.len()).map(|_| gaussian(rng)).collect();
+        let mut current: Vec<Option<Vec<C64>>> = w.points.iter().cloned().map(Some).collect();
+        for (a, b) in [(&w.base, &p1), (&p1, &p2), (&p2, &w.base)] {
+            let live: Vec<usize> = (0..m).filter(|i| current[*i].is_some()).collect();
+            let starts: Vec<Vec<C64>> = live
+                .iter()
+                .map(|i| current[*i].clone().expect("live"))
+                .collect();
+            paths += starts.len();
+            let Ok(ends) = track_parameters(&w.family, a, b, &starts, settings.solve.tracker)
+            else {
+                break;
+            };
+            for (i, e) in live.into_iter().zip(ends) {
+                current[i] = e.ok();
+            }
+        }
+        let mut merged = false;
+        for (i, end) in current.iter().enumerate() {
+            let Some(end) = end else { continue };
+            if let Some(j) = (0..m).find(|j| relative_distance(&w.points[*j], end) <= SAME_POINT) {
+                merged |= union(&mut parent, i, j);
+            }
+        }
+        stalled = if merged { 0 } else { stalled + 1 };
+    }
+    let groups = groups_of(&mut parent);
+    let (mut done, failing): (Vec<Vec<usize>>, Vec<Vec<usize>>) =
+        groups.into_iter().partition(|g| passes(g));
+    let mut pieces: Vec<(Vec<usize>, bool)> = done.drain(..).map(|g| (g, true)).collect();
+    pieces.extend(combine_failing(failing, &passes));
+    pieces.sort_by_key(|(g, _)| std::cmp::Reverse(g.len()));
+    (pieces, paths)
+}
+
+/// The most failing monodromy groups whose unions are searched for passing combinations.
+const MAX_COMBINED: usize = 12;
+
+/// Unions of failing groups that pass the trace test, smallest first; what remains is one
+/// piece per failing group, marked as failing.
+fn combine_failing(
+    mut failing: Vec<Vec<usize>>,
+    passes: &dyn Fn(&[usize]) -> bool,
+) -> Vec<(Vec<usize>, bool)> {
+    let mut pieces = Vec::new();
+    if failing.len() <= MAX_COMBINED {
+        let mut size = 2;
+        while size <= failing.len() {
+            let k = failing.len();
+            let found = (1u32..(1 << k)).find(|mask| {
+                mask.count_ones() as usize == size && {
+                    let union: Vec<usize> = (0..k)
+                        .filter(|b| mask & (1 << b) != 0)
+                        .flat_map(|b| failing[b].iter().copied())
+                        .collect();
+                    passes(&union)
+                }
+            });
+            if let Some(mask) = found {
+                let mut union = Vec::new();
+                for b in (0..k).rev() {
+                    if mask & (1 << b) != 0 {
+                        union.extend(failing.remove(b));
+                    }
+                }
+                union.sort_unstable();
+                pieces.push((union, true));
+            } else {
+                size += 1;
+            }
+        }
+    }
+    pieces.extend(failing.into_iter().map(|g| (g, false)));
+    pieces
+}
+
+/// For each witness point, the nonlinear part of its linear trace under a parallel translation
+/// of the slice: with `ℓ` a random linear form and `x(t)` the point on the slice translated by
+/// `t δ`, the second difference `(ℓ(x(t1)) − ℓ(x(0)))/t1 − (ℓ(x(t2)) − ℓ(x(0)))/t2`; its size
+/// scale; and whether both translations were tracked.
+fn trace_parts(
+    w: &Witness,
+    settings: &DecomposeSettings,
+    rng: &mut ChaCha8Rng,
+) -> (Vec<C64>, Vec<f64>, Vec<bool>) {
+    let big_n = w.points[0].len();
+    let form: Vec<C64> = (0..big_n).map(|_| gaussian(rng)).collect();
+    let ell = |x: &[C64]| -> C64 { form.iter().zip(x).map(|(a, v)| a * v).sum() };
+    let delta: Vec<C64> = (0..w.base.len() / (big_n + 1))
+        .map(|_| gaussian(rng))
+        .collect();
+    let (t1, t2) = (C64::new(0.5, 0.2), C64::new(-0.4, 0.3));
+    let moved = |t: C64| -> Vec<Option<Vec<C64>>> {
+        let mut target = w.base.clone();
+        for (row, dk) in target.chunks_mut(big_n + 1).zip(&delta) {
+            row[big_n] += t * dk;
+        }
+        match track_parameters(&w.family, &w.base, &target, &w.points, settings.solve.tracker) {
+            Ok(ends) => ends.into_iter().map(Result::ok).collect(),
+            Err(_) => vec![None; w.points.len()],
+        }
+    };
+    let (a, b) = (moved(t1), moved(t2));
+    let mut nonlinear = Vec::new();
+    let mut scale = Vec::new();
+    let mut traced = Vec::new();
+    for (x0, (x1, x2)) in w.points.iter().zip(a.iter().zip(&b)) {
+        if let (Some(x1), Some(x2)) = (x1, x2) {
+            let (l0, l1, l2) = (ell(x0), ell(x1), ell(x2));
+            nonlinear.push((l1 - l0) / t1 - (l2 - l0) / t2);
+            scale.push(l0.norm() + l1.norm() + l2.norm());
+            traced.push(true);
+        } else {
+            nonlinear.push(C64::from(0.0));
+            scale.push(0.0);
+            traced.push(false);
+        }
+    }
+    (nonlinear, scale, traced)
+}
+
+fn find(parent: &mut [usize], i: usize) -> usize {
+    let mut r = i;
+    while parent[r] != r {
+        r = parent[r];
+    }
+    let mut k = i;
+    while parent[k] != r {
+        let next = parent[k];
+        parent[k] = r;
+        k = next;
+    }
+    r
+}
+
+fn union(parent: &mut [usize], i: usize, j: usize) -> bool {
+    let (a, b) = (find(parent, i), find(parent, j));
+    if a == b {
+        false
+    } else {
+        parent[a.max(b)] = a.min(b);
+        true
+    }
+}
+
+fn groups_of(parent: &mut [usize]) -> Vec<Vec<usize>> {
+    let mut groups: Vec<Vec<usize>> = Vec::new();
+    let mut root_of_group: Vec<usize> = Vec::new();
+    for i in 0..parent.len() {
+        let r = find(parent, i);
+        if let Some(k) = root_of_group.iter().position(|x| *x == r) {
+            groups[k].push(i);
+        } else {
+            root_of_group.push(r);
+            groups.push(vec![i]);
+        }
+    }
+    groups
+}
