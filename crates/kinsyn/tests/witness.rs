@@ -2,11 +2,15 @@
 //! 2001; Sommese & Wampler 2005, ch. 13–15) on solution sets whose components are known by
 //! hand: each expected `(dimension, degree)` is derived in the test's comment.
 
-use kinsyn::homotopy::{Decomposition, DecomposeSettings, decompose};
+use kinsyn::homotopy::{DecomposeSettings, Decomposition, decompose};
 use kinsyn::poly::{Poly, System};
 
 fn xyz() -> (Poly, Poly, Poly) {
-    (Poly::variable(3, 0), Poly::variable(3, 1), Poly::variable(3, 2))
+    (
+        Poly::variable(3, 0),
+        Poly::variable(3, 1),
+        Poly::variable(3, 2),
+    )
 }
 
 fn system(equations: Vec<Poly>) -> System {
@@ -77,7 +81,12 @@ fn plane_and_point() {
     ]);
     let d = run(&s, 1);
     assert_eq!(d.signature(), vec![(2, 1), (0, 1)]);
-    let point = &d.components.iter().find(|c| c.dimension == 0).unwrap().sample_point;
+    let point = &d
+        .components
+        .iter()
+        .find(|c| c.dimension == 0)
+        .unwrap()
+        .sample_point;
     assert!(point.iter().all(|v| (v - 1.0).norm() < 1e-8), "{point:?}");
     assert!(d.unresolved.is_empty());
 }
@@ -114,6 +123,55 @@ fn viviani_curve_is_one_quartic() {
 fn seed_stability() {
     let s = twisted_cubic_and_line();
     for seed in [2, 3, 4, 5] {
-        assert_eq!(run(&s, seed).signature(), vec![(1, 3), (1, 1)], "seed {seed}");
+        assert_eq!(
+            run(&s, seed).signature(),
+            vec![(1, 3), (1, 1)],
+            "seed {seed}"
+        );
     }
+}
+
+/// The trace test alone, without monodromy loops: every witness point starts as its own piece
+/// and the pieces are merged only where the traces' nonlinear parts cancel, which must rebuild
+/// the cubic (3 points) and the line (1 point) of [`twisted_cubic_and_line`] and the single
+/// quartic of Viviani's curve.
+#[test]
+fn trace_test_alone_groups_the_points() {
+    let settings = DecomposeSettings {
+        max_loops: 0,
+        ..DecomposeSettings::default()
+    };
+    let d = decompose(&twisted_cubic_and_line(), &settings).unwrap();
+    assert_eq!(d.signature(), vec![(1, 3), (1, 1)]);
+    assert!(d.components.iter().all(|c| c.trace_test_passed));
+    let (x, y, z) = xyz();
+    let sphere = &(&(&x * &x) + &(&y * &y)) + &(&(&z * &z) - &c(4.0));
+    let xm = &x - &c(1.0);
+    let cylinder = &(&(&xm * &xm) + &(&y * &y)) - &c(1.0);
+    let d = decompose(&system(vec![sphere, cylinder]), &settings).unwrap();
+    assert_eq!(d.signature(), vec![(1, 4)]);
+}
+
+/// `x² = y = 0`: the z-axis counted twice, a non-reduced line. Its witness point is a singular
+/// endpoint that no larger component contains: reported as unresolved, not as a component.
+#[test]
+fn non_reduced_line_is_unresolved() {
+    let (x, y, _) = xyz();
+    let d = run(&system(vec![&x * &x, y]), 1);
+    assert!(d.components.is_empty(), "{:?}", d.signature());
+    assert_eq!(d.unresolved.len(), 1);
+    let (dim, p) = &d.unresolved[0];
+    assert_eq!(*dim, 1);
+    assert!(p[0].norm() < 1e-5 && p[1].norm() < 1e-8, "{p:?}");
+}
+
+/// Bad input is an error, not a panic.
+#[test]
+fn zero_equation_is_refused() {
+    let (x, _, _) = xyz();
+    let err = decompose(
+        &system(vec![x, Poly::zero(3)]),
+        &DecomposeSettings::default(),
+    );
+    assert!(err.is_err());
 }

@@ -197,11 +197,10 @@ pub fn decompose(
             seed: settings.seed.wrapping_mul(1000).wrapping_add(d as u64),
             ..settings.solve.clone()
         };
-        let report = solve(&sliced, &solve_settings)
-            .map_err(|source| DecomposeError::Solve {
-                dimension: d,
-                source,
-            })?;
+        let report = solve(&sliced, &solve_settings).map_err(|source| DecomposeError::Solve {
+            dimension: d,
+            source,
+        })?;
         decomposition.paths += report.paths();
         let mut points = Vec::new();
         for s in &report.solutions {
@@ -279,9 +278,9 @@ fn slice_family(
     } else {
         (0..big_n - d)
             .map(|_| {
-                equations.iter().fold(Poly::zero(total), |acc, f| {
-                    &acc + &f.scale(gaussian(rng))
-                })
+                equations
+                    .iter()
+                    .fold(Poly::zero(total), |acc, f| &acc + &f.scale(gaussian(rng)))
             })
             .collect()
     };
@@ -312,9 +311,9 @@ fn satisfies(system: &System, x: &[C64], tolerance: f64) -> bool {
         let scale: f64 = f
             .terms()
             .map(|(e, c)| {
-                e.iter()
-                    .zip(x)
-                    .fold(c.norm(), |acc, (k, v)| acc * v.norm().powi(i32::try_from(*k).unwrap_or(i32::MAX)))
+                e.iter().zip(x).fold(c.norm(), |acc, (k, v)| {
+                    acc * v.norm().powi(i32::try_from(*k).unwrap_or(i32::MAX))
+                })
             })
             .sum::<f64>()
             .max(1.0);
@@ -335,11 +334,7 @@ fn on_larger_component(
     for w in witnesses.iter().flatten() {
         let mut target = w.base.clone();
         for row in target.chunks_mut(big_n + 1) {
-            row[big_n] = -row[..big_n]
-                .iter()
-                .zip(y)
-                .map(|(a, v)| a * v)
-                .sum::<C64>();
+            row[big_n] = -row[..big_n].iter().zip(y).map(|(a, v)| a * v).sum::<C64>();
         }
         paths += w.points.len();
         let Ok(ends) = track_parameters(
@@ -497,7 +492,13 @@ fn trace_parts(
         for (row, dk) in target.chunks_mut(big_n + 1).zip(&delta) {
             row[big_n] += t * dk;
         }
-        match track_parameters(&w.family, &w.base, &target, &w.points, settings.solve.tracker) {
+        match track_parameters(
+            &w.family,
+            &w.base,
+            &target,
+            &w.points,
+            settings.solve.tracker,
+        ) {
             Ok(ends) => ends.into_iter().map(Result::ok).collect(),
             Err(_) => vec![None; w.points.len()],
         }
