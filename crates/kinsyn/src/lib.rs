@@ -32,6 +32,7 @@ pub mod motion;
 pub mod notation;
 pub mod paper;
 pub mod poly;
+pub mod ruu;
 pub mod screw;
 pub mod series;
 pub mod spatial;
