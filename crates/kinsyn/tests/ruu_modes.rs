@@ -86,7 +86,9 @@ fn singular_finds_the_same_two_modes() {
             .lines()
             .find(|l| l.starts_with(&format!("{g} = ")))
             .unwrap();
-        script += &format!("poly {line}\n");
+        script.push_str("poly ");
+        script.push_str(line);
+        script.push('\n');
     }
     script += "poly g13 = x0*y0+x1*y1+x2*y2+x3*y3;\nideal I = g1,g2,g3,g4,g13;\nlist P = minAssGTZ(I);\nint k;\nfor (k=1; k<=size(P); k++) { ideal S(k) = std(P[k]); print(string(dim(S(k))) + \" \" + string(mult(S(k))) + \" : \" + string(P[k])); }\nquit;\n";
     let mut child = std::process::Command::new("Singular")
