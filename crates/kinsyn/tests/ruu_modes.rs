@@ -7,6 +7,9 @@ use kinsyn::homotopy::{DecomposeSettings, decompose};
 use kinsyn::poly::{Poly, System};
 use kinsyn::ruu::{InputMode, Ruu};
 
+#[path = "common/singular.rs"]
+mod singular;
+
 /// The inputs `t1i = tan(θ1i/2)`: generic values, exactly 3/10, −7/10, 11/10, 9/20.
 const INPUTS: [f64; 4] = [0.3, -0.7, 1.1, 0.45];
 
@@ -68,15 +71,6 @@ fn singular_finds_the_same_two_modes() {
     // as rationals): exactly K1 = ⟨x0, x3, x1 y1 + x2 y2⟩ and K2 = ⟨x1, x2, x0 y0 + x3 y3⟩,
     // cones of dimension 5 and degree 2 — the numerical components above plus one dimension
     // and with half the degree (the normalisation g14 is a quadric).
-    use std::io::Write as _;
-    let Ok(probe) = std::process::Command::new("Singular")
-        .arg("--version")
-        .output()
-    else {
-        eprintln!("Singular is not installed: the exact check of the 4-RUU's modes is skipped");
-        return;
-    };
-    assert!(probe.status.success());
     let text = std::fs::read_to_string("../../data/paper004-constraints.txt").unwrap();
     let mut script = String::from(
         "LIB \"primdec.lib\";\nring R = 0,(x0,x1,x2,x3,y0,y1,y2,y3),dp;\nnumber a=2; number b=1; number l=1; number r=2;\nnumber t11=3/10; number t12=-7/10; number t13=11/10; number t14=9/20;\n",
@@ -91,19 +85,9 @@ fn singular_finds_the_same_two_modes() {
         script.push('\n');
     }
     script += "poly g13 = x0*y0+x1*y1+x2*y2+x3*y3;\nideal I = g1,g2,g3,g4,g13;\nlist P = minAssGTZ(I);\nint k;\nfor (k=1; k<=size(P); k++) { ideal S(k) = std(P[k]); print(string(dim(S(k))) + \" \" + string(mult(S(k))) + \" : \" + string(P[k])); }\nquit;\n";
-    let mut child = std::process::Command::new("Singular")
-        .arg("-q")
-        .stdin(std::process::Stdio::piped())
-        .stdout(std::process::Stdio::piped())
-        .spawn()
-        .unwrap();
-    child
-        .stdin
-        .take()
-        .unwrap()
-        .write_all(script.as_bytes())
-        .unwrap();
-    let out = String::from_utf8(child.wait_with_output().unwrap().stdout).unwrap();
+    let Some(out) = singular::run(&script, "the exact check of the 4-RUU's modes") else {
+        return;
+    };
     let mut primes: Vec<&str> = out.lines().filter(|l| l.contains(" : ")).collect();
     primes.sort_unstable();
     assert_eq!(
