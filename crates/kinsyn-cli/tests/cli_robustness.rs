@@ -4,31 +4,10 @@
 
 mod common;
 
-use common::{kinsyn, stderr, stdout};
+use common::{assert_refused, kinsyn, stderr, stdout};
 use std::io::Read;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output, Stdio};
-
-/// Asserts the contract for bad input: exit 2, nothing on stdout, one stderr line starting with
-/// `kinsyn: error:` that holds no control or bidirectional-formatting character, containing
-/// every needle.
-fn assert_refused(o: &Output, what: &str, needles: &[&str]) {
-    let err = stderr(o);
-    assert_eq!(o.status.code(), Some(2), "{what}: {err}");
-    assert!(stdout(o).is_empty(), "{what}: stdout {}", stdout(o));
-    assert_eq!(err.lines().count(), 1, "{what}: {err:?}");
-    assert!(err.starts_with("kinsyn: error: "), "{what}: {err}");
-    let line = err.trim_end_matches('\n');
-    assert!(
-        !line
-            .chars()
-            .any(|c| c.is_control() || ('\u{2028}'..='\u{202e}').contains(&c)),
-        "{what}: unsafe character in {line:?}"
-    );
-    for needle in needles {
-        assert!(err.contains(needle), "{what}: {needle:?} not in {err}");
-    }
-}
+use std::process::{Command, Stdio};
 
 fn write(dir: &Path, name: &str, bytes: &[u8]) -> PathBuf {
     let path = dir.join(name);

@@ -5,13 +5,12 @@
 
 mod common;
 
-use common::{kinsyn, stderr, stdout};
+use common::{assert_refused, kinsyn, stderr, stdout};
 use kinsyn::poly::{C64, System, bertini};
 use nalgebra::{Matrix3, Rotation3, Vector3};
 use serde_json::Value;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
-use std::process::Output;
 
 /// The repository root (the binary's working directory in [`kinsyn`]).
 fn root() -> PathBuf {
@@ -23,19 +22,6 @@ fn json(args: &[&str]) -> Value {
     let o = kinsyn(args);
     assert_eq!(o.status.code(), Some(0), "{args:?}: {}", stderr(&o));
     serde_json::from_str(&stdout(&o)).unwrap()
-}
-
-/// Asserts the contract for bad input: exit 2, nothing on stdout, one stderr line starting with
-/// `kinsyn: error:` and containing every needle (no panic: a panic exits 101).
-fn assert_refused(o: &Output, what: &str, needles: &[&str]) {
-    let err = stderr(o);
-    assert_eq!(o.status.code(), Some(2), "{what}: {err}");
-    assert!(stdout(o).is_empty(), "{what}: stdout {}", stdout(o));
-    assert_eq!(err.lines().count(), 1, "{what}: {err:?}");
-    assert!(err.starts_with("kinsyn: error: "), "{what}: {err}");
-    for needle in needles {
-        assert!(err.contains(needle), "{what}: {needle:?} not in {err}");
-    }
 }
 
 fn write(dir: &Path, name: &str, bytes: &[u8]) -> String {

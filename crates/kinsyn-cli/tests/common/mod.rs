@@ -24,3 +24,25 @@ pub fn stdout(o: &std::process::Output) -> String {
 pub fn stderr(o: &std::process::Output) -> String {
     String::from_utf8(o.stderr.clone()).unwrap()
 }
+
+#[allow(dead_code)]
+/// Asserts the contract for bad input: exit 2, nothing on stdout, one stderr line starting with
+/// `kinsyn: error:` that holds no control or bidirectional-formatting character, containing
+/// every needle.
+pub fn assert_refused(o: &std::process::Output, what: &str, needles: &[&str]) {
+    let err = stderr(o);
+    assert_eq!(o.status.code(), Some(2), "{what}: {err}");
+    assert!(stdout(o).is_empty(), "{what}: stdout {}", stdout(o));
+    assert_eq!(err.lines().count(), 1, "{what}: {err:?}");
+    assert!(err.starts_with("kinsyn: error: "), "{what}: {err}");
+    let line = err.trim_end_matches('\n');
+    assert!(
+        !line
+            .chars()
+            .any(|c| c.is_control() || ('\u{2028}'..='\u{202e}').contains(&c)),
+        "{what}: unsafe character in {line:?}"
+    );
+    for needle in needles {
+        assert!(err.contains(needle), "{what}: {needle:?} not in {err}");
+    }
+}

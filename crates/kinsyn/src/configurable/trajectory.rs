@@ -100,7 +100,7 @@ fn pose_unknowns(p: &CornerPose) -> Vec<C64> {
 #[must_use]
 pub fn assemble(m: &Configurable, q: &[f64; 4], guess: &CornerPose) -> Option<CornerPose> {
     let family = elbow_family(m);
-    let program = family.system().program();
+    let program = family.program();
     let mut ws = program.workspace::<C64>();
     let p = elbow_parameters(m, q);
     let mut x: Vec<f64> = pose_unknowns(guess).iter().map(|c| c.re).collect();
@@ -178,7 +178,7 @@ pub struct TrajectoryReport {
 /// The unknowns' rates `ẋ = −F_x⁻¹ F_p ṗ` and the Jacobian's inverse condition at `(x, p)`.
 fn rates(family: &ParametrizedSystem, x: &[f64], p: &[f64], dp: &[f64]) -> Option<(Vec<f64>, f64)> {
     let point: Vec<C64> = x.iter().chain(p).map(|v| C64::from(*v)).collect();
-    let program = family.system().program();
+    let program = family.program();
     let mut ws = program.workspace::<C64>();
     let mut values = vec![C64::from(0.0); 6];
     let mut jac = vec![C64::from(0.0); 6 * 14];

@@ -86,6 +86,12 @@ impl ParametrizedSystem {
         self.system.nvars() - self.unknowns
     }
 
+    /// The compiled family (values and Jacobian in unknowns and parameters).
+    #[must_use]
+    pub fn program(&self) -> &Program {
+        &self.program
+    }
+
     /// The family's system (unknowns, then parameters).
     #[must_use]
     pub fn system(&self) -> &System {

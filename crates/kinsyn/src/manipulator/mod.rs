@@ -311,6 +311,17 @@ impl Manipulator {
         })
     }
 
+    /// The moving body `name` (an index into [`Manipulator::bodies`]), or the error that lists
+    /// the bodies there are.
+    fn moving_body(&self, name: &str) -> Result<usize, RequestError> {
+        self.body_named(name)
+            .ok_or_else(|| RequestError::UnknownBody {
+                name: name.to_string(),
+                manipulator: self.name.clone(),
+                known: self.bodies.iter().map(|b| b.name.clone()).collect(),
+            })
+    }
+
     /// The same manipulator with another moving body as its end-effector (by name): every
     /// analysis of the copy (pose, `--pose`, twist space, dof, motion pattern, modes) is of
     /// that body.
@@ -318,13 +329,7 @@ impl Manipulator {
     /// # Errors
     /// A name that is not a moving body; the message lists them.
     pub fn with_end_effector(&self, name: &str) -> Result<Self, RequestError> {
-        let k = self
-            .body_named(name)
-            .ok_or_else(|| RequestError::UnknownBody {
-                name: name.to_string(),
-                manipulator: self.name.clone(),
-                known: self.bodies.iter().map(|b| b.name.clone()).collect(),
-            })?;
+        let k = self.moving_body(name)?;
         let mut copy = self.clone();
         copy.end_effector = k;
         copy.relative_to = self.relative_to.filter(|&r| r != k);
@@ -342,13 +347,7 @@ impl Manipulator {
     /// # Errors
     /// A name that is not a moving body (the message lists them), or the end-effector itself.
     pub fn relative_to(&self, name: &str) -> Result<Self, RequestError> {
-        let k = self
-            .body_named(name)
-            .ok_or_else(|| RequestError::UnknownBody {
-                name: name.to_string(),
-                manipulator: self.name.clone(),
-                known: self.bodies.iter().map(|b| b.name.clone()).collect(),
-            })?;
+        let k = self.moving_body(name)?;
         if k == self.end_effector {
             return Err(RequestError::RelativeToItself {
                 name: name.to_string(),
