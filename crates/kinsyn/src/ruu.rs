@@ -60,6 +60,11 @@ pub enum InputMode {
     Free,
     /// Given inputs: the values of `t1i = tan(θ1i / 2)`, `i = 1 … 4`.
     Given([f64; 4]),
+    /// Given inputs as the angles `θ1i` in radians: the equations use `cos θ1i` and `sin θ1i`
+    /// in place of `(1 − t1i², 2 t1i) / (1 + t1i²)`, so `θ1i = π` (where the tangent is
+    /// infinite; paper 004 §5.2 computes that self-motion "with the trigonometric functions")
+    /// is covered. The factors `1 + t1i²` of the module documentation are then 1.
+    Angles([f64; 4]),
 }
 
 /// Why a 4-RUU or its inputs are not valid.
@@ -160,7 +165,7 @@ impl Ruu {
     /// # Panics
     /// Never: the names are distinct and every equation is in their ring.
     pub fn constraints(&self, inputs: InputMode) -> Result<System, RuuError> {
-        if let InputMode::Given(t) = inputs
+        if let InputMode::Given(t) | InputMode::Angles(t) = inputs
             && let Some((i, v)) = t.iter().enumerate().find(|(_, v)| !v.is_finite())
         {
             return Err(RuuError::Input {
@@ -172,11 +177,22 @@ impl Ruu {
         let n = names.len();
         let s = StudyVariables::leading(n);
         let passive0 = n - 4;
-        let input = |i: usize| match inputs {
-            InputMode::Free => Poly::variable(n, 8 + i),
-            InputMode::Given(t) => Poly::real(n, t[i]),
-        };
         let one = Poly::real(n, 1.0);
+        // (1 + t², (1 + t²) cos θ, (1 + t²) sin θ) = (1 + t², 1 − t², 2t) of the input angle.
+        let crank = |i: usize| -> (Poly, Poly, Poly) {
+            let t = match inputs {
+                InputMode::Free => Poly::variable(n, 8 + i),
+                InputMode::Given(t) => Poly::real(n, t[i]),
+                InputMode::Angles(theta) => {
+                    return (
+                        one.clone(),
+                        Poly::real(n, theta[i].cos()),
+                        Poly::real(n, theta[i].sin()),
+                    );
+                }
+            };
+            (&one + &(&t * &t), &one - &(&t * &t), t * 2.0)
+        };
         let z = Vector3::z();
         let zero = Vector3::zeros();
         let basis = [Vector3::x(), Vector3::y(), Vector3::z()];
@@ -184,12 +200,8 @@ impl Ruu {
         let mut length = Vec::new();
         let mut axis = Vec::new();
         for i in 0..4 {
-            let t1 = input(i);
+            let (w1, cos1, sin1) = crank(i);
             let t2 = Poly::variable(n, passive0 + i);
-            let w1 = &one + &(&t1 * &t1);
-            // (1 + t²)(cos θ, sin θ) = (1 − t², 2t).
-            let cos1 = &one - &(&t1 * &t1);
-            let sin1 = t1.clone() * 2.0;
             let cos2 = &one - &(&t2 * &t2);
             let sin2 = t2.clone() * 2.0;
             let ai = self.base_joint(i);
