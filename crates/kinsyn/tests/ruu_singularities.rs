@@ -21,6 +21,7 @@ use nalgebra::{DMatrix, Rotation3, Translation3, Unit, Vector3};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use std::f64::consts::{FRAC_PI_2, PI};
+use std::fmt::Write as _;
 
 #[path = "common/singular.rs"]
 mod singular;
@@ -373,13 +374,12 @@ fn singular_inputs_numerically(mode: Mode, t: [C64; 3]) -> Vec<(C64, usize)> {
     distinct(&off_plane, 1e-6)
 }
 
+/// Distinct complex values with their multiplicities.
+type Roots = Vec<(C64, usize)>;
+
 /// Paper 004 eqs. 30–31: the numerical singular inputs against the printed polynomial's
 /// roots. Returns the printed roots (distinct, with multiplicity) that are not found.
-fn compare_with_printed(
-    mode: Mode,
-    t: [f64; 3],
-    printed: &[i128],
-) -> (Vec<(C64, usize)>, Vec<(C64, usize)>) {
+fn compare_with_printed(mode: Mode, t: [f64; 3], printed: &[i128]) -> (Roots, Roots) {
     let t = t.map(real);
     let found = singular_inputs_numerically(mode, t);
     let printed = printed_roots(printed);
@@ -582,7 +582,7 @@ fn singular_script(mode: Mode, inputs: &str, printed: &[i128]) -> String {
             .lines()
             .find(|l| l.starts_with(&format!("{g} = ")))
             .unwrap();
-        s += &format!("poly {line}\n");
+        writeln!(s, "poly {line}").unwrap();
     }
     let d = printed.len() - 1;
     let p: Vec<String> = printed
@@ -590,7 +590,8 @@ fn singular_script(mode: Mode, inputs: &str, printed: &[i128]) -> String {
         .enumerate()
         .map(|(k, c)| format!("({c})*t14^{}", d - k))
         .collect();
-    s += &format!(
+    write!(
+        s,
         "ideal G = g5,g6,g7,g8,x0*y0+x1*y1+x2*y2+x3*y3,x0^2+x1^2+x2^2+x3^2-1;\n\
          G = subst(G,{z0},0); G = subst(G,{z1},0);\n\
          matrix J = jacob(G); matrix C[6][6]; int i,j;\n\
@@ -609,7 +610,8 @@ fn singular_script(mode: Mode, inputs: &str, printed: &[i128]) -> String {
         z0 = zero[0],
         z1 = zero[1],
         p = p.join("+")
-    );
+    )
+    .unwrap();
     s
 }
 
@@ -690,4 +692,187 @@ fn k2_singular_inputs_exactly_eq31() {
     };
     extra.sort();
     assert_eq!(extra, vec!["5*t14-3 ^3", "t14-1 ^3"]);
+}
+
+/// The mode coordinates of a displacement's Study parameters (`study::from_displacement`), and
+/// the largest absolute value of the two that must vanish in the mode.
+fn mode_point(mode: Mode, g: &Displacement) -> (Vec<C64>, f64) {
+    let s = study::from_displacement(g);
+    let off = mode.zero().iter().map(|i| s[*i].abs()).fold(0.0, f64::max);
+    (mode.free().iter().map(|i| real(s[*i])).collect(), off)
+}
+
+/// The largest residual of the mode equations at `x`.
+fn residual(eqs: &[Poly], x: &[C64]) -> f64 {
+    eqs.iter().map(|g| g.eval(x).norm()).fold(0.0, f64::max)
+}
+
+/// The number of singular values of the mode Jacobian below `1e-9 σ_max`, and the ratio of
+/// the smallest singular value above to `σ_max` (the gap).
+fn nullity(eqs: &[Poly], x: &[C64]) -> (usize, f64, f64) {
+    let s = singular_values(&jacobian(eqs, x));
+    let small = s.iter().filter(|v| **v < 1e-9 * s[0]).count();
+    (small, s[s.len() - 1] / s[0], s[s.len() - 1 - small] / s[0])
+}
+
+#[test]
+fn printed_k1_singular_pose() {
+    // Paper 004 §5.1: "solving Eq. (30) for t14 = 1 … θ = (126.934°, −90°, 53.157°, 90°)".
+    // t14 = 1 is a (double) root of eq. 30 as printed, exactly.
+    assert_eq!(eval_exact(&EQ30, 1, 1), 0);
+    // The printed degrees are 2 atan(t) of t = 2, −1, 1/2 converted with π ≈ 3.14
+    // (2 atan 2 = 126.870°, 2 atan ½ = 53.130°), and θ11 has lost the sign of t11 = −2.
+    let rounded_pi = 314.0 / 100.0;
+    let deg = |t: f64| 2.0 * t.atan() * 180.0 / rounded_pi;
+    assert!((deg(2.0) - 126.934).abs() < 5e-4 && (deg(0.5) - 53.157).abs() < 5e-4);
+    assert!((2.0 * 2f64.atan()).to_degrees() - 126.934 < -0.06);
+    // At the stated inputs t11 = −2 (θ11 = −126.87°), t14 = 1 the K1 assemblies contain a
+    // 1-dof self-motion (hand derivation): with the platform turned by π about
+    // u = (2, 1, 0)/√5, B_i − R C_i = ±d for all four legs (d = B_1 − R C_1 = (0.8, −1.6, 0)),
+    // so |T ∓ d| = r for T ⊥ d with |T|² = r² − |d|²: a circle of translations. Every pose of
+    // it is singular (rank 5).
+    let ruu = Ruu::paper004();
+    let theta = [-2.0f64, -1.0, 0.5, 1.0].map(|t| 2.0 * t.atan());
+    let u = Unit::new_normalize(Vector3::new(2.0, 1.0, 0.0));
+    let rot = Rotation3::from_axis_angle(&u, PI);
+    let d = ruu.crank_joint(0, theta[0]) - rot * ruu.platform_joint(0);
+    for (i, th) in theta.iter().enumerate() {
+        let di = ruu.crank_joint(i, *th) - rot * ruu.platform_joint(i);
+        assert!(
+            (di - d).norm() < 1e-12 || (di + d).norm() < 1e-12,
+            "leg {i}: {di}"
+        );
+    }
+    let radius = (ruu.r * ruu.r - d.norm_squared()).sqrt();
+    let across = Vector3::z().cross(&d).normalize();
+    let eqs = mode_equations(Mode::K1, [-2.0, -1.0, 0.5].map(real), Some(real(1.0)));
+    for alpha in [0.3, 1.4, 2.9] {
+        let t = radius * (across * f64::cos(alpha) + Vector3::z() * f64::sin(alpha));
+        let g = Displacement::from_parts(Translation3::from(t), rot);
+        let (x, off) = mode_point(Mode::K1, &g);
+        assert!(off < 1e-12 && residual(&eqs, &x) < 1e-12, "α = {alpha}");
+        let (small, ratio, gap) = nullity(&eqs, &x);
+        eprintln!(
+            "K1 self-motion at t11 = −2, α = {alpha}: σ_min/σ_max = {ratio:.3e}, next {gap:.3e}"
+        );
+        assert_eq!(
+            small, 1,
+            "rank 5 on the self-motion: σ ratio {ratio:e}, next {gap:e}"
+        );
+        assert!(gap > 1e-3, "one small singular value, then {gap:e}");
+    }
+    // At the printed angles' sign, t11 = +2, t14 = 1: no real K1 assembly at all (16 complex
+    // solutions counted with multiplicity; the singular ones among them are complex, with the
+    // platform in the base plane).
+    let (eqs, xs) = assemblies(Mode::K1, [2.0, -1.0, 0.5, 1.0].map(real));
+    let real_count = xs
+        .iter()
+        .filter(|x| x.iter().all(|v| v.im.abs() < 1e-8 * (1.0 + v.norm())))
+        .count();
+    let worst = xs
+        .iter()
+        .map(|x| sigma_ratio(&eqs, x))
+        .fold(f64::INFINITY, f64::min);
+    eprintln!(
+        "K1 at t11 = +2, t14 = 1: {} assemblies, {real_count} real, worst σ_min/σ_max = {worst:.3e}",
+        xs.len()
+    );
+    assert_eq!(real_count, 0);
+}
+
+#[test]
+fn printed_k2_singular_pose_is_regular() {
+    // Paper 004 §5.2: "solving Eq. (31), for example t14 = 1 … θ = (0°, 90°, 0°, 90°)". t14 = 1
+    // is a (triple) root of eq. 31 as reconstructed, but every K2 assembly at t = (0, 1, 0, 1)
+    // has a full-rank mode Jacobian: 16 regular assemblies (4 real); compare with generic
+    // inputs.
+    assert_eq!(eval_exact(&EQ31, 1, 1), 0);
+    let (eqs, xs) = assemblies(Mode::K2, [0.0, 1.0, 0.0, 1.0].map(real));
+    let ratios: Vec<f64> = xs.iter().map(|x| sigma_ratio(&eqs, x)).collect();
+    let worst = ratios.iter().copied().fold(f64::INFINITY, f64::min);
+    let real_count = xs
+        .iter()
+        .filter(|x| x.iter().all(|v| v.im.abs() < 1e-8 * (1.0 + v.norm())))
+        .count();
+    let (generic, n) = most_singular(Mode::K2, [0.3, -0.7, 1.1, 0.45].map(real));
+    eprintln!(
+        "K2 at (0, 1, 0, 1): {} assemblies, {real_count} real, worst σ_min/σ_max = {worst:.3e}; generic inputs: {n} assemblies, worst {generic:.3e}",
+        xs.len()
+    );
+    assert_eq!((xs.len(), real_count), (16, 4));
+    assert!(worst > 1e-4, "a singular assembly: σ ratio {worst:e}");
+}
+
+#[test]
+fn k2_rank_drops_in_the_two_particular_conditions() {
+    // Paper 004 §5.2: det J2 vanishes (a) when all inputs are equal — a 1-dof self-motion, the
+    // platform turning about Z with the cranks fixed — and (b) at θ = (180°, −90°, 0°, 90°),
+    // the cranks pointing inward — a self-motion with translations. Poses derived by hand:
+    // (a) B_i = a e_i + l(cos θ, sin θ, 0); T = l(cos θ, sin θ, 0) + Z e_z, R = Rot(Z, φ):
+    //     |b R e_i − a e_i + Z e_z|² = a² + b² − 2ab cos φ + Z² = r² for every leg.
+    // (b) B_i = (a − l) e_i = b e_i: R = I, any T with |T| = r.
+    let ruu = Ruu::paper004();
+    for theta in [0.0, 0.9, -2.2] {
+        let eqs = mode_equations_angles(Mode::K2, [theta; 4]);
+        for phi in [0.2, -0.6] {
+            let z2 =
+                ruu.r * ruu.r - ruu.a * ruu.a - ruu.b * ruu.b + 2.0 * ruu.a * ruu.b * f64::cos(phi);
+            let t = Vector3::new(ruu.l * theta.cos(), ruu.l * theta.sin(), z2.sqrt());
+            let g = Displacement::from_parts(
+                Translation3::from(t),
+                Rotation3::from_axis_angle(&Vector3::z_axis(), phi),
+            );
+            let (x, off) = mode_point(Mode::K2, &g);
+            assert!(
+                off < 1e-12 && residual(&eqs, &x) < 1e-12,
+                "θ = {theta}, φ = {phi}"
+            );
+            let (small, ratio, gap) = nullity(&eqs, &x);
+            eprintln!(
+                "K2 all inputs {theta}, φ = {phi}: σ_min/σ_max = {ratio:.3e}, next {gap:.3e}"
+            );
+            assert_eq!(small, 1, "σ ratio {ratio:e}, next {gap:e}");
+            assert!(gap > 1e-3, "next {gap:e}");
+        }
+    }
+    let eqs = mode_equations_angles(Mode::K2, [PI, -FRAC_PI_2, 0.0, FRAC_PI_2]);
+    for (alpha, beta) in [(0.4, 1.1), (1.2, -2.5)] {
+        let t = ruu.r
+            * Vector3::new(
+                f64::sin(alpha) * f64::cos(beta),
+                f64::sin(alpha) * f64::sin(beta),
+                f64::cos(alpha),
+            );
+        let g = Displacement::from_parts(Translation3::from(t), Rotation3::identity());
+        let (x, off) = mode_point(Mode::K2, &g);
+        assert!(
+            off < 1e-12 && residual(&eqs, &x) < 1e-12,
+            "α = {alpha}, β = {beta}"
+        );
+        let (small, ratio, gap) = nullity(&eqs, &x);
+        eprintln!(
+            "K2 inward cranks, α = {alpha}, β = {beta}: nullity {small}, σ_min/σ_max = {ratio:.3e}, next {gap:.3e}"
+        );
+        assert_eq!(
+            small, 2,
+            "a 2-sphere of translations: σ ratio {ratio:e}, next {gap:e}"
+        );
+        assert!(gap > 1e-3, "next {gap:e}");
+    }
+    // The rotation of (b) is another branch: R = Rot(Z, φ), T = Z e_z with
+    // |(R − I) b e_i + Z e_z|² = 2b²(1 − cos φ) + Z² = r²; rank 5 there.
+    let phi: f64 = 0.7;
+    let z = (ruu.r * ruu.r - 2.0 * ruu.b * ruu.b * (1.0 - phi.cos())).sqrt();
+    let g = Displacement::from_parts(
+        Translation3::new(0.0, 0.0, z),
+        Rotation3::from_axis_angle(&Vector3::z_axis(), phi),
+    );
+    let (x, off) = mode_point(Mode::K2, &g);
+    assert!(off < 1e-12 && residual(&eqs, &x) < 1e-12);
+    let (small, ratio, gap) = nullity(&eqs, &x);
+    eprintln!(
+        "K2 inward cranks, rotation φ = {phi}: nullity {small}, σ_min/σ_max = {ratio:.3e}, next {gap:.3e}"
+    );
+    assert_eq!(small, 1, "σ ratio {ratio:e}, next {gap:e}");
+    assert!(gap > 1e-3, "next {gap:e}");
 }
