@@ -6,8 +6,8 @@
 //! six equations g5–g8, g13, g14 in the six remaining Study parameters (a square system, §5:
 //! "five constraint equations over five variables" after solving g13 for one of them). A pose
 //! of the mode is singular when this 6×6 **mode Jacobian** drops below its generic rank 6
-//! (its determinant is, up to a constant, the paper's `det J1` / `det J2` times the Jacobian of
-//! the substitution). Two independent computations of where that happens: numerically with
+//! (the paper's 5×5 `det J1` / `det J2` are taken after solving g13 for one unknown, so they
+//! may carry factors this determinant lacks). Two independent computations of where that happens: numerically with
 //! kinsyn's derived equations (homotopy continuation, SVD), and exactly with Singular on the
 //! printed equations (`data/paper004-constraints.txt`): eliminate the Study parameters from the
 //! mode ideal plus the determinant's non-trivial factor. Both are compared with the printed
