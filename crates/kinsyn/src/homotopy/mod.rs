@@ -28,6 +28,7 @@
 //! ```
 
 mod parameter;
+mod regeneration;
 mod start;
 mod tracker;
 mod witness;
@@ -37,6 +38,7 @@ pub use parameter::{
     track_parameters,
 };
 
+pub use regeneration::{RegenerationProgress, regenerate, regenerate_with_progress};
 pub use start::StartSystem;
 pub use tracker::{PathFailure, TrackerSettings};
 pub use witness::{Component, DecomposeError, DecomposeSettings, Decomposition, decompose};

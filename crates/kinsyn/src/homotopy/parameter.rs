@@ -156,6 +156,9 @@ struct Segment<'a> {
     family: &'a ParametrizedSystem,
     from: &'a [C64],
     to: &'a [C64],
+    /// Whether the endgame may find paths diverging in these affine coordinates (measured by
+    /// `1 / (1 + |x|)`): the end member may have fewer solutions than the start.
+    may_diverge: bool,
 }
 
 /// Scratch of a [`Segment`] evaluation.
@@ -216,6 +219,10 @@ impl Homotopy for Segment<'_> {
                 .sum();
         }
     }
+
+    fn infinity_measure(&self, z: &DVector<C64>) -> Option<f64> {
+        self.may_diverge.then(|| 1.0 / (1.0 + z.norm()))
+    }
 }
 
 /// Follows each solution `x` of `F(x; from) = 0` to a solution of `F(x; to) = 0` along the
@@ -233,10 +240,75 @@ pub fn track_parameters(
 ) -> Result<Vec<Result<Vec<C64>, PathFailure>>, ParameterError> {
     family.check(from)?;
     family.check(to)?;
-    let segment = Segment { family, from, to };
+    let segment = Segment {
+        family,
+        from,
+        to,
+        may_diverge: false,
+    };
     Ok(solutions
         .par_iter()
         .map(|x| follow(&segment, settings, x))
+        .collect())
+}
+
+/// The limit of a path followed by [`track_parameters_to_end`].
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) enum FamilyEnd {
+    /// A regular solution of the end member (refined).
+    Regular(Vec<C64>),
+    /// A singular solution (winding number above 1 or a rank-deficient Jacobian), to the
+    /// endgame's accuracy.
+    Singular(Vec<C64>),
+    /// The path diverges: the end member has no solution there.
+    Infinite,
+}
+
+/// Follows each solution of `F(x; from) = 0` along the straight segment of parameters to the
+/// limit at `to`, with the endgame: for segments whose end member is special (fewer or
+/// singular solutions), as in a regeneration homotopy. Each result in the order given.
+///
+/// # Errors
+/// [`ParameterError::ParameterCount`] for parameter points of the wrong length; a path that
+/// fails is an `Err` in its slot.
+pub(crate) fn track_parameters_to_end(
+    family: &ParametrizedSystem,
+    from: &[C64],
+    to: &[C64],
+    solutions: &[Vec<C64>],
+    settings: TrackerSettings,
+) -> Result<Vec<Result<FamilyEnd, PathFailure>>, ParameterError> {
+    family.check(from)?;
+    family.check(to)?;
+    let segment = Segment {
+        family,
+        from,
+        to,
+        may_diverge: true,
+    };
+    Ok(solutions
+        .par_iter()
+        .map(|x| {
+            let mut tracker = Tracker::new(&segment, settings);
+            let mut z = DVector::from_column_slice(x);
+            let end = tracker.track_to_end(&mut z)?;
+            if end.diverges {
+                return Ok(FamilyEnd::Infinite);
+            }
+            let mut point = end.z;
+            if !point.iter().all(|c| c.re.is_finite() && c.im.is_finite()) {
+                return Err(PathFailure::NotFinite);
+            }
+            let sv = tracker.jacobian(&point, C64::from(0.0)).singular_values();
+            if end.winding == 1 && sv.min() > super::SINGULAR_TOLERANCE * sv.max() {
+                tracker.refine(&mut point, C64::from(0.0), 1e-14);
+                Ok(FamilyEnd::Regular(point.iter().copied().collect()))
+            } else if end.converged {
+                Ok(FamilyEnd::Singular(point.iter().copied().collect()))
+            } else {
+                Err(PathFailure::Endgame)
+            }
+        })
         .collect())
 }
 
@@ -353,6 +425,7 @@ pub fn monodromy_solve(
                         family,
                         from: a,
                         to: b,
+                        may_diverge: false,
                     },
                     settings.tracker,
                     &x,

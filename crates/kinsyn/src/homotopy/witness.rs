@@ -27,7 +27,9 @@
 //!
 //! All random choices come from one seed.
 
-use super::parameter::{ParameterError, ParametrizedSystem, track_parameters};
+use super::parameter::{
+    FamilyEnd, ParameterError, ParametrizedSystem, track_parameters, track_parameters_to_end,
+};
 use super::{C64, HomotopyError, SolveSettings, relative_distance, solve};
 use crate::poly::{Poly, System};
 use rand::SeedableRng;
@@ -147,11 +149,12 @@ impl Decomposition {
     }
 }
 
-/// A witness set of one dimension: its slice family and points.
-struct Witness {
-    family: ParametrizedSystem,
-    base: Vec<C64>,
-    points: Vec<Vec<C64>>,
+/// A witness set of one dimension: its slice family (the equations, then the slice's
+/// hyperplanes with their coefficients as parameters), the slice and its points.
+pub(super) struct Witness {
+    pub(super) family: ParametrizedSystem,
+    pub(super) base: Vec<C64>,
+    pub(super) points: Vec<Vec<C64>>,
 }
 
 /// The irreducible decomposition of `V(system)` (module documentation).
@@ -207,7 +210,7 @@ pub fn decompose(
             if s.regular && satisfies(system, &s.x, settings.residual_tolerance) {
                 points.push(s.x.clone());
             } else if !s.regular && satisfies(system, &s.x, settings.residual_tolerance.sqrt()) {
-                let (on_larger, paths) = on_larger_component(&witnesses, &s.x, settings);
+                let (on_larger, paths) = on_larger_component(witnesses.iter().flatten(), &s.x, settings);
                 decomposition.paths += paths;
                 if on_larger {
                     decomposition.junk += 1;
@@ -251,7 +254,7 @@ pub fn decompose(
     Ok(decomposition)
 }
 
-fn gaussian(rng: &mut ChaCha8Rng) -> C64 {
+pub(super) fn gaussian(rng: &mut ChaCha8Rng) -> C64 {
     let re: f64 = StandardNormal.sample(rng);
     let im: f64 = StandardNormal.sample(rng);
     C64::new(re, im)
@@ -304,40 +307,48 @@ fn slice_family(
         .map_err(|e: ParameterError| DecomposeError::Family(e.to_string()))
 }
 
-/// Whether `x` satisfies every equation of `system` to `tolerance`, relative to the sum of the
-/// equation's terms' magnitudes at `x`.
-fn satisfies(system: &System, x: &[C64], tolerance: f64) -> bool {
-    system.equations().iter().all(|f| {
-        let scale: f64 = f
-            .terms()
-            .map(|(e, c)| {
-                e.iter().zip(x).fold(c.norm(), |acc, (k, v)| {
-                    acc * v.norm().powi(i32::try_from(*k).unwrap_or(i32::MAX))
-                })
+/// Whether `x` satisfies every equation of `system` to `tolerance` ([`vanishes`]).
+pub(super) fn satisfies(system: &System, x: &[C64], tolerance: f64) -> bool {
+    system
+        .equations()
+        .iter()
+        .all(|f| vanishes(f, x, tolerance))
+}
+
+/// Whether `|f(x)|` is below `tolerance` times the sum of the magnitudes of `f`'s terms at `x`
+/// (taken `≥ 1`): zero to the precision with which `f(x)` can be computed.
+pub(super) fn vanishes(f: &Poly, x: &[C64], tolerance: f64) -> bool {
+    let scale: f64 = f
+        .terms()
+        .map(|(e, c)| {
+            e.iter().zip(x).fold(c.norm(), |acc, (k, v)| {
+                acc * v.norm().powi(i32::try_from(*k).unwrap_or(i32::MAX))
             })
-            .sum::<f64>()
-            .max(1.0);
-        f.eval(x).norm() <= tolerance * scale
-    })
+        })
+        .sum::<f64>()
+        .max(1.0);
+    f.eval(x).norm() <= tolerance * scale
 }
 
 /// The homotopy membership test of `y` against every larger witness set: each set's slice is
 /// translated to pass through `y` and its points followed; `y` lies on one of those
 /// components iff it is among the endpoints. Returns the verdict and the paths tracked.
-fn on_larger_component(
-    witnesses: &[Option<Witness>],
+pub(super) fn on_larger_component<'a>(
+    witnesses: impl IntoIterator<Item = &'a Witness>,
     y: &[C64],
     settings: &DecomposeSettings,
 ) -> (bool, usize) {
     let big_n = y.len();
     let mut paths = 0;
-    for w in witnesses.iter().flatten() {
+    for w in witnesses {
         let mut target = w.base.clone();
         for row in target.chunks_mut(big_n + 1) {
             row[big_n] = -row[..big_n].iter().zip(y).map(|(a, v)| a * v).sum::<C64>();
         }
         paths += w.points.len();
-        let Ok(ends) = track_parameters(
+        // The endgame, since `y` may be a singular point of the slice family (where the
+        // component meets another one).
+        let Ok(ends) = track_parameters_to_end(
             &w.family,
             &w.base,
             &target,
@@ -346,11 +357,12 @@ fn on_larger_component(
         ) else {
             continue;
         };
-        if ends
-            .iter()
-            .flatten()
-            .any(|e| relative_distance(e, y) <= MEMBERSHIP_TOLERANCE)
-        {
+        if ends.iter().flatten().any(|e| match e {
+            FamilyEnd::Regular(x) | FamilyEnd::Singular(x) => {
+                relative_distance(x, y) <= MEMBERSHIP_TOLERANCE
+            }
+            FamilyEnd::Infinite => false,
+        }) {
             return (true, paths);
         }
     }
@@ -360,14 +372,14 @@ fn on_larger_component(
 /// A singular point and an endpoint of the membership test are the same point within this
 /// relative distance (singular endpoints are accurate to about the square root of the
 /// working precision).
-const MEMBERSHIP_TOLERANCE: f64 = 1e-5;
+pub(super) const MEMBERSHIP_TOLERANCE: f64 = 1e-5;
 
 /// Same point within this relative distance (regular endpoints of the monodromy loops).
-const SAME_POINT: f64 = 1e-6;
+pub(super) const SAME_POINT: f64 = 1e-6;
 
 /// The irreducible pieces of a positive-dimensional witness set (indices into its points, and
 /// whether the trace test confirmed the piece), and the paths tracked.
-fn irreducible_pieces(
+pub(super) fn irreducible_pieces(
     w: &Witness,
     settings: &DecomposeSettings,
     rng: &mut ChaCha8Rng,

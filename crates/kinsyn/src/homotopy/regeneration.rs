@@ -1,0 +1,495 @@
+//! Numerical irreducible decomposition by **regeneration**: the equations are brought in one at
+//! a time, and the witness sets of `V(f1, …, fm)` are carried from each to the next
+//! (Hauenstein, Sommese & Wampler, *Regenerative cascade homotopies for solving polynomial
+//! systems*, Appl. Math. Comput. 218, 2011; *Regeneration homotopies for solving systems of
+//! polynomials*, Math. Comp. 80, 2011).
+//!
+//! All slices are taken from one flag of random complex hyperplanes `L1, …, LN`: a component
+//! of dimension `d` is known by its points on `L1 ∩ … ∩ Ld`, so witness sets of the same
+//! dimension found along different branches are directly comparable. Starting from `ℂᴺ` (one
+//! point, `L1 ∩ … ∩ LN`), for each equation `f` of degree `e` and each witness set `W` of
+//! dimension `k` (its points on `Z ∩ L1 … Lk`, `Z` a union of components of
+//! `V(f1, …, fm−1)` cut out with multiplicity one by its **active** equations `A`, `N − k` of
+//! them):
+//! 1. the points where `f` vanishes lie on components of `Z` inside `V(f)`: they stay, with the
+//!    same dimension and active equations;
+//! 2. the others **regenerate**: the last hyperplane `Lk` is moved to each of `e` random
+//!    hyperplanes `H1 … He` (the points of `Z ∩ L1 … Lk−1 ∩ Hj`), then the `e·deg W` points are
+//!    followed by `(1 − s) f + s γ H1⋯He = 0` (with `A` and `L1 … Lk−1`) from `s = 1` to `0`.
+//!    Every component of `Z ∩ V(f)` has dimension `k − 1`, and its points on `L1 … Lk−1` are
+//!    the regular finite endpoints; they form a witness set of dimension `k − 1` with active
+//!    equations `A ∪ {f}`. Singular endpoints lie on a component of `Z ∩ V(f)` inside another
+//!    component of `V(A, f)` or on a non-reduced one: they are put to the homotopy membership
+//!    test against the witness sets of larger dimension at that stage (junk when they pass;
+//!    [`Decomposition::unresolved`] otherwise).
+//!
+//! At the end each witness set is split into irreducible components by monodromy and the
+//! trace test ([`super::witness`]), and a component contained in a larger one (found through
+//! another branch) is dropped by the membership test. The paths tracked are about
+//! `Σ e · deg W` over the steps — the degrees of the intermediate solution sets, not the Bézout
+//! number of the system: the 4-RUU's 12 unknowns and 10 quartic and quadratic equations take
+//! a few thousand paths where a total-degree cascade would take hundreds of thousands.
+//!
+//! The equations are brought in in the order given: putting those that cut most (or are of
+//! lowest degree) first keeps the intermediate sets small.
+
+use super::parameter::{
+    FamilyEnd, ParametrizedSystem, track_parameters, track_parameters_to_end,
+};
+use super::witness::{
+    Component, DecomposeError, DecomposeSettings, Decomposition, MEMBERSHIP_TOLERANCE, SAME_POINT, Witness, gaussian,
+    irreducible_pieces, on_larger_component, vanishes,
+};
+use super::{C64, relative_distance};
+use crate::poly::{Poly, System};
+use nalgebra::{DMatrix, DVector};
+use rand::SeedableRng;
+use rand_chacha::ChaCha8Rng;
+
+/// A witness set carried from one equation to the next: its points on `L1 ∩ … ∩ L_dim`, on a
+/// union of components cut out by the active equations.
+#[derive(Debug, Clone)]
+struct Branch {
+    dim: usize,
+    active: Vec<Poly>,
+    points: Vec<Vec<C64>>,
+}
+
+/// What a progress report of [`regenerate_with_progress`] says.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct RegenerationProgress {
+    /// The equations brought in so far.
+    pub equations: usize,
+    /// Of the system.
+    pub of: usize,
+    /// Paths tracked so far.
+    pub paths: usize,
+}
+
+/// The irreducible decomposition of `V(system)` by regeneration (module documentation), with
+/// the same settings and output as [`super::decompose`].
+///
+/// # Errors
+/// [`DecomposeError`] for a system without equations or unknowns, or with a zero equation.
+pub fn regenerate(
+    system: &System,
+    settings: &DecomposeSettings,
+) -> Result<Decomposition, DecomposeError> {
+    regenerate_with_progress(system, settings, &mut |_| {})
+}
+
+/// [`regenerate`], reporting after each equation.
+///
+/// # Errors
+/// As [`regenerate`].
+pub fn regenerate_with_progress(
+    system: &System,
+    settings: &DecomposeSettings,
+    progress: &mut dyn FnMut(RegenerationProgress),
+) -> Result<Decomposition, DecomposeError> {
+    let clock = std::time::Instant::now();
+    let (n, big_n) = (system.len(), system.nvars());
+    if n == 0 || big_n == 0 {
+        return Err(DecomposeError::Empty {
+            equations: n,
+            variables: big_n,
+        });
+    }
+    if let Some(i) = system.equations().iter().position(Poly::is_empty) {
+        return Err(DecomposeError::ZeroEquation(i));
+    }
+    let mut rng = ChaCha8Rng::seed_from_u64(settings.seed);
+    let flag: Vec<Vec<C64>> = (0..big_n)
+        .map(|_| (0..=big_n).map(|_| gaussian(&mut rng)).collect())
+        .collect();
+    let mut out = Decomposition {
+        components: Vec::new(),
+        slices: (0..=big_n).map(|d| flag[..d].to_vec()).collect(),
+        unresolved: Vec::new(),
+        junk: 0,
+        paths: 0,
+        seconds: 0.0,
+    };
+    let mut branches = vec![Branch {
+        dim: big_n,
+        active: Vec::new(),
+        points: vec![flag_point(&flag)?],
+    }];
+    let equations = system.equations();
+    for (m, f) in equations.iter().enumerate() {
+        let mut next = Vec::new();
+        let mut suspects = Vec::new();
+        for branch in branches {
+            let (on, off): (Vec<Vec<C64>>, Vec<Vec<C64>>) = branch
+                .points
+                .into_iter()
+                .partition(|x| vanishes(f, x, settings.residual_tolerance));
+            if !on.is_empty() {
+                next.push(Branch {
+                    dim: branch.dim,
+                    active: branch.active.clone(),
+                    points: on,
+                });
+            }
+            if off.is_empty() || branch.dim == 0 || f.total_degree() == 0 {
+                continue;
+            }
+            let step = Step {
+                system,
+                active: &branch.active,
+                f,
+                dim: branch.dim,
+                flag: &flag,
+                settings,
+            };
+            let (regular, singular, paths) = step.regenerate(&off, &mut rng)?;
+            out.paths += paths;
+            let mut active = branch.active.clone();
+            active.push(f.clone());
+            suspects.extend(singular.into_iter().map(|x| (branch.dim - 1, x)));
+            if !regular.is_empty() {
+                next.push(Branch {
+                    dim: branch.dim - 1,
+                    active,
+                    points: regular,
+                });
+            }
+        }
+        let (junk, unresolved, paths) = sort_suspects(system, &next, suspects, &flag, settings)?;
+        out.junk += junk;
+        out.paths += paths;
+        let (rescued, unresolved) = rescue(system, &equations[..=m], unresolved, &flag, &mut rng);
+        next.extend(rescued);
+        out.unresolved.extend(unresolved);
+        branches = without_repeats(next);
+        progress(RegenerationProgress {
+            equations: m + 1,
+            of: n,
+            paths: out.paths,
+        });
+    }
+    branches.sort_by_key(|b| std::cmp::Reverse(b.dim));
+    let witnesses: Vec<Witness> = branches
+        .iter()
+        .map(|b| witness_of(system, b, &flag))
+        .collect::<Result<_, _>>()?;
+    for (i, branch) in branches.iter().enumerate() {
+        let witness = &witnesses[i];
+        let (pieces, paths) = if branch.dim == 0 {
+            (
+                (0..branch.points.len()).map(|k| (vec![k], true)).collect(),
+                0,
+            )
+        } else {
+            irreducible_pieces(witness, settings, &mut rng)
+        };
+        out.paths += paths;
+        for (members, passed) in pieces {
+            let points: Vec<Vec<C64>> = members.iter().map(|k| branch.points[*k].clone()).collect();
+            let larger = branches
+                .iter()
+                .zip(&witnesses)
+                .filter(|(b, _)| b.dim > branch.dim)
+                .map(|(_, w)| w);
+            let (inside, paths) = on_larger_component(larger, &points[0], settings);
+            out.paths += paths;
+            if inside {
+                out.junk += 1;
+                continue;
+            }
+            out.components.push(Component {
+                dimension: branch.dim,
+                degree: points.len(),
+                sample_point: points[0].clone(),
+                witness_points: points,
+                trace_test_passed: passed,
+            });
+        }
+    }
+    out.components
+        .sort_by_key(|c| (std::cmp::Reverse(c.dimension), std::cmp::Reverse(c.degree)));
+    out.seconds = clock.elapsed().as_secs_f64();
+    Ok(out)
+}
+
+/// The point of `L1 ∩ … ∩ LN`.
+fn flag_point(flag: &[Vec<C64>]) -> Result<Vec<C64>, DecomposeError> {
+    let big_n = flag.len();
+    let a = DMatrix::from_fn(big_n, big_n, |i, j| flag[i][j]);
+    let b = DVector::from_fn(big_n, |i, _| -flag[i][big_n]);
+    a.lu()
+        .solve(&b)
+        .map(|x| x.iter().copied().collect())
+        .ok_or_else(|| DecomposeError::Family("the random slices are dependent".into()))
+}
+
+/// The affine form `Σ a_j x_j + b` of a hyperplane row `[a_0 … a_{N−1}, b]`, in `total`
+/// variables of which the unknowns are the first `N`.
+fn hyperplane(row: &[C64], total: usize) -> Poly {
+    let big_n = row.len() - 1;
+    let mut h = Poly::constant(total, row[big_n]);
+    for (j, a) in row[..big_n].iter().enumerate() {
+        h = &h + &Poly::variable(total, j).scale(*a);
+    }
+    h
+}
+
+/// The square family of `rows` fixed hyperplanes, the given equations (in `N + parameters`
+/// variables) and `sliced` hyperplanes whose coefficients are the parameters (after any
+/// already in `equations`' ring).
+fn family(
+    system: &System,
+    mut equations: Vec<Poly>,
+    fixed: &[Vec<C64>],
+    sliced: usize,
+    other_parameters: usize,
+) -> Result<ParametrizedSystem, DecomposeError> {
+    let big_n = system.nvars();
+    let total = big_n + other_parameters + sliced * (big_n + 1);
+    for f in &mut equations {
+        let widen: Vec<usize> = (0..f.nvars()).collect();
+        *f = f.relabel(total, &widen);
+    }
+    equations.extend(fixed.iter().map(|row| hyperplane(row, total)));
+    let first = big_n + other_parameters;
+    for k in 0..sliced {
+        let p = |j: usize| Poly::variable(total, first + k * (big_n + 1) + j);
+        let mut h = p(big_n);
+        for j in 0..big_n {
+            h = &h + &(&p(j) * &Poly::variable(total, j));
+        }
+        equations.push(h);
+    }
+    let mut names = system.variables().to_vec();
+    names.extend((0..other_parameters).map(|k| format!("regeneration#{k}")));
+    for k in 0..sliced {
+        names.extend((0..=big_n).map(|j| format!("slice#{k}#{j}")));
+    }
+    let family = System::new(names, equations).map_err(|e| DecomposeError::Family(e.to_string()))?;
+    ParametrizedSystem::new(family, other_parameters + sliced * (big_n + 1))
+        .map_err(|e| DecomposeError::Family(e.to_string()))
+}
+
+/// The witness set of a branch: its active equations and its slice `L1 … L_dim` as parameters.
+fn witness_of(system: &System, b: &Branch, flag: &[Vec<C64>]) -> Result<Witness, DecomposeError> {
+    Ok(Witness {
+        family: family(system, b.active.clone(), &[], b.dim, 0)?,
+        base: flag[..b.dim].concat(),
+        points: b.points.clone(),
+    })
+}
+
+/// One regeneration step: a witness set of dimension `dim` with active equations `active`
+/// meets `V(equations[f])`.
+struct Step<'a> {
+    system: &'a System,
+    active: &'a [Poly],
+    f: &'a Poly,
+    dim: usize,
+    flag: &'a [Vec<C64>],
+    settings: &'a DecomposeSettings,
+}
+
+impl Step<'_> {
+    /// The regular endpoints (distinct), the singular ones, and the paths tracked.
+    #[allow(clippy::type_complexity)]
+    fn regenerate(
+        &self,
+        points: &[Vec<C64>],
+        rng: &mut ChaCha8Rng,
+    ) -> Result<(Vec<Vec<C64>>, Vec<Vec<C64>>, usize), DecomposeError> {
+        let big_n = self.flag.len();
+        let k = self.dim;
+        let system = self.system;
+        let active = self.active.to_vec();
+        let fixed = &self.flag[..k - 1];
+        let f = self.f;
+        let degree = f.total_degree() as usize;
+        let tracker = self.settings.solve.tracker;
+        let mut paths = 0;
+        // 1. The points of Z ∩ L1 … Lk−1 ∩ Hj, for e random hyperplanes Hj.
+        let moving = family(system, active.clone(), fixed, 1, 0)?;
+        let targets: Vec<Vec<C64>> = (0..degree)
+            .map(|_| (0..=big_n).map(|_| gaussian(rng)).collect())
+            .collect();
+        let mut starts = Vec::new();
+        for h in &targets {
+            paths += points.len();
+            let ends = track_parameters(&moving, &self.flag[k - 1], h, points, tracker)
+                .map_err(|e| DecomposeError::Family(e.to_string()))?;
+            starts.extend(ends.into_iter().flatten());
+        }
+        // 2. (1 − s) f + s γ H1⋯He from s = 1 to 0, on Z ∩ L1 … Lk−1.
+        let total = big_n + 1;
+        let s = Poly::variable(total, big_n);
+        let widen: Vec<usize> = (0..big_n).collect();
+        let product = targets
+            .iter()
+            .fold(Poly::real(total, 1.0), |acc, h| &acc * &hyperplane(h, total));
+        let fw = f.relabel(total, &widen);
+        let blend = &fw + &(&s * &(&product.scale(gaussian(rng)) - &fw));
+        let mut equations = active;
+        equations.push(blend);
+        let regeneration = family(system, equations, fixed, 0, 1)?;
+        paths += starts.len();
+        let ends = track_parameters_to_end(
+            &regeneration,
+            &[C64::from(1.0)],
+            &[C64::from(0.0)],
+            &starts,
+            tracker,
+        )
+        .map_err(|e| DecomposeError::Family(e.to_string()))?;
+        let mut regular: Vec<Vec<C64>> = Vec::new();
+        let mut singular: Vec<Vec<C64>> = Vec::new();
+        for end in ends.into_iter().flatten() {
+            match end {
+                FamilyEnd::Regular(x) => {
+                    if !regular.iter().any(|y| relative_distance(y, &x) <= SAME_POINT) {
+                        regular.push(x);
+                    }
+                }
+                FamilyEnd::Singular(x) => {
+                    // A multiple endpoint is reached by as many paths as its multiplicity.
+                    if !singular
+                        .iter()
+                        .any(|y| relative_distance(y, &x) <= MEMBERSHIP_TOLERANCE)
+                    {
+                        singular.push(x);
+                    }
+                }
+                FamilyEnd::Infinite => {}
+            }
+        }
+        Ok((regular, singular, paths))
+    }
+}
+
+/// The branches with every point kept once per dimension (the same component reached along
+/// two branches has the same points on the flag's slice), empty branches dropped.
+fn without_repeats(branches: Vec<Branch>) -> Vec<Branch> {
+    let mut kept: Vec<Branch> = Vec::new();
+    for mut b in branches {
+        b.points.retain(|x| {
+            !kept
+                .iter()
+                .filter(|k| k.dim == b.dim)
+                .any(|k| k.points.iter().any(|y| relative_distance(y, x) <= SAME_POINT))
+        });
+        if !b.points.is_empty() {
+            kept.push(b);
+        }
+    }
+    kept
+}
+
+/// The singular endpoints of a step, each put to the membership test against the branches of
+/// at least its dimension: the number on them (junk), the others, and the paths tracked.
+#[allow(clippy::type_complexity)]
+fn sort_suspects(
+    system: &System,
+    branches: &[Branch],
+    suspects: Vec<(usize, Vec<C64>)>,
+    flag: &[Vec<C64>],
+    settings: &DecomposeSettings,
+) -> Result<(usize, Vec<(usize, Vec<C64>)>, usize), DecomposeError> {
+    if suspects.is_empty() {
+        return Ok((0, Vec::new(), 0));
+    }
+    let witnesses: Vec<(usize, Witness)> = branches
+        .iter()
+        .map(|b| witness_of(system, b, flag).map(|w| (b.dim, w)))
+        .collect::<Result<_, _>>()?;
+    let (mut junk, mut paths) = (0, 0);
+    let mut unresolved = Vec::new();
+    for (dim, x) in suspects {
+        let candidates = witnesses.iter().filter(|(d, _)| *d >= dim).map(|(_, w)| w);
+        let (inside, p) = on_larger_component(candidates, &x, settings);
+        paths += p;
+        if inside {
+            junk += 1;
+        } else {
+            unresolved.push((dim, x));
+        }
+    }
+    Ok((junk, unresolved, paths))
+}
+
+/// Singular endpoints that no branch contains may still be regular points of a component of
+/// `V(f1 … fm)` that the step's own equations (the branch's active ones and `fm`) do not cut out
+/// alone — a component of `Z ∩ V(fm)` lying inside a larger component of `V(A, fm)` that an
+/// earlier equation outside `A` cuts down. Against `N − d` random combinations of all the
+/// equations so far (and `L1 … Ld`) such a point is regular (Bertini's theorem): Newton
+/// converges there on a well-conditioned Jacobian, and the point starts a branch whose active
+/// equations are those combinations. What stays singular is returned (a non-reduced component).
+fn rescue(
+    system: &System,
+    equations: &[Poly],
+    suspects: Vec<(usize, Vec<C64>)>,
+    flag: &[Vec<C64>],
+    rng: &mut ChaCha8Rng,
+) -> (Vec<Branch>, Vec<(usize, Vec<C64>)>) {
+    let big_n = system.nvars();
+    let mut branches: Vec<Branch> = Vec::new();
+    let mut left = Vec::new();
+    for (dim, x) in suspects {
+        let index = if let Some(i) = branches.iter().position(|b| b.dim == dim) {
+            i
+        } else {
+            let active: Vec<Poly> = (0..big_n - dim)
+                .map(|_| {
+                    equations
+                        .iter()
+                        .fold(Poly::zero(big_n), |acc, f| &acc + &f.scale(gaussian(rng)))
+                })
+                .collect();
+            branches.push(Branch {
+                dim,
+                active,
+                points: Vec::new(),
+            });
+            branches.len() - 1
+        };
+        let b = &mut branches[index];
+        let mut square = b.active.clone();
+        square.extend(flag[..dim].iter().map(|row| hyperplane(row, big_n)));
+        match regular_root(&square, &x) {
+            Some(y) if equations.iter().all(|f| vanishes(f, &y, 1e-8)) => {
+                if !b.points.iter().any(|p| relative_distance(p, &y) <= SAME_POINT) {
+                    b.points.push(y);
+                }
+            }
+            _ => left.push((dim, x)),
+        }
+    }
+    branches.retain(|b| !b.points.is_empty());
+    (branches, left)
+}
+
+/// The root of the square system `equations` that Newton's method reaches from `x`, if it
+/// converges there quadratically on a well-conditioned Jacobian.
+fn regular_root(equations: &[Poly], x: &[C64]) -> Option<Vec<C64>> {
+    let n = x.len();
+    let system = System::new((0..n).map(|j| format!("x{j}")).collect(), equations.to_vec()).ok()?;
+    let program = system.program();
+    let mut ws = program.workspace();
+    let (mut values, mut jacobian) = (vec![C64::from(0.0); n], vec![C64::from(0.0); n * n]);
+    let mut z = DVector::from_column_slice(x);
+    let mut last = f64::INFINITY;
+    for _ in 0..8 {
+        program.evaluate_with_jacobian(z.as_slice(), &mut values, &mut jacobian, &mut ws);
+        let j = DMatrix::from_row_slice(n, n, &jacobian);
+        let sv = j.singular_values();
+        if sv.min() <= 1e-8 * sv.max() {
+            return None;
+        }
+        let dz = j.lu().solve(&DVector::from_column_slice(&values))?;
+        z -= &dz;
+        let size = dz.norm() / (1.0 + z.norm());
+        if size < 1e-13 || (size < 1e-9 && size < last * last * 1e3) {
+            return Some(z.iter().copied().collect());
+        }
+        last = size;
+    }
+    None
+}
