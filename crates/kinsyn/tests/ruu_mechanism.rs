@@ -164,7 +164,11 @@ fn paper_pairs() -> Vec<(usize, usize)> {
 fn the_file_has_four_u_u_legs_at_its_reference() {
     let m = four_ruu();
     assert_eq!(m.name(), "4-RUU (paper 004)");
-    let labels: Vec<String> = m.actuators().iter().map(|a| a.label()).collect();
+    let labels: Vec<String> = m
+        .actuators()
+        .iter()
+        .map(kinsyn::manipulator::Actuator::label)
+        .collect();
     assert_eq!(labels, ["R1.1", "R2.1", "R3.1", "R4.1"]);
     let ruu = Ruu::paper004();
     let frame = m.platform_frame(&m.reference());

@@ -557,23 +557,12 @@ impl Manipulator {
         })
     }
 
-    /// Leg `i`'s constraint with the joints of `value` locked there (the others at their
-    /// reference values, where their axes are read).
-    fn leg_constraint(
-        &self,
-        i: usize,
-        value: &[Option<f64>],
-        tolerance: f64,
-    ) -> Result<LegConstraint, PositionSystemError> {
+    /// Leg `i`'s serial chain with the joints of `value` locked there, the passive joints at
+    /// their reference values: each passive joint's line (with its position in the leg), and
+    /// the platform frame this configuration carries.
+    fn passive_lines(&self, i: usize, value: &[Option<f64>]) -> (Vec<(usize, Line)>, Displacement) {
         let leg = &self.legs[i];
         let joints = self.mechanism.joints();
-        let unsupported = |reason: String| PositionSystemError::UnsupportedLeg {
-            leg: i + 1,
-            chain: leg.chain.to_string(),
-            reason,
-        };
-        // The leg's serial chain at the given inputs, passive joints at their reference values:
-        // each passive joint's line, and the platform frame this configuration carries.
         let mut g = crate::spatial::identity();
         let mut passive = Vec::new();
         for j in leg.joints.clone() {
@@ -590,7 +579,24 @@ impl Manipulator {
                 )),
             }
         }
-        let frame = g * self.frame;
+        (passive, g * self.frame)
+    }
+
+    /// Leg `i`'s constraint with the joints of `value` locked there (the others at their
+    /// reference values, where their axes are read).
+    fn leg_constraint(
+        &self,
+        i: usize,
+        value: &[Option<f64>],
+        tolerance: f64,
+    ) -> Result<LegConstraint, PositionSystemError> {
+        let leg = &self.legs[i];
+        let unsupported = |reason: String| PositionSystemError::UnsupportedLeg {
+            leg: i + 1,
+            chain: leg.chain.to_string(),
+            reason,
+        };
+        let (passive, frame) = self.passive_lines(i, value);
         if let Some((k, _)) = passive.iter().find(|(_, l)| l.kind == Primitive::P) {
             let hint = self
                 .actuators
@@ -631,28 +637,11 @@ impl Manipulator {
         let (kind, base, platform_ground, axis) = match (kb, kp, a, b) {
             (2 | 3, 2 | 3, Some(a), Some(b)) if kb + kp > 4 => (LegKind::Distance, a, b, None),
             (2, 2, Some(a), Some(b)) => {
-                let (u, s, s2, n) = (
-                    lines[0].direction,
-                    lines[1].direction,
-                    lines[2].direction,
-                    lines[3].direction,
-                );
-                let problem = if s.cross(&s2).norm() > super::AXIS_TOLERANCE {
-                    Some("inner axes (joints 2 and 3 of its passive U–U) not parallel")
-                } else if u.dot(&s).abs() > super::AXIS_TOLERANCE
-                    || n.dot(&s).abs() > super::AXIS_TOLERANCE
-                {
-                    Some("outer axes of its U–U not perpendicular to the inner ones")
-                } else if (b - a).dot(&s).abs() > tolerance {
-                    Some("link between its two U joints not perpendicular to their inner axes")
-                } else {
-                    None
-                };
-                if let Some(p) = problem {
-                    return Err(unsupported(format!(
+                let [u, n] = u_u_axes(&lines, &a, &b, tolerance).map_err(|p| {
+                    unsupported(format!(
                         "its passive joints form a universal joint (2 revolutes) at the base and at the platform with the {p}"
-                    )));
-                }
+                    ))
+                })?;
                 platform_axis = Some(frame.rotation.inverse() * n);
                 (LegKind::CoplanarDistance, a, b, Some(u))
             }
@@ -689,6 +678,28 @@ impl Manipulator {
             platform_axis,
             turned_by: None,
         })
+    }
+}
+
+/// The outer axes `[u, n]` (ground frame) of a U–U leg's four passive lines meeting at `a`
+/// (the first two) and `b` (the last two), or what keeps them from a
+/// [`LegKind::CoplanarDistance`]: the inner axes must be parallel, the outer ones and the link
+/// `a b` perpendicular to them.
+fn u_u_axes(
+    lines: &[&Line],
+    a: &Vector3<f64>,
+    b: &Vector3<f64>,
+    tolerance: f64,
+) -> Result<[Vector3<f64>; 2], &'static str> {
+    let [u, s, s2, n] = [0, 1, 2, 3].map(|k| lines[k].direction);
+    if s.cross(&s2).norm() > super::AXIS_TOLERANCE {
+        Err("inner axes (joints 2 and 3 of its passive U–U) not parallel")
+    } else if u.dot(&s).abs() > super::AXIS_TOLERANCE || n.dot(&s).abs() > super::AXIS_TOLERANCE {
+        Err("outer axes of its U–U not perpendicular to the inner ones")
+    } else if (b - a).dot(&s).abs() > tolerance {
+        Err("link between its two U joints not perpendicular to their inner axes")
+    } else {
+        Ok([u, n])
     }
 }
 
