@@ -34,7 +34,10 @@ pub use jacobian::{Jacobians, RowKind, WrenchRow};
 pub use leg::{LegCheck, LegWarning, LegWarningKind};
 pub use lookup::{CatalogueChain, ChainLookup, CommittedChains};
 pub use modes::{MAX_INPUTS, Mode, Modes, PatternModes};
-pub use polynomial::{LegConstraint, LegKind, LegResidual, PositionSystem, PositionSystemError};
+pub use polynomial::{
+    FreeRevolute, InputValues, LegConstraint, LegKind, LegResidual, PositionSystem,
+    PositionSystemError,
+};
 pub use poses::PRINTED_STUDY_TOLERANCE;
 pub use position::{CONTINUATION_TRIES, PlatformGoal, Position, PositionRequest};
 pub use request::{ContinuationFailure, PositionError, RequestError};

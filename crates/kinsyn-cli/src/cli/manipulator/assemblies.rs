@@ -122,6 +122,7 @@ pub fn all_assemblies(
             LegKind::RevoluteSpherical => "R–S: distance and plane",
             LegKind::SphericalRevolute => "S–R: distance and moving plane",
             LegKind::Coincident => "coincident points",
+            LegKind::CoplanarDistance => "U–U: distance and coplanar lines",
         })
         .collect();
     let input_text: Vec<String> = inputs
