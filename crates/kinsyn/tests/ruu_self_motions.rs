@@ -321,3 +321,107 @@ fn generic_inputs_have_only_isolated_assemblies_in_the_two_schoenflies_modes() {
         assert_eq!((dim, vdim), (0, 32));
     }
 }
+
+#[test]
+fn equal_inputs_give_a_rotation_about_a_vertical_axis_in_the_second_schoenflies_mode() {
+    // Paper 004 §5.2, Fig. 9: with all actuated angles equal the platform of K2 gains a 1-dof
+    // self-motion, a rotation about a vertical axis "parametrized by x3". Hand derivation: all
+    // B_i are the A_i translated by l (cos θ, sin θ, 0), so a platform parallel to the base,
+    // turned by φ about its vertical axis placed above (l cos θ, l sin θ) at height h, closes
+    // every leg exactly when |R(φ) b e_i − a e_i|² + h² = r², i.e. h² = r² − a² − b²
+    // + 2ab cos φ = 4 cos φ − 1 (the coplanarity g1–g4 holds as z = Z).
+    // Measured (θ = 0 and tan(θ/2) = 0.4, seeds 1 and 2): exactly one positive-dimensional
+    // reduced component, of dimension 1 and degree 8, in K2; 8 isolated points, all in K1;
+    // 8 unresolved points in dimension 1 and 32 in dimension 0, all in K2 — Singular shows why:
+    // besides the degree-8 curve, I has two more 1-dimensional components of degree 4 in K2
+    // (with 8 y0² + 1 = 0: no real point) which are non-reduced (primary of multiplicity 8 over
+    // a prime of degree 4 at θ = 0), and decompose does not decompose non-reduced components.
+    for (t, rational) in [(0.0, "0"), (0.4, "2/5")] {
+        let inputs = InputMode::Given([t; 4]);
+        let system = fibre(inputs);
+        for seed in [1, 2] {
+            let d = decomposition(inputs, seed);
+            assert_eq!(
+                positive_dimensional(&d),
+                vec![(1, 8, Mode::K2)],
+                "t = {t}, seed {seed}"
+            );
+            assert_eq!(isolated(&d), [8, 0, 0], "t = {t}, seed {seed}");
+            let unresolved: Vec<usize> = (0..2)
+                .map(|k| d.unresolved.iter().filter(|(dim, _)| *dim == k).count())
+                .collect();
+            assert_eq!(unresolved, vec![32, 8], "t = {t}, seed {seed}");
+            assert!(d.unresolved.iter().all(|(_, p)| mode(p) == Mode::K2));
+            // Real points of the curve: its witness points moved to the real planes x3 = c.
+            let curve = d.components.iter().find(|c| c.dimension == 1).unwrap();
+            let theta = 2.0 * t.atan();
+            let mut angles = Vec::new();
+            for c in [0.2, 0.45] {
+                let mut target = vec![C64::from(0.0); 9];
+                target[3] = C64::from(1.0);
+                target[8] = C64::from(-c);
+                let points = move_slice(&system, &d, curve, &target);
+                // By the derivation: x0 = ±√(1 − c²), h = ±√(4 cos φ − 1) with cos φ = 1 − 2c²
+                // (> 1/4 for both c): four real points; the other four of the degree-8 witness
+                // set go to infinity (x3 = c is not a generic slice).
+                assert_eq!(points.len(), 4, "t = {t}, x3 = {c}");
+                assert!(points.iter().all(|p| is_real(p)), "t = {t}, x3 = {c}");
+                for p in &points {
+                    assert_eq!(mode(p), Mode::K2);
+                    let g = study::to_displacement(&real(p), 1e-9).unwrap();
+                    let r = g.rotation.matrix();
+                    assert!((r * Vector3::z() - Vector3::z()).norm() < 1e-9, "z stays vertical");
+                    let phi = r[(1, 0)].atan2(r[(0, 0)]);
+                    let centre = g.translation.vector;
+                    assert!((centre.x - theta.cos()).abs() < 1e-9, "{centre}");
+                    assert!((centre.y - theta.sin()).abs() < 1e-9, "{centre}");
+                    assert!((centre.z * centre.z - (4.0 * phi.cos() - 1.0)).abs() < 1e-9);
+                    // The cranks are those of the inputs: |C_i − B_i| = r with B_i at θ.
+                    let ruu = Ruu::paper004();
+                    for i in 0..4 {
+                        let leg = g * nalgebra::Point3::from(ruu.platform_joint(i))
+                            - nalgebra::Point3::from(ruu.crank_joint(i, theta));
+                        assert!((leg.norm() - 2.0).abs() < 1e-9);
+                    }
+                    angles.push(phi.abs());
+                }
+            }
+            // Moving along the curve changes the orientation: |φ| = 2 atan(x3/x0) differs.
+            let spread = angles.iter().copied().fold(0.0, f64::max)
+                - angles.iter().copied().fold(f64::INFINITY, f64::min);
+            assert!(spread > 0.1, "t = {t}: rotation angles {angles:?}");
+            if seed == 1 {
+                eprintln!("t = {t}: |φ| at x3 = 0.2, 0.45: {angles:?}; {:.2} s", d.seconds);
+            }
+        }
+        // Singular's minAssGTZ at 2/5 takes about 30 s: the primes are checked at θ = 0 and
+        // the dimension at both.
+        if let Some((dim, _)) = singular_dim_vdim(
+            &SingularInputs::Tangents([rational; 4]),
+            "the dimension at equal inputs",
+        ) {
+            assert_eq!(dim, 1, "t = {t}");
+        }
+        if t == 0.0
+            && let Some(primes) = singular_primes(
+                &SingularInputs::Tangents([rational; 4]),
+                "the exact components at equal inputs",
+            )
+        {
+            assert_eq!(primes, vec![(1, 8), (1, 4), (1, 4), (0, 4), (0, 4)], "t = {t}");
+        }
+    }
+    // The non-reduced pair, exactly: at θ = 0, Singular's primary decomposition has two
+    // 1-dimensional primary components of degree 8 whose radicals have degree 4.
+    let script = singular_ideal(&SingularInputs::Tangents(["0"; 4]))
+        + "list P = primdecGTZ(I);\nint k;\nfor (k=1; k<=size(P); k++) { print(\"PRIMARY \" + string(dim(std(P[k][1]))) + \" \" + string(mult(std(P[k][1]))) + \" \" + string(mult(std(P[k][2])))); }\nquit;\n";
+    if let Some(out) = singular::run(&script, "the non-reduced components at θ = 0") {
+        let mut primary: Vec<&str> = out
+            .lines()
+            .filter_map(|l| l.strip_prefix("PRIMARY "))
+            .map(str::trim)
+            .collect();
+        primary.sort_unstable();
+        assert_eq!(primary, vec!["0 4 4", "0 4 4", "1 8 4", "1 8 4", "1 8 8"]);
+    }
+}
