@@ -425,3 +425,84 @@ fn equal_inputs_give_a_rotation_about_a_vertical_axis_in_the_second_schoenflies_
         assert_eq!(primary, vec!["0 4 4", "0 4 4", "1 8 4", "1 8 4", "1 8 8"]);
     }
 }
+
+/// The inputs of §5.2's second condition, "the first links pointing inward": (180°, −90°, 0°,
+/// 90°), as angles (the tangent of 90° is infinite).
+fn inward() -> [f64; 4] {
+    [deg(180.0), deg(-90.0), 0.0, deg(90.0)]
+}
+
+#[test]
+fn inward_cranks_give_a_two_dimensional_translation_not_a_three_dof_self_motion() {
+    // Paper 004 §5.2, Figs. 10–12: at (180°, −90°, 0°, 90°) "the moving platform gains 3-dof
+    // self-motion", two translations and one rotation. Hand derivation: every B_i is then
+    // (a − l) e_i = b e_i, the platform joint C_i of the identity orientation, so the four
+    // legs are parallel links of length r and the platform translates on the sphere |t| = r:
+    // x = (±1, 0, 0, 0), y = −½ t x, so y0 = 0 and y1² + y2² + y3² = 1 — two dimensions.
+    // Measured (seeds 1, 2): the largest components have dimension 2 (two of degree 2, the
+    // sphere as ±x), the rest dimension 1: four of degree 4 (two in K2: the rotation, two in
+    // K3) and four of degree 2 in K1; no isolated point. At the sphere's witness points the
+    // Jacobian of I has rank 6: the tangent space is 2-dimensional, so no 3-dimensional
+    // component passes there. Singular (the ideal is rational: cos, sin ∈ {0, ±1}): dim 2,
+    // primes of (dim, degree) (2,2) ×2, (1,4) ×6 — the same degree 4 in dimension 2 and 24 in
+    // dimension 1 (the ℚ-primes of K1 split in two over ℝ). Deviation: the union of the
+    // sphere and the rotation curve (they meet) is what the figures show; no 3-dof component.
+    let system = fibre(InputMode::Angles(inward()));
+    let expected = vec![
+        (2, 2, Mode::K2),
+        (2, 2, Mode::K2),
+        (1, 4, Mode::K2),
+        (1, 4, Mode::K2),
+        (1, 4, Mode::K3),
+        (1, 4, Mode::K3),
+        (1, 2, Mode::K1),
+        (1, 2, Mode::K1),
+        (1, 2, Mode::K1),
+        (1, 2, Mode::K1),
+    ];
+    let mut signature = Vec::new();
+    for seed in [1, 2] {
+        let d = decomposition(InputMode::Angles(inward()), seed);
+        assert_eq!(modes(&d), expected, "seed {seed}");
+        for c in d.components.iter().filter(|c| c.dimension == 2) {
+            for p in &c.witness_points {
+                let y2: C64 = (5..8).map(|k| p[k] * p[k]).sum();
+                assert!((p[0] * p[0] - 1.0).norm() < 1e-9 && p[4].norm() < 1e-9, "{p:?}");
+                assert!((y2 - 1.0).norm() < 1e-9, "on the sphere: {p:?}");
+                assert_eq!(jacobian_rank(&system, p), 6, "seed {seed}: {p:?}");
+            }
+        }
+        // decompose leaves some singular points unresolved (its membership test misses
+        // them): all lie on the sphere.
+        for (_, p) in &d.unresolved {
+            let y2: C64 = (5..8).map(|k| p[k] * p[k]).sum();
+            assert!((p[0] * p[0] - 1.0).norm() < 1e-6 && (y2 - 1.0).norm() < 1e-6, "{p:?}");
+            assert!(p[1].norm() + p[2].norm() + p[3].norm() + p[4].norm() < 1e-6);
+        }
+        eprintln!(
+            "seed {seed}: {} unresolved, {} junk, {} paths, {:.2} s",
+            d.unresolved.len(),
+            d.junk,
+            d.paths,
+            d.seconds
+        );
+        signature = d.signature();
+    }
+    let exact = SingularInputs::Angles(inward());
+    if let Some((dim, _)) = singular_dim_vdim(&exact, "the dimension at inward cranks") {
+        assert_eq!(dim, 2);
+    }
+    if let Some(primes) = singular_primes(&exact, "the components at inward cranks") {
+        let mut want = vec![(2, 2), (2, 2)];
+        want.extend([(1, 4); 6]);
+        assert_eq!(primes, want);
+        let primes: Vec<(usize, usize)> = primes
+            .iter()
+            .map(|(a, b)| (usize::try_from(*a).unwrap(), usize::try_from(*b).unwrap()))
+            .collect();
+        assert_eq!(
+            degree_by_dimension(&primes),
+            degree_by_dimension(&signature)
+        );
+    }
+}
