@@ -506,3 +506,134 @@ fn inward_cranks_give_a_two_dimensional_translation_not_a_three_dof_self_motion(
         );
     }
 }
+
+/// Paper 004 §5.3's self-motion conditions at values chosen at random (exact rationals):
+/// (1) t11 = t12, t13 = t14; (2) t11 = t14, t12 = t13; (3) t11 = −1/t13, t12 = −1/t14.
+const CONDITIONS: [([f64; 4], [&str; 4]); 3] = [
+    ([0.3, 0.3, -0.8, -0.8], ["3/10", "3/10", "-4/5", "-4/5"]),
+    ([0.3, -0.8, -0.8, 0.3], ["3/10", "-4/5", "-4/5", "3/10"]),
+    ([0.5, 0.3, -2.0, -1.0 / 0.3], ["1/2", "3/10", "-2", "-10/3"]),
+];
+
+/// The inputs of Fig. 13 (condition 2): θ = (90°, 0°, 0°, 90°), t = (1, 0, 0, 1).
+const FIG13: [f64; 4] = [1.0, 0.0, 0.0, 1.0];
+
+#[test]
+fn third_mode_self_motions_need_more_than_the_printed_conditions() {
+    // Paper 004 §5.3 (the list after eq. 33): the K3 self-motion occurs "if and only if" the
+    // inputs satisfy (1), (2) or (3). Measured at random values on each condition (seeds 1
+    // and 2): nothing positive-dimensional — 16 isolated solutions (8 in K1, 8 in K2, half
+    // the generic 32 of the first test), none in K3; Singular: dim 0, vdim 16. Deviation:
+    // the conditions are not sufficient. At the paper's own examples they are: Fig. 13
+    // (90°, 0°, 0°, 90°) and Fig. 14 (90°, 0°, −90°, 180°) have a 1-dimensional component of
+    // degree 8 in K3 (x3 = 0, x1 = ±x2), next to two K1 and two K2 curves of degree 2 (8 and 4
+    // isolated points). Singular at Fig. 13: primes (1,8), (1,4), (1,2), (1,2), (0,4), (0,2),
+    // (0,2) — the same degrees per dimension (16 and 8).
+    for (t, rational) in CONDITIONS {
+        for seed in [1, 2] {
+            let d = decomposition(InputMode::Given(t), seed);
+            assert!(positive_dimensional(&d).is_empty(), "{t:?}, seed {seed}");
+            assert!(d.unresolved.is_empty(), "{t:?}, seed {seed}");
+            assert_eq!(isolated(&d), [8, 8, 0], "{t:?}, seed {seed}");
+        }
+        if let Some(dv) = singular_dim_vdim(&SingularInputs::Tangents(rational), "condition") {
+            assert_eq!(dv, (0, 16), "{t:?}");
+        }
+    }
+    let curves = vec![
+        (1, 8, Mode::K3),
+        (1, 2, Mode::K1),
+        (1, 2, Mode::K1),
+        (1, 2, Mode::K2),
+        (1, 2, Mode::K2),
+    ];
+    let fig14 = InputMode::Angles([deg(90.0), 0.0, deg(-90.0), deg(180.0)]);
+    for (inputs, points) in [(InputMode::Given(FIG13), [4, 4, 0]), (fig14, [0, 4, 0])] {
+        for seed in [1, 2] {
+            let d = decomposition(inputs, seed);
+            assert_eq!(positive_dimensional(&d), curves, "{inputs:?}, seed {seed}");
+            assert_eq!(isolated(&d), points, "{inputs:?}, seed {seed}");
+            let k3 = d.components.iter().find(|c| c.degree == 8).unwrap();
+            for p in &k3.witness_points {
+                assert!(p[3].norm() < 1e-9 && (p[1] * p[1] - p[2] * p[2]).norm() < 1e-9);
+            }
+            if seed == 1 {
+                eprintln!("{inputs:?}: {} unresolved, {:.2} s", d.unresolved.len(), d.seconds);
+                if matches!(inputs, InputMode::Given(_))
+                    && let Some(primes) = singular_primes(
+                        &SingularInputs::Tangents(["1", "0", "0", "1"]),
+                        "the components at Fig. 13's inputs",
+                    )
+                {
+                    assert_eq!(
+                        primes,
+                        vec![(1, 8), (1, 4), (1, 2), (1, 2), (0, 4), (0, 2), (0, 2)]
+                    );
+                }
+            }
+        }
+    }
+}
+
+/// The factors of paper 004 eq. 29 (t11 = −9/10, t12 = −2 substituted), as printed, in
+/// (t3, t4) = (t13, t14).
+fn eq29_factors(t3: f64, t4: f64) -> [f64; 4] {
+    [
+        (t4 - 2.0) * (t4 + 2.0),
+        51597.0 * t3.powi(2) * t4.powi(4) - 18144.0 * t3.powi(2) * t4.powi(3)
+            - 2520.0 * t3 * t4.powi(4)
+            - 27855.0 * t3.powi(2) * t4.powi(2)
+            + 1086.0 * t3 * t4.powi(3)
+            + 29600.0 * t4.powi(4)
+            + 4932.0 * t3.powi(2) * t4
+            + 21642.0 * t3 * t4.powi(2)
+            - 13800.0 * t4.powi(3)
+            + 4680.0 * t3.powi(2)
+            - 4344.0 * t3 * t4
+            - 13771.0 * t4.powi(2)
+            - 5748.0 * t3
+            + 3846.0 * t4
+            + 2801.0,
+        742.0 * t3.powi(2) * t4.powi(2) - 843.0 * t3.powi(2) * t4 - 200.0 * t3 * t4.powi(2)
+            - 439.0 * t3.powi(2)
+            + 200.0 * t4.powi(2)
+            + 800.0 * t3
+            - 300.0 * t4
+            + 100.0,
+        2990.0 * t3.powi(2) * t4.powi(2) - 843.0 * t3.powi(2) * t4 - 200.0 * t3 * t4.powi(2)
+            - 1001.0 * t3.powi(2)
+            + 1000.0 * t4.powi(2)
+            + 800.0 * t3
+            - 300.0 * t4
+            - 100.0,
+    ]
+}
+
+#[test]
+fn the_printed_third_mode_pose_of_fig_6_is_not_in_the_third_mode() {
+    // Paper 004 §4.3.1, eq. 29 and Fig. 6: t11 = −9/10, t12 = −2, a K3 pose with θ13 = 64.243°,
+    // θ14 = 56.901° (printed θ = (−84°, 126.934°, 64.243°, 56.901°), but tan(126.934°/2) =
+    // +2.003, not −2). Measured: no factor of eq. 29 as printed vanishes there — the distance
+    // |f| / |∇f| of (t13, t14) to each factor's curve is at least 0.09 in the tangents, while
+    // three-decimal angles are off by < 1e-5. The fibres at these inputs, t12 = −2 and +2
+    // (seeds 1, 2): 32 isolated solutions, 16 in K1 and 16 in K2, none in K3 — as at generic
+    // inputs (the first test).
+    let (t3, t4) = ((deg(64.243) / 2.0).tan(), (deg(56.901) / 2.0).tan());
+    let h = 1e-6;
+    let value = eq29_factors(t3, t4);
+    for k in 0..4 {
+        let d3 = (eq29_factors(t3 + h, t4)[k] - eq29_factors(t3 - h, t4)[k]) / (2.0 * h);
+        let d4 = (eq29_factors(t3, t4 + h)[k] - eq29_factors(t3, t4 - h)[k]) / (2.0 * h);
+        let distance = value[k].abs() / d3.hypot(d4);
+        eprintln!("eq. 29 factor {k}: value {:.4e}, distance {distance:.3}", value[k]);
+        assert!(distance > 0.05, "factor {k}");
+    }
+    assert!(((deg(126.934) / 2.0).tan() - 2.0).abs() < 3e-3);
+    for t12 in [-2.0, 2.0] {
+        for seed in [1, 2] {
+            let d = decomposition(InputMode::Given([-0.9, t12, t3, t4]), seed);
+            assert!(positive_dimensional(&d).is_empty());
+            assert_eq!(isolated(&d), [16, 16, 0], "t12 = {t12}, seed {seed}");
+        }
+    }
+}
