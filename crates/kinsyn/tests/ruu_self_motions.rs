@@ -111,7 +111,10 @@ fn singular_poly(p: &Poly, names: &[String]) -> String {
     let mut s = String::new();
     for (e, c) in p.terms() {
         let k = c.re.round();
-        assert!(c.im.abs() < 1e-9 && (c.re - k).abs() < 1e-9, "not an integer: {c}");
+        assert!(
+            c.im.abs() < 1e-9 && (c.re - k).abs() < 1e-9,
+            "not an integer: {c}"
+        );
         if k == 0.0 {
             continue;
         }
@@ -303,7 +306,11 @@ fn generic_inputs_have_only_isolated_assemblies_in_the_two_schoenflies_modes() {
     let mut real = Vec::new();
     for seed in [1, 2] {
         let d = decomposition(InputMode::Given(GENERIC), seed);
-        assert!(positive_dimensional(&d).is_empty(), "seed {seed}: {:?}", modes(&d));
+        assert!(
+            positive_dimensional(&d).is_empty(),
+            "seed {seed}: {:?}",
+            modes(&d)
+        );
         assert!(d.unresolved.is_empty(), "seed {seed}");
         assert_eq!(isolated(&d), [16, 16, 0], "seed {seed}: K1, K2, K3");
         real.push(
@@ -313,7 +320,10 @@ fn generic_inputs_have_only_isolated_assemblies_in_the_two_schoenflies_modes() {
                 .count(),
         );
     }
-    assert_eq!(real[0], real[1], "the real assemblies do not depend on the seed");
+    assert_eq!(
+        real[0], real[1],
+        "the real assemblies do not depend on the seed"
+    );
     if let Some((dim, vdim)) = singular_dim_vdim(
         &SingularInputs::Tangents(["3/10", "-7/10", "11/10", "9/20"]),
         "the exact count at generic inputs",
@@ -370,7 +380,10 @@ fn equal_inputs_give_a_rotation_about_a_vertical_axis_in_the_second_schoenflies_
                     assert_eq!(mode(p), Mode::K2);
                     let g = study::to_displacement(&real(p), 1e-9).unwrap();
                     let r = g.rotation.matrix();
-                    assert!((r * Vector3::z() - Vector3::z()).norm() < 1e-9, "z stays vertical");
+                    assert!(
+                        (r * Vector3::z() - Vector3::z()).norm() < 1e-9,
+                        "z stays vertical"
+                    );
                     let phi = r[(1, 0)].atan2(r[(0, 0)]);
                     let centre = g.translation.vector;
                     assert!((centre.x - theta.cos()).abs() < 1e-9, "{centre}");
@@ -391,7 +404,10 @@ fn equal_inputs_give_a_rotation_about_a_vertical_axis_in_the_second_schoenflies_
                 - angles.iter().copied().fold(f64::INFINITY, f64::min);
             assert!(spread > 0.1, "t = {t}: rotation angles {angles:?}");
             if seed == 1 {
-                eprintln!("t = {t}: |φ| at x3 = 0.2, 0.45: {angles:?}; {:.2} s", d.seconds);
+                eprintln!(
+                    "t = {t}: |φ| at x3 = 0.2, 0.45: {angles:?}; {:.2} s",
+                    d.seconds
+                );
             }
         }
         // Singular's minAssGTZ at 2/5 takes about 30 s: the primes are checked at θ = 0 and
@@ -408,7 +424,11 @@ fn equal_inputs_give_a_rotation_about_a_vertical_axis_in_the_second_schoenflies_
                 "the exact components at equal inputs",
             )
         {
-            assert_eq!(primes, vec![(1, 8), (1, 4), (1, 4), (0, 4), (0, 4)], "t = {t}");
+            assert_eq!(
+                primes,
+                vec![(1, 8), (1, 4), (1, 4), (0, 4), (0, 4)],
+                "t = {t}"
+            );
         }
     }
     // The non-reduced pair, exactly: at θ = 0, Singular's primary decomposition has two
@@ -467,7 +487,10 @@ fn inward_cranks_give_a_two_dimensional_translation_not_a_three_dof_self_motion(
         for c in d.components.iter().filter(|c| c.dimension == 2) {
             for p in &c.witness_points {
                 let y2: C64 = (5..8).map(|k| p[k] * p[k]).sum();
-                assert!((p[0] * p[0] - 1.0).norm() < 1e-9 && p[4].norm() < 1e-9, "{p:?}");
+                assert!(
+                    (p[0] * p[0] - 1.0).norm() < 1e-9 && p[4].norm() < 1e-9,
+                    "{p:?}"
+                );
                 assert!((y2 - 1.0).norm() < 1e-9, "on the sphere: {p:?}");
                 assert_eq!(jacobian_rank(&system, p), 6, "seed {seed}: {p:?}");
             }
@@ -476,7 +499,10 @@ fn inward_cranks_give_a_two_dimensional_translation_not_a_three_dof_self_motion(
         // them): all lie on the sphere.
         for (_, p) in &d.unresolved {
             let y2: C64 = (5..8).map(|k| p[k] * p[k]).sum();
-            assert!((p[0] * p[0] - 1.0).norm() < 1e-6 && (y2 - 1.0).norm() < 1e-6, "{p:?}");
+            assert!(
+                (p[0] * p[0] - 1.0).norm() < 1e-6 && (y2 - 1.0).norm() < 1e-6,
+                "{p:?}"
+            );
             assert!(p[1].norm() + p[2].norm() + p[3].norm() + p[4].norm() < 1e-6);
         }
         eprintln!(
@@ -558,7 +584,11 @@ fn third_mode_self_motions_need_more_than_the_printed_conditions() {
                 assert!(p[3].norm() < 1e-9 && (p[1] * p[1] - p[2] * p[2]).norm() < 1e-9);
             }
             if seed == 1 {
-                eprintln!("{inputs:?}: {} unresolved, {:.2} s", d.unresolved.len(), d.seconds);
+                eprintln!(
+                    "{inputs:?}: {} unresolved, {:.2} s",
+                    d.unresolved.len(),
+                    d.seconds
+                );
                 if matches!(inputs, InputMode::Given(_))
                     && let Some(primes) = singular_primes(
                         &SingularInputs::Tangents(["1", "0", "0", "1"]),
@@ -580,7 +610,8 @@ fn third_mode_self_motions_need_more_than_the_printed_conditions() {
 fn eq29_factors(t3: f64, t4: f64) -> [f64; 4] {
     [
         (t4 - 2.0) * (t4 + 2.0),
-        51597.0 * t3.powi(2) * t4.powi(4) - 18144.0 * t3.powi(2) * t4.powi(3)
+        51597.0 * t3.powi(2) * t4.powi(4)
+            - 18144.0 * t3.powi(2) * t4.powi(3)
             - 2520.0 * t3 * t4.powi(4)
             - 27855.0 * t3.powi(2) * t4.powi(2)
             + 1086.0 * t3 * t4.powi(3)
@@ -594,13 +625,17 @@ fn eq29_factors(t3: f64, t4: f64) -> [f64; 4] {
             - 5748.0 * t3
             + 3846.0 * t4
             + 2801.0,
-        742.0 * t3.powi(2) * t4.powi(2) - 843.0 * t3.powi(2) * t4 - 200.0 * t3 * t4.powi(2)
+        742.0 * t3.powi(2) * t4.powi(2)
+            - 843.0 * t3.powi(2) * t4
+            - 200.0 * t3 * t4.powi(2)
             - 439.0 * t3.powi(2)
             + 200.0 * t4.powi(2)
             + 800.0 * t3
             - 300.0 * t4
             + 100.0,
-        2990.0 * t3.powi(2) * t4.powi(2) - 843.0 * t3.powi(2) * t4 - 200.0 * t3 * t4.powi(2)
+        2990.0 * t3.powi(2) * t4.powi(2)
+            - 843.0 * t3.powi(2) * t4
+            - 200.0 * t3 * t4.powi(2)
             - 1001.0 * t3.powi(2)
             + 1000.0 * t4.powi(2)
             + 800.0 * t3
@@ -625,7 +660,10 @@ fn the_printed_third_mode_pose_of_fig_6_is_not_in_the_third_mode() {
         let d3 = (eq29_factors(t3 + h, t4)[k] - eq29_factors(t3 - h, t4)[k]) / (2.0 * h);
         let d4 = (eq29_factors(t3, t4 + h)[k] - eq29_factors(t3, t4 - h)[k]) / (2.0 * h);
         let distance = value[k].abs() / d3.hypot(d4);
-        eprintln!("eq. 29 factor {k}: value {:.4e}, distance {distance:.3}", value[k]);
+        eprintln!(
+            "eq. 29 factor {k}: value {:.4e}, distance {distance:.3}",
+            value[k]
+        );
         assert!(distance > 0.05, "factor {k}");
     }
     assert!(((deg(126.934) / 2.0).tan() - 2.0).abs() < 3e-3);
@@ -635,5 +673,50 @@ fn the_printed_third_mode_pose_of_fig_6_is_not_in_the_third_mode() {
             assert!(positive_dimensional(&d).is_empty());
             assert_eq!(isolated(&d), [16, 16, 0], "t12 = {t12}, seed {seed}");
         }
+    }
+}
+
+#[test]
+fn the_third_mode_self_motion_meets_both_schoenflies_modes() {
+    // Paper 004 §6: K1 ∩ K2 is empty (x0..x3 cannot all vanish under g14) and the platform
+    // passes from K1 to K2 through K3 self-motions (eqs. 34–35 contain the self-motion
+    // conditions). At Fig. 13's inputs, the K3 curve (x3 = 0, x1 = ±x2 on it) is followed to
+    // the planes x0 = 0 (then x0 = x3 = 0: K1) and x2 = 0 (then x1 = x2 = 0: K2); the
+    // endpoints that satisfy I are configurations common to K3 and K1 (K2): transitions.
+    let inputs = InputMode::Given(FIG13);
+    let system = fibre(inputs);
+    let d = decomposition(inputs, 1);
+    for c in &d.components {
+        let norm: C64 = (0..4).map(|k| c.sample_point[k] * c.sample_point[k]).sum();
+        assert!((norm - 1.0).norm() < 1e-9, "g14: K1 ∩ K2 is empty");
+    }
+    let k3 = d.components.iter().find(|c| c.degree == 8).unwrap();
+    assert_eq!(component_mode(k3), Mode::K3);
+    // Singular (the K3 prime at these inputs plus x0, resp. x2): 4 points each; with x0 = 0:
+    // x3 = 0, x1 = −x2, x2 = −2 y3, y3² = 1/8, y2² = −1/16 (complex: the K1 ↔ K3 transition
+    // is not real here); with x2 = 0: x1 = x3 = 0, x0 = −4 y2, y3² = 7/8, y2² = 1/16 (real:
+    // the K2 ↔ K3 transition, two poses as ±x).
+    for (k, (y2_squared, y3_squared), reals) in [
+        (0, (-1.0 / 16.0, 1.0 / 8.0), 0),
+        (2, (1.0 / 16.0, 7.0 / 8.0), 4),
+    ] {
+        let mut target = vec![C64::from(0.0); 9];
+        target[k] = C64::from(1.0);
+        // The transition points are singular points of V(I) (the K3 curve crosses a K1 or
+        // K2 curve there) where path tracking without an endgame stops; the plane is stopped
+        // at x_k = 1e-5, and the points approach the mode's plane x_k = 0 linearly.
+        target[8] = C64::from(-1e-5);
+        let points = move_slice(&system, &d, k3, &target);
+        assert_eq!(points.len(), 4, "x{k} = 1e-5");
+        for p in &points {
+            assert!(p[3].norm() < 1e-4 && (p[1] + p[2]).norm() < 1e-4, "{p:?}");
+            assert!((p[6] * p[6] - y2_squared).norm() < 1e-4, "{p:?}");
+            assert!((p[7] * p[7] - y3_squared).norm() < 1e-4, "{p:?}");
+        }
+        let real = points
+            .iter()
+            .filter(|p| p.iter().all(|v| v.im.abs() < 1e-6))
+            .count();
+        assert_eq!(real, reals, "x{k} = 1e-5");
     }
 }
