@@ -16,6 +16,7 @@ use kinsyn::spatial::study;
 use nalgebra::{DMatrix, Vector3};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
+use std::fmt::Write as _;
 
 #[path = "common/singular.rs"]
 mod singular;
@@ -125,10 +126,10 @@ fn singular_poly(p: &Poly, names: &[String]) -> String {
         } else {
             "+"
         };
-        s += &format!("{sign}{}", k.abs());
+        write!(s, "{sign}{}", k.abs()).unwrap();
         for (v, n) in e.iter().zip(names) {
             if *v > 0 {
-                s += &format!("*{n}^{v}");
+                write!(s, "*{n}^{v}").unwrap();
             }
         }
     }
@@ -146,7 +147,7 @@ fn singular_ideal(inputs: &SingularInputs) -> String {
     let system = match inputs {
         SingularInputs::Tangents(t) => {
             for (i, v) in t.iter().enumerate() {
-                script += &format!("number t1{} = {v};\n", i + 1);
+                writeln!(script, "number t1{} = {v};", i + 1).unwrap();
             }
             Ruu::paper004().constraints(InputMode::Free).unwrap()
         }
@@ -156,11 +157,13 @@ fn singular_ideal(inputs: &SingularInputs) -> String {
     };
     let names = system.variables().to_vec();
     for k in IDEAL {
-        script += &format!(
-            "poly g{} = {};\n",
+        writeln!(
+            script,
+            "poly g{} = {};",
             k + 1,
             singular_poly(&system.equations()[k], &names)
-        );
+        )
+        .unwrap();
     }
     script += "ideal I = g1,g2,g3,g4,g5,g6,g7,g8,g13,g14;\nideal S = std(I);\n";
     script
@@ -656,14 +659,11 @@ fn the_printed_third_mode_pose_of_fig_6_is_not_in_the_third_mode() {
     let (t3, t4) = ((deg(64.243) / 2.0).tan(), (deg(56.901) / 2.0).tan());
     let h = 1e-6;
     let value = eq29_factors(t3, t4);
-    for k in 0..4 {
+    for (k, v) in value.iter().enumerate() {
         let d3 = (eq29_factors(t3 + h, t4)[k] - eq29_factors(t3 - h, t4)[k]) / (2.0 * h);
         let d4 = (eq29_factors(t3, t4 + h)[k] - eq29_factors(t3, t4 - h)[k]) / (2.0 * h);
-        let distance = value[k].abs() / d3.hypot(d4);
-        eprintln!(
-            "eq. 29 factor {k}: value {:.4e}, distance {distance:.3}",
-            value[k]
-        );
+        let distance = v.abs() / d3.hypot(d4);
+        eprintln!("eq. 29 factor {k}: value {v:.4e}, distance {distance:.3}");
         assert!(distance > 0.05, "factor {k}");
     }
     assert!(((deg(126.934) / 2.0).tan() - 2.0).abs() < 3e-3);
