@@ -41,7 +41,9 @@ pub use parameter::{
 pub use regeneration::{RegenerationProgress, regenerate, regenerate_with_progress};
 pub use start::StartSystem;
 pub use tracker::{PathFailure, TrackerSettings};
-pub use witness::{Component, DecomposeError, DecomposeSettings, Decomposition, decompose};
+pub use witness::{
+    Component, DecomposeError, DecomposeSettings, Decomposition, decompose, points_on_slice,
+};
 
 use crate::certify::{Certificate, Reality, certify_roots};
 pub use crate::poly::C64;

@@ -572,3 +572,44 @@ fn groups_of(parent: &mut [usize]) -> Vec<Vec<usize>> {
     }
     groups
 }
+
+/// The points of a component of dimension `d ≥ 1` of `V(system)` on another slice of that
+/// dimension (`d` rows `[a_0 … a_{N−1}, b]`): its witness points on the decomposition's slice
+/// ([`Decomposition::slices`]) followed as the slice moves, with `N − d` random combinations
+/// of the equations (the component is a reduced component of their solution set). A path that
+/// fails leaves its point out. Used to find real points of a component on real slices.
+///
+/// # Errors
+/// [`DecomposeError::Family`] if the slice does not have `d` rows of `N + 1` numbers, or the
+/// component is of dimension 0 or has no slice in `decomposition`.
+pub fn points_on_slice(
+    system: &System,
+    decomposition: &Decomposition,
+    component: &Component,
+    slice: &[Vec<C64>],
+    settings: &DecomposeSettings,
+) -> Result<Vec<Vec<C64>>, DecomposeError> {
+    let (d, big_n) = (component.dimension, system.nvars());
+    let base = decomposition
+        .slices
+        .get(d)
+        .filter(|s| d > 0 && s.len() == d)
+        .ok_or_else(|| DecomposeError::Family(format!("no slice of dimension {d}")))?;
+    if slice.len() != d || slice.iter().any(|row| row.len() != big_n + 1) {
+        return Err(DecomposeError::Family(format!(
+            "a slice of dimension {d} has {d} rows of {} numbers",
+            big_n + 1
+        )));
+    }
+    let mut rng = ChaCha8Rng::seed_from_u64(settings.seed ^ 0x5eed);
+    let family = slice_family(system, d, &mut rng)?;
+    let ends = track_parameters(
+        &family,
+        &base.concat(),
+        &slice.concat(),
+        &component.witness_points,
+        settings.solve.tracker,
+    )
+    .map_err(|e| DecomposeError::Family(e.to_string()))?;
+    Ok(ends.into_iter().flatten().collect())
+}

@@ -22,6 +22,7 @@ mod jacobian;
 pub mod leg;
 pub mod lookup;
 mod modes;
+mod operation_mode;
 mod polynomial;
 mod poses;
 mod position;
@@ -34,6 +35,10 @@ pub use jacobian::{Jacobians, RowKind, WrenchRow};
 pub use leg::{LegCheck, LegWarning, LegWarningKind};
 pub use lookup::{CatalogueChain, ChainLookup, CommittedChains};
 pub use modes::{MAX_INPUTS, Mode, Modes, PatternModes};
+pub use operation_mode::{
+    DecompositionMethod, LocalMotion, ModeComponent, OperationModeError, OperationModeSettings,
+    OperationModes,
+};
 pub use polynomial::{
     FreeRevolute, InputValues, LegConstraint, LegKind, LegResidual, PositionSystem,
     PositionSystemError,

@@ -1,0 +1,384 @@
+//! **Operation modes** of a manipulator whose constraints are polynomial in the Study
+//! parameters of its platform ([`Manipulator::constraint_system`]): the irreducible components
+//! of its solution set, found by numerical irreducible decomposition
+//! ([`crate::homotopy::regenerate`] or [`crate::homotopy::decompose`]), each with the motion
+//! of the platform in it.
+//!
+//! At fixed inputs the components are the **assemblies** (dimension 0) and the **self-motions**
+//! (positive dimension: the platform moves while every input is held). With the inputs free
+//! (their half-angle tangents unknowns), the components are the **operation modes** over input
+//! and pose space; a mode's dimension is its number of degrees of freedom.
+//!
+//! The motion of the platform in a component is classified with [`crate::motion::classify`]
+//! from real points of it: the tangent space of the constraint variety there (the null space of
+//! the constraint Jacobian, of the component's dimension at a smooth point) gives the platform's
+//! twists, by central differences of the Study parameters' displacements; a short walk along the
+//! component (steps corrected back onto it by minimum-norm Newton steps) gives further samples,
+//! so that a displacement group is named only when the motion is seen to stay in it. An
+//! assembly's **operation mode** is found the same way with the inputs released: the component of
+//! the free-input variety through it, its local dimension and motion.
+
+use super::Manipulator;
+use super::polynomial::{InputValues, PositionSystem, PositionSystemError};
+use crate::homotopy::{
+    C64, Component, DecomposeError, DecomposeSettings, Decomposition, decompose, points_on_slice,
+    regenerate,
+};
+use crate::motion::{self, Classification};
+use crate::poly::geometry::Chart;
+use crate::spatial::{Displacement, compose, inverse, log, study};
+use nalgebra::{DMatrix, DVector};
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+use rand_distr::StandardNormal;
+
+/// Which decomposition algorithm.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum DecompositionMethod {
+    /// Equation-by-equation regeneration ([`crate::homotopy::regenerate`]).
+    #[default]
+    Regeneration,
+    /// Witness supersets dimension by dimension ([`crate::homotopy::decompose`]).
+    ByDimension,
+}
+
+/// How to find the operation modes.
+#[derive(Debug, Clone, PartialEq)]
+pub struct OperationModeSettings {
+    /// The decomposition's settings (seed, tolerances).
+    pub decompose: DecomposeSettings,
+    /// The algorithm.
+    pub method: DecompositionMethod,
+    /// Samples of each motion: the real point and the ends of walks from it.
+    pub samples: usize,
+    /// The length of one walk step, in the units of the Study parameters (dimensionless).
+    pub step: f64,
+    /// The most random real slices tried for a real point of a positive-dimensional
+    /// component whose witness points are all complex.
+    pub real_slices: usize,
+}
+
+impl Default for OperationModeSettings {
+    fn default() -> Self {
+        Self {
+            decompose: DecomposeSettings::default(),
+            method: DecompositionMethod::default(),
+            samples: 4,
+            step: 0.05,
+            real_slices: 8,
+        }
+    }
+}
+
+/// Why the operation modes cannot be found.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum OperationModeError {
+    /// The manipulator has no polynomial constraint system here.
+    #[error(transparent)]
+    System(#[from] PositionSystemError),
+    /// The decomposition failed.
+    #[error(transparent)]
+    Decompose(#[from] DecomposeError),
+}
+
+/// The motion of the platform at a real point of a component.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LocalMotion {
+    /// The real point (the system's variables).
+    pub point: Vec<f64>,
+    /// The platform's pose there.
+    pub pose: Displacement,
+    /// The dimension of the component at the point (the null space of the constraint
+    /// Jacobian): its degrees of freedom.
+    pub dof: usize,
+    /// The platform's motion, from the point and walks along the component.
+    pub motion: Classification,
+}
+
+/// One irreducible component of the constraint variety.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ModeComponent {
+    /// Its dimension: degrees of freedom (free inputs) or of the self-motion (fixed inputs).
+    pub dimension: usize,
+    /// Its degree.
+    pub degree: usize,
+    /// Whether the trace test confirmed it.
+    pub trace_test_passed: bool,
+    /// A (complex) witness point.
+    pub sample: Vec<C64>,
+    /// Whether a real witness point was found and its motion, else `None`.
+    pub real: Option<LocalMotion>,
+    /// The real witness points (isolated assemblies have one).
+    pub real_points: Vec<Vec<f64>>,
+    /// For a real assembly (dimension 0 at fixed inputs): the operation mode through it with
+    /// the inputs released.
+    pub released: Option<LocalMotion>,
+}
+
+/// The components of a manipulator's constraint variety.
+#[derive(Debug, Clone, PartialEq)]
+pub struct OperationModes {
+    /// The system decomposed.
+    pub system: PositionSystem,
+    /// Whether the inputs were free.
+    pub free_inputs: bool,
+    /// The decomposition.
+    pub decomposition: Decomposition,
+    /// The components, by decreasing dimension.
+    pub components: Vec<ModeComponent>,
+}
+
+/// A point is real when every imaginary part is below this fraction of `1 + |x|`.
+const REAL: f64 = 1e-7;
+
+impl Manipulator {
+    /// The components of the constraint variety at the given inputs (assemblies and
+    /// self-motions, each real assembly with its operation mode), or over input and pose space
+    /// with [`InputValues::Free`] (module documentation). The Study parameters are normalised
+    /// by `x0² + x1² + x2² + x3² = 1` ([`Chart::Unit`]), so each pose appears twice, as `±(x, y)`.
+    ///
+    /// # Errors
+    /// [`OperationModeError`] when the legs have no polynomial form or the decomposition fails.
+    pub fn operation_modes(
+        &self,
+        inputs: &InputValues,
+        settings: &OperationModeSettings,
+    ) -> Result<OperationModes, OperationModeError> {
+        let system = self.constraint_system(inputs, &Chart::Unit)?;
+        let free = matches!(inputs, InputValues::Free);
+        let released = if free {
+            None
+        } else {
+            Some(self.constraint_system(&InputValues::Free, &Chart::Unit)?)
+        };
+        let decomposition = match settings.method {
+            DecompositionMethod::Regeneration => regenerate(system.system(), &settings.decompose)?,
+            DecompositionMethod::ByDimension => decompose(system.system(), &settings.decompose)?,
+        };
+        let mut rng = ChaCha8Rng::seed_from_u64(settings.decompose.seed);
+        let given: Vec<(usize, f64)> = match inputs {
+            InputValues::Given(g) => g.to_vec(),
+            InputValues::Free => Vec::new(),
+        };
+        let components = decomposition
+            .components
+            .iter()
+            .map(|c| {
+                let mut real_points: Vec<Vec<f64>> = c
+                    .witness_points
+                    .iter()
+                    .filter_map(|x| real_point(x))
+                    .collect();
+                if real_points.is_empty() && c.dimension > 0 {
+                    real_points = real_slices(&system, &decomposition, c, settings, &mut rng);
+                }
+                let real = real_points
+                    .first()
+                    .and_then(|p| self.local_motion(&system, p, settings, &mut rng));
+                let released = match (&released, real_points.first()) {
+                    (Some(free_system), Some(p)) if c.dimension == 0 => {
+                        let q = released_point(free_system, p, &given, self.actuators.len());
+                        q.and_then(|q| self.local_motion(free_system, &q, settings, &mut rng))
+                    }
+                    _ => None,
+                };
+                ModeComponent {
+                    dimension: c.dimension,
+                    degree: c.degree,
+                    trace_test_passed: c.trace_test_passed,
+                    sample: c.sample_point.clone(),
+                    real,
+                    real_points,
+                    released,
+                }
+            })
+            .collect();
+        Ok(OperationModes {
+            system,
+            free_inputs: free,
+            decomposition,
+            components,
+        })
+    }
+
+    /// The motion of the platform on the constraint variety of `system` near its real point
+    /// `p`: the tangent space there, and walks along the variety (module documentation).
+    fn local_motion(
+        &self,
+        system: &PositionSystem,
+        p: &[f64],
+        settings: &OperationModeSettings,
+        rng: &mut ChaCha8Rng,
+    ) -> Option<LocalMotion> {
+        let (twists, dof) = self.tangent_twists(system, p)?;
+        let pose = system.displacement(p).ok()?;
+        let mut spans = vec![twists];
+        let mut poses = vec![pose.clone()];
+        if dof > 0 {
+            for _ in 1..settings.samples {
+                let Some(q) = walk(system, p, settings.step, rng) else {
+                    continue;
+                };
+                if let (Some((t, d)), Ok(g)) = (self.tangent_twists(system, &q), system.displacement(&q))
+                    && d == dof
+                {
+                    spans.push(t);
+                    poses.push(g);
+                }
+            }
+        }
+        let mut separation = f64::INFINITY;
+        for (i, a) in poses.iter().enumerate() {
+            for b in &poses[i + 1..] {
+                separation = separation.min(self.mechanism.pose_distance(a, b));
+            }
+        }
+        let motion = motion::classify(&spans, separation, motion::SUBSPACE_TOLERANCE);
+        Some(LocalMotion {
+            point: p.to_vec(),
+            pose,
+            dof,
+            motion,
+        })
+    }
+
+    /// The platform's twists (dimensionless, [`crate::mechanism::Mechanism::unitless_twists`])
+    /// along the tangent space of the constraint variety at `p`, and its dimension.
+    fn tangent_twists(&self, system: &PositionSystem, p: &[f64]) -> Option<(DMatrix<f64>, usize)> {
+        let null = tangent_space(system, p)?;
+        let dof = null.ncols();
+        let h = 1e-6;
+        let mut twists = DMatrix::zeros(6, dof);
+        for k in 0..dof {
+            let shifted = |sign: f64| -> Option<Displacement> {
+                let q: Vec<f64> = p
+                    .iter()
+                    .enumerate()
+                    .map(|(i, x)| x + sign * h * null[(i, k)])
+                    .collect();
+                let s: [f64; 8] = q[..8].try_into().ok()?;
+                study::to_displacement(&study::normalise(&s).ok()?, 1e-6).ok()
+            };
+            let (plus, minus) = (shifted(1.0)?, shifted(-1.0)?);
+            let twist = log(&compose(&plus, &inverse(&minus))).to_vector() / (2.0 * h);
+            twists.set_column(k, &twist);
+        }
+        Some((self.mechanism.unitless_twists(&twists), dof))
+    }
+}
+
+/// The real point of a complex one, if it is real.
+fn real_point(x: &[C64]) -> Option<Vec<f64>> {
+    let size: f64 = 1.0 + x.iter().map(|v| v.norm_sqr()).sum::<f64>().sqrt();
+    x.iter()
+        .all(|v| v.im.abs() <= REAL * size)
+        .then(|| x.iter().map(|v| v.re).collect())
+}
+
+/// Real points of a positive-dimensional component: its points on random **real** slices
+/// (real hyperplanes through the real part of a witness point), as many slices as
+/// [`OperationModeSettings::real_slices`] until one gives a real point.
+fn real_slices(
+    system: &PositionSystem,
+    decomposition: &Decomposition,
+    c: &Component,
+    settings: &OperationModeSettings,
+    rng: &mut ChaCha8Rng,
+) -> Vec<Vec<f64>> {
+    let n = system.system().nvars();
+    for attempt in 0..settings.real_slices {
+        let centre = &c.witness_points[attempt % c.witness_points.len()];
+        let slice: Vec<Vec<C64>> = (0..c.dimension)
+            .map(|_| {
+                let a: Vec<f64> = (0..n).map(|_| rng.sample::<f64, _>(StandardNormal)).collect();
+                let b: f64 = -a.iter().zip(centre).map(|(a, x)| a * x.re).sum::<f64>();
+                a.into_iter().chain([b]).map(C64::from).collect()
+            })
+            .collect();
+        let Ok(points) = points_on_slice(system.system(), decomposition, c, &slice, &settings.decompose)
+        else {
+            continue;
+        };
+        let real: Vec<Vec<f64>> = points.iter().filter_map(|x| real_point(x)).collect();
+        if !real.is_empty() {
+            return real;
+        }
+    }
+    Vec::new()
+}
+
+/// The point of the free-input variety of an assembly `p` at the given inputs: the Study
+/// parameters, then `tan(δ/2)` of each input's displacement (0 for those not given).
+fn released_point(
+    free: &PositionSystem,
+    p: &[f64],
+    given: &[(usize, f64)],
+    actuators: usize,
+) -> Option<Vec<f64>> {
+    let mut q = p[..8].to_vec();
+    q.resize(free.system().nvars(), 0.0);
+    for a in 0..actuators {
+        let delta = given.iter().find(|(i, _)| *i == a).map_or(0.0, |(_, v)| *v);
+        let variable = *free.inputs().get(a)?;
+        q[variable] = (delta / 2.0).tan();
+    }
+    Some(q)
+}
+
+/// The constraint Jacobian of `system` at the real point `p` (rows: equations).
+fn jacobian(system: &PositionSystem, p: &[f64]) -> (DVector<f64>, DMatrix<f64>) {
+    let s = system.system();
+    let x: Vec<C64> = p.iter().map(|v| C64::from(*v)).collect();
+    let n = s.nvars();
+    let values = DVector::from_iterator(s.len(), s.evaluate(&x).iter().map(|v| v.re));
+    let mut j = DMatrix::zeros(s.len(), n);
+    for (i, f) in s.equations().iter().enumerate() {
+        for k in 0..n {
+            j[(i, k)] = f.derivative(k).eval(&x).re;
+        }
+    }
+    (values, j)
+}
+
+/// An orthonormal basis of the null space of the constraint Jacobian at `p` (singular values
+/// below `1e-8` of the largest dropped).
+fn tangent_space(system: &PositionSystem, p: &[f64]) -> Option<DMatrix<f64>> {
+    let (_, j) = jacobian(system, p);
+    let n = j.ncols();
+    // Zero rows added so that the SVD's Vᵀ is square: all n right singular vectors.
+    let mut padded = DMatrix::zeros(j.nrows().max(n), n);
+    padded.rows_mut(0, j.nrows()).copy_from(&j);
+    let svd = padded.svd(false, true);
+    let v_t = svd.v_t?;
+    let largest = svd.singular_values.max();
+    let kept: Vec<usize> = (0..n)
+        .filter(|k| svd.singular_values[*k] <= 1e-8 * largest)
+        .collect();
+    let mut basis = DMatrix::zeros(n, kept.len());
+    for (c, k) in kept.iter().enumerate() {
+        basis.set_column(c, &v_t.row(*k).transpose());
+    }
+    Some(basis)
+}
+
+/// A point of the variety a step away from `p` in a random tangent direction, corrected back
+/// onto it by minimum-norm Newton steps.
+fn walk(system: &PositionSystem, p: &[f64], step: f64, rng: &mut ChaCha8Rng) -> Option<Vec<f64>> {
+    let null = tangent_space(system, p)?;
+    if null.ncols() == 0 {
+        return None;
+    }
+    let c = DVector::from_fn(null.ncols(), |_, _| rng.sample::<f64, _>(StandardNormal));
+    let d = &null * c;
+    let mut q = DVector::from_column_slice(p) + d.normalize() * step;
+    for _ in 0..30 {
+        let (f, j) = jacobian(system, q.as_slice());
+        if f.norm() < 1e-13 {
+            return Some(q.iter().copied().collect());
+        }
+        let dq = j.svd(true, true).solve(&f, 1e-10).ok()?;
+        q -= dq;
+    }
+    let (f, _) = jacobian(system, q.as_slice());
+    (f.norm() < 1e-10).then(|| q.iter().copied().collect())
+}
