@@ -245,6 +245,47 @@ pub(super) enum Command {
         #[arg(long)]
         json: bool,
     },
+    /// The irreducible components of a polynomial system or of a manipulator's constraints:
+    /// assemblies, self-motions and operation modes, by numerical irreducible decomposition.
+    ///
+    /// FILE is a Bertini input file (any number of equations and unknowns: the components of
+    /// every dimension are found, each with its degree and a point) or a manipulator file whose
+    /// legs have a polynomial form (S–S, R–S, S–R, U–U with parallel inner axes such as RUU;
+    /// docs/position-analysis.md). For a manipulator the unknowns are the Study parameters of
+    /// the platform (normalised, so each pose appears twice as ±(x, y)): at fixed inputs
+    /// (--inputs, default the reference values) the components are the assemblies (dimension 0)
+    /// and the self-motions (positive dimension: the platform moves while every input is
+    /// held); each real assembly is reported with its operation mode — the dof and the motion
+    /// pattern of the platform with the inputs released (e.g. X(z), a Schönflies motion). With
+    /// --free-inputs the inputs are unknowns too (tangents of their half angles) and the
+    /// components are the operation modes over input and pose space, their dimension the dof.
+    /// Regeneration (the default) brings the equations in one at a time; by-dimension solves a
+    /// sliced system per dimension (docs/operation-modes.md).
+    #[command(
+        after_help = "Examples:\n  kinsyn components mechanisms/4-ruu.json --inputs 'R1.1=17,R2.1=-11,R3.1=14,R4.1=6'\n  kinsyn components mechanisms/4-ruu.json --inputs 'R1.1=107.19,R2.1=17.19,R3.1=-72.81,R4.1=17.19'\n  kinsyn components examples/systems/twisted-cubic-and-line.bertini --json"
+    )]
+    Components {
+        /// A Bertini input file or a manipulator file.
+        file: PathBuf,
+        /// Input values of a manipulator (as for analyze: joint values from the reference,
+        /// angles in the file's unit), e.g. 'R1.1=10,R2.1=-5'; inputs not named are held at
+        /// their reference values.
+        #[arg(long, allow_hyphen_values = true)]
+        inputs: Option<String>,
+        /// Every input of the manipulator an unknown: the operation modes over input and pose
+        /// space (much larger systems: minutes where fixed inputs take a second).
+        #[arg(long)]
+        free_inputs: bool,
+        /// The algorithm: regeneration (equation by equation) or by-dimension.
+        #[arg(long, value_enum, default_value = "regeneration")]
+        method: MethodArg,
+        /// Seed of every random choice (slices, randomisations, loops).
+        #[arg(long, default_value_t = 1)]
+        seed: u64,
+        /// Print JSON instead of text.
+        #[arg(long)]
+        json: bool,
+    },
     /// Paper 003's planar 4-RRR with a configurable platform by the paper's formulas: inverse
     /// and forward position, velocities by screw theory (geometry of §5; angles in degrees).
     #[command(subcommand)]
@@ -451,6 +492,24 @@ pub(super) struct Reading {
 pub(super) enum PrismaticsArg {
     Separated,
     Perpendicular,
+}
+
+/// `--method` of `kinsyn components`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub(super) enum MethodArg {
+    /// Equation-by-equation regeneration.
+    Regeneration,
+    /// A sliced system per dimension.
+    ByDimension,
+}
+
+impl From<MethodArg> for kinsyn::manipulator::DecompositionMethod {
+    fn from(m: MethodArg) -> Self {
+        match m {
+            MethodArg::Regeneration => Self::Regeneration,
+            MethodArg::ByDimension => Self::ByDimension,
+        }
+    }
 }
 
 /// `--start` of `kinsyn solve`.

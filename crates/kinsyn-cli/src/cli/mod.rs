@@ -8,6 +8,7 @@
 
 mod args;
 mod catalogue;
+mod components;
 mod configurable;
 mod files;
 mod manipulator;
@@ -206,6 +207,23 @@ fn execute(command: Command) -> Result<String, CliError> {
                 threads,
                 certify: !no_certify,
                 show,
+            },
+            as_json,
+        ),
+        Command::Components {
+            file,
+            inputs,
+            free_inputs,
+            method,
+            seed,
+            json: as_json,
+        } => components::components(
+            &file,
+            &components::ComponentsOptions {
+                seed,
+                method: method.into(),
+                inputs,
+                free_inputs,
             },
             as_json,
         ),

@@ -22,7 +22,7 @@ use super::Manipulator;
 use super::polynomial::{InputValues, PositionSystem, PositionSystemError};
 use crate::homotopy::{
     C64, Component, DecomposeError, DecomposeSettings, Decomposition, decompose, points_on_slice,
-    regenerate,
+    RegenerationProgress, regenerate_with_progress,
 };
 use crate::motion::{self, Classification};
 use crate::poly::geometry::Chart;
@@ -144,6 +144,20 @@ impl Manipulator {
         inputs: &InputValues,
         settings: &OperationModeSettings,
     ) -> Result<OperationModes, OperationModeError> {
+        self.operation_modes_with_progress(inputs, settings, &mut |_| {})
+    }
+
+    /// [`Self::operation_modes`], reporting the regeneration's progress (after each equation;
+    /// nothing with [`DecompositionMethod::ByDimension`]).
+    ///
+    /// # Errors
+    /// As [`Self::operation_modes`].
+    pub fn operation_modes_with_progress(
+        &self,
+        inputs: &InputValues,
+        settings: &OperationModeSettings,
+        progress: &mut dyn FnMut(RegenerationProgress),
+    ) -> Result<OperationModes, OperationModeError> {
         let system = self.constraint_system(inputs, &Chart::Unit)?;
         let free = matches!(inputs, InputValues::Free);
         let released = if free {
@@ -152,7 +166,9 @@ impl Manipulator {
             Some(self.constraint_system(&InputValues::Free, &Chart::Unit)?)
         };
         let decomposition = match settings.method {
-            DecompositionMethod::Regeneration => regenerate(system.system(), &settings.decompose)?,
+            DecompositionMethod::Regeneration => {
+                regenerate_with_progress(system.system(), &settings.decompose, progress)?
+            }
             DecompositionMethod::ByDimension => decompose(system.system(), &settings.decompose)?,
         };
         let mut rng = ChaCha8Rng::seed_from_u64(settings.decompose.seed);

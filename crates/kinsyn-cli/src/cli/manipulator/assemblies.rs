@@ -24,7 +24,7 @@ struct Assembly {
 /// vector in its angle unit, each number in full (the shortest text that reads back to the same
 /// double): a platform of fewer than six dof meets its constraints only at the exact pose, and
 /// six rounded decimals leave it off them by more than the assembly tolerance.
-fn pose_text(m: &Manipulator, g: &Displacement) -> String {
+pub fn pose_text(m: &Manipulator, g: &Displacement) -> String {
     let t = g.translation.vector;
     let r = rotation_log(&g.rotation).map(|a| m.units().angle.from_radians(a));
     [t.x, t.y, t.z, r.x, r.y, r.z]

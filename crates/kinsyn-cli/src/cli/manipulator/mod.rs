@@ -7,7 +7,7 @@ mod assemblies;
 mod modes;
 
 pub use analyze::{Placement, analyze};
-pub use assemblies::all_assemblies;
+pub use assemblies::{all_assemblies, pose_text};
 pub use modes::{DEFAULT_MAX_SUBSETS, MAX_SUBSETS_CEILING, Selection, modes};
 
 use super::CliError;

@@ -1,0 +1,373 @@
+//! `kinsyn components`: the irreducible components of a polynomial system (a Bertini input
+//! file) or of a manipulator's constraint variety — its assemblies, self-motions and operation
+//! modes — by numerical irreducible decomposition (docs/operation-modes.md).
+
+use super::manipulator::{load, pose_text};
+use super::solve::read_input;
+use super::{CliError, json, terminal};
+use kinsyn::homotopy::{
+    Component, DecomposeSettings, Decomposition, RegenerationProgress, decompose,
+    regenerate_with_progress,
+};
+use kinsyn::manipulator::{
+    DecompositionMethod, InputValues, LocalMotion, Manipulator, ModeComponent,
+    OperationModeSettings, OperationModes,
+};
+use kinsyn::poly::C64;
+use std::fmt::Write as _;
+use std::path::Path;
+
+/// How `kinsyn components` runs.
+#[derive(Debug, Clone)]
+pub struct ComponentsOptions {
+    /// The seed of every random choice.
+    pub seed: u64,
+    /// The algorithm.
+    pub method: DecompositionMethod,
+    /// For a manipulator: its inputs (text of `--inputs`), `None` for the reference values.
+    pub inputs: Option<String>,
+    /// For a manipulator: every input an unknown (modes over input and pose space).
+    pub free_inputs: bool,
+}
+
+/// `kinsyn components FILE`: a Bertini input file or a manipulator file.
+pub fn components(path: &Path, options: &ComponentsOptions, as_json: bool) -> Result<String, CliError> {
+    let text = super::files::read_text(path, "not a Bertini input file or a kinsyn manipulator file")?;
+    let settings = DecomposeSettings {
+        seed: options.seed,
+        ..DecomposeSettings::default()
+    };
+    if text.trim_start().starts_with('{') {
+        return manipulator_components(path, options, settings, as_json);
+    }
+    if options.inputs.is_some() || options.free_inputs {
+        return Err(CliError::Input(format!(
+            "{}: --inputs and --free-inputs apply to manipulator files, not to polynomial systems",
+            path.display()
+        )));
+    }
+    let input = read_input(path)?;
+    let system = &input.system;
+    let bar = terminal::progress(system.len(), "equations", "regeneration");
+    let d = match options.method {
+        DecompositionMethod::Regeneration => {
+            regenerate_with_progress(system, &settings, &mut |p: RegenerationProgress| {
+                bar.set_position(p.equations as u64);
+            })
+        }
+        DecompositionMethod::ByDimension => decompose(system, &settings),
+    }
+    .map_err(|e| CliError::Input(format!("{}: {e}", path.display())))?;
+    bar.finish_and_clear();
+    if as_json {
+        return Ok(json(&serde_json::json!({
+            "file": path.display().to_string(),
+            "variables": system.variables(),
+            "equations": system.len(),
+            "method": method_name(options.method),
+            "seed": options.seed,
+            "components": d.components.iter().map(component_json).collect::<Vec<_>>(),
+            "unresolved": d.unresolved.iter().map(|(dim, x)| serde_json::json!({
+                "dimension": dim, "point": complex(x)})).collect::<Vec<_>>(),
+            "junk": d.junk,
+            "paths": d.paths,
+            "seconds": d.seconds,
+        })));
+    }
+    let mut out = String::new();
+    let _ = writeln!(
+        out,
+        "{}: {} equations in {} unknowns ({})",
+        path.display(),
+        system.len(),
+        system.nvars(),
+        system.variables().join(", ")
+    );
+    let _ = writeln!(out, "{}", summary(&d, options.method));
+    for (k, c) in d.components.iter().enumerate() {
+        let _ = writeln!(
+            out,
+            "  {}. dimension {}, degree {}{}; a point: {}",
+            k + 1,
+            c.dimension,
+            c.degree,
+            if c.trace_test_passed {
+                ""
+            } else {
+                " (trace test FAILED: perhaps a union of components)"
+            },
+            point_text(system.variables(), &c.sample_point)
+        );
+    }
+    unresolved_text(&mut out, &d);
+    Ok(out)
+}
+
+fn method_name(m: DecompositionMethod) -> &'static str {
+    match m {
+        DecompositionMethod::Regeneration => "regeneration",
+        DecompositionMethod::ByDimension => "by-dimension",
+    }
+}
+
+fn summary(d: &Decomposition, method: DecompositionMethod) -> String {
+    format!(
+        "{} irreducible component{} ({}: {} paths, {:.2} s; {} junk point{} removed)",
+        d.components.len(),
+        if d.components.len() == 1 { "" } else { "s" },
+        method_name(method),
+        d.paths,
+        d.seconds,
+        d.junk,
+        if d.junk == 1 { "" } else { "s" }
+    )
+}
+
+fn unresolved_text(out: &mut String, d: &Decomposition) {
+    if !d.unresolved.is_empty() {
+        let mut dims: Vec<usize> = d.unresolved.iter().map(|(k, _)| *k).collect();
+        dims.sort_unstable();
+        dims.dedup();
+        let _ = writeln!(
+            out,
+            "warning: {} singular witness point{} on no component found (dimension {}): a non-reduced component (multiplicity > 1), not decomposed here",
+            d.unresolved.len(),
+            if d.unresolved.len() == 1 { "" } else { "s" },
+            dims.iter().map(ToString::to_string).collect::<Vec<_>>().join(", ")
+        );
+    }
+}
+
+fn complex(x: &[C64]) -> Vec<[f64; 2]> {
+    x.iter().map(|c| [c.re, c.im]).collect()
+}
+
+fn component_json(c: &Component) -> serde_json::Value {
+    serde_json::json!({
+        "dimension": c.dimension,
+        "degree": c.degree,
+        "trace_test_passed": c.trace_test_passed,
+        "sample_point": complex(&c.sample_point),
+        "witness_points": c.witness_points.iter().map(|x| complex(x)).collect::<Vec<_>>(),
+    })
+}
+
+/// `name = value` for each variable, complex values as `a+bi`, six significant digits.
+fn point_text(names: &[String], x: &[C64]) -> String {
+    names
+        .iter()
+        .zip(x)
+        .map(|(n, v)| {
+            let re = if v.re.abs() < 1e-10 { 0.0 } else { v.re };
+            if v.im.abs() < 1e-10 * (1.0 + v.norm()) {
+                format!("{n}={re:.6}")
+            } else {
+                format!("{n}={re:.6}{:+.6}i", v.im)
+            }
+        })
+        .collect::<Vec<_>>()
+        .join(" ")
+}
+
+fn motion_text(m: &LocalMotion) -> String {
+    let name = m.motion.pattern.name();
+    let group = if m.motion.pattern.is_group() {
+        ""
+    } else {
+        " (not a displacement group)"
+    };
+    format!("{} dof, {}{group}", m.dof, name)
+}
+
+/// Which of paper 004's Schönflies modes a unit Study point is in, if either: `x0 = x3 = 0`
+/// (the platform upside down) or `x1 = x2 = 0` (parallel, upright).
+fn study_label(x: &[C64]) -> &'static str {
+    let small = |v: C64| v.norm() < 1e-8;
+    if small(x[0]) && small(x[3]) {
+        " [x0 = x3 = 0: platform turned upside down]"
+    } else if small(x[1]) && small(x[2]) {
+        " [x1 = x2 = 0: platform upright]"
+    } else {
+        ""
+    }
+}
+
+fn manipulator_components(
+    path: &Path,
+    options: &ComponentsOptions,
+    decompose: DecomposeSettings,
+    as_json: bool,
+) -> Result<String, CliError> {
+    let m: Manipulator = load(path)?;
+    let given = match &options.inputs {
+        Some(text) => m
+            .parse_inputs(text)
+            .map_err(|e| CliError::Input(format!("--inputs {text:?}: {e}")))?,
+        None => Vec::new(),
+    };
+    if options.free_inputs && options.inputs.is_some() {
+        return Err(CliError::Input(
+            "--free-inputs and --inputs exclude each other: free inputs are unknowns".into(),
+        ));
+    }
+    let mut all = given.clone();
+    for a in 0..m.actuators().len() {
+        if !all.iter().any(|(b, _)| *b == a) {
+            all.push((a, 0.0));
+        }
+    }
+    let inputs = if options.free_inputs {
+        InputValues::Free
+    } else {
+        InputValues::Given(&all)
+    };
+    let settings = OperationModeSettings {
+        decompose,
+        method: options.method,
+        ..OperationModeSettings::default()
+    };
+    let bar = terminal::progress(0, "equations", "regeneration");
+    let modes = m
+        .operation_modes_with_progress(&inputs, &settings, &mut |p: RegenerationProgress| {
+            bar.set_length(p.of as u64);
+            bar.set_position(p.equations as u64);
+        })
+        .map_err(|e| CliError::Input(format!("{}: {e}", path.display())))?;
+    bar.finish_and_clear();
+    let input_text: Vec<String> = all
+        .iter()
+        .map(|(a, v)| {
+            let actuator = &m.actuators()[*a];
+            let value = if actuator.label().starts_with('R') {
+                m.units().angle.from_radians(*v)
+            } else {
+                *v
+            };
+            format!("{}={}", actuator.label(), (value * 1e9).round() / 1e9)
+        })
+        .collect();
+    if as_json {
+        return Ok(json(&manipulator_json(&m, &modes, &input_text, options)));
+    }
+    Ok(manipulator_text(&m, &modes, &input_text, options))
+}
+
+fn local_json(m: &Manipulator, l: &LocalMotion) -> serde_json::Value {
+    serde_json::json!({
+        "pose": pose_text(m, &l.pose),
+        "dof": l.dof,
+        "pattern": l.motion.pattern.name().to_string(),
+        "group": l.motion.pattern.is_group(),
+        "same_span": l.motion.same_span,
+        "min_separation": l.motion.min_separation,
+        "point": l.point,
+    })
+}
+
+fn manipulator_json(
+    m: &Manipulator,
+    modes: &OperationModes,
+    inputs: &[String],
+    options: &ComponentsOptions,
+) -> serde_json::Value {
+    let d = &modes.decomposition;
+    serde_json::json!({
+        "manipulator": m.name(),
+        "inputs": if modes.free_inputs { serde_json::Value::String("free".into()) } else { serde_json::json!(inputs) },
+        "variables": modes.system.system().variables(),
+        "equations": modes.system.system().len(),
+        "method": method_name(options.method),
+        "seed": options.seed,
+        "components": modes.components.iter().map(|c: &ModeComponent| serde_json::json!({
+            "dimension": c.dimension,
+            "degree": c.degree,
+            "trace_test_passed": c.trace_test_passed,
+            "sample_point": complex(&c.sample),
+            "real_points": c.real_points.len(),
+            "motion": c.real.as_ref().map(|l| local_json(m, l)),
+            "released": c.released.as_ref().map(|l| local_json(m, l)),
+        })).collect::<Vec<_>>(),
+        "unresolved": d.unresolved.iter().map(|(dim, x)| serde_json::json!({
+            "dimension": dim, "point": complex(x)})).collect::<Vec<_>>(),
+        "junk": d.junk,
+        "paths": d.paths,
+        "seconds": d.seconds,
+    })
+}
+
+fn manipulator_text(
+    m: &Manipulator,
+    modes: &OperationModes,
+    inputs: &[String],
+    options: &ComponentsOptions,
+) -> String {
+    let system = modes.system.system();
+    let d = &modes.decomposition;
+    let mut out = String::new();
+    let _ = writeln!(
+        out,
+        "{}, {}: {} constraint equations in {} unknowns ({}); Study parameters with x0² + x1² + x2² + x3² = 1, so each pose is two points ±(x, y)",
+        m.name(),
+        if modes.free_inputs {
+            "inputs free (tangents of their half angles are unknowns)".to_string()
+        } else {
+            format!("inputs {}", inputs.join(", "))
+        },
+        system.len(),
+        system.nvars(),
+        system.variables().join(", ")
+    );
+    let _ = writeln!(out, "{}", summary(d, options.method));
+    let (isolated, positive): (Vec<&ModeComponent>, Vec<&ModeComponent>) =
+        modes.components.iter().partition(|c| c.dimension == 0);
+    for c in &positive {
+        let what = if modes.free_inputs {
+            format!("operation mode, {} dof", c.dimension)
+        } else {
+            format!("self-motion, {} dof", c.dimension)
+        };
+        let motion = c.real.as_ref().map_or_else(
+            || "no real point found on 8 real slices: a complex component".to_string(),
+            |l| format!("platform motion {} at the pose {}", motion_text(l), pose_text(m, &l.pose)),
+        );
+        let _ = writeln!(
+            out,
+            "  dimension {}, degree {}{}: {what}{}; {motion}",
+            c.dimension,
+            c.degree,
+            if c.trace_test_passed { "" } else { " (trace test FAILED)" },
+            study_label(&c.sample),
+        );
+    }
+    if !isolated.is_empty() {
+        let real: Vec<&&ModeComponent> = isolated.iter().filter(|c| !c.real_points.is_empty()).collect();
+        let _ = writeln!(
+            out,
+            "  dimension 0: {} isolated point{} ({} real){}",
+            isolated.len(),
+            if isolated.len() == 1 { "" } else { "s" },
+            real.len(),
+            if modes.free_inputs { "" } else { ": the assemblies" }
+        );
+        let mut shown: Vec<kinsyn::spatial::Displacement> = Vec::new();
+        for c in real {
+            let Some(l) = &c.real else { continue };
+            if shown.iter().any(|g| (g.to_homogeneous() - l.pose.to_homogeneous()).amax() < 1e-7) {
+                continue;
+            }
+            shown.push(l.pose.clone());
+            let mode = c.released.as_ref().map_or_else(
+                || "its operation mode not found".to_string(),
+                |r| format!("operation mode with the inputs released: {}", motion_text(r)),
+            );
+            let _ = writeln!(
+                out,
+                "    assembly at the pose {}{}: {mode}",
+                pose_text(m, &l.pose),
+                study_label(&c.sample),
+            );
+        }
+    }
+    unresolved_text(&mut out, d);
+    out
+}
