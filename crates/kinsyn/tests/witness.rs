@@ -48,7 +48,11 @@ fn run(s: &System, seed: u64) -> Decomposition {
             }
         }
     }
-    assert_eq!(r.signature(), d.signature(), "the two algorithms, seed {seed}");
+    assert_eq!(
+        r.signature(),
+        d.signature(),
+        "the two algorithms, seed {seed}"
+    );
     d
 }
 

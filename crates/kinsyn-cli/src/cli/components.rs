@@ -31,8 +31,15 @@ pub struct ComponentsOptions {
 }
 
 /// `kinsyn components FILE`: a Bertini input file or a manipulator file.
-pub fn components(path: &Path, options: &ComponentsOptions, as_json: bool) -> Result<String, CliError> {
-    let text = super::files::read_text(path, "not a Bertini input file or a kinsyn manipulator file")?;
+pub fn components(
+    path: &Path,
+    options: &ComponentsOptions,
+    as_json: bool,
+) -> Result<String, CliError> {
+    let text = super::files::read_text(
+        path,
+        "not a Bertini input file or a kinsyn manipulator file",
+    )?;
     let settings = DecomposeSettings {
         seed: options.seed,
         ..DecomposeSettings::default()
@@ -133,7 +140,10 @@ fn unresolved_text(out: &mut String, d: &Decomposition) {
             "warning: {} singular witness point{} on no component found (dimension {}): a non-reduced component (multiplicity > 1), not decomposed here",
             d.unresolved.len(),
             if d.unresolved.len() == 1 { "" } else { "s" },
-            dims.iter().map(ToString::to_string).collect::<Vec<_>>().join(", ")
+            dims.iter()
+                .map(ToString::to_string)
+                .collect::<Vec<_>>()
+                .join(", ")
         );
     }
 }
@@ -328,37 +338,62 @@ fn manipulator_text(
         };
         let motion = c.real.as_ref().map_or_else(
             || "no real point found on 8 real slices: a complex component".to_string(),
-            |l| format!("platform motion {} at the pose {}", motion_text(l), pose_text(m, &l.pose)),
+            |l| {
+                format!(
+                    "platform motion {} at the pose {}",
+                    motion_text(l),
+                    pose_text(m, &l.pose)
+                )
+            },
         );
         let _ = writeln!(
             out,
             "  dimension {}, degree {}{}: {what}{}; {motion}",
             c.dimension,
             c.degree,
-            if c.trace_test_passed { "" } else { " (trace test FAILED)" },
+            if c.trace_test_passed {
+                ""
+            } else {
+                " (trace test FAILED)"
+            },
             study_label(&c.sample),
         );
     }
     if !isolated.is_empty() {
-        let real: Vec<&&ModeComponent> = isolated.iter().filter(|c| !c.real_points.is_empty()).collect();
+        let real: Vec<&&ModeComponent> = isolated
+            .iter()
+            .filter(|c| !c.real_points.is_empty())
+            .collect();
         let _ = writeln!(
             out,
             "  dimension 0: {} isolated point{} ({} real){}",
             isolated.len(),
             if isolated.len() == 1 { "" } else { "s" },
             real.len(),
-            if modes.free_inputs { "" } else { ": the assemblies" }
+            if modes.free_inputs {
+                ""
+            } else {
+                ": the assemblies"
+            }
         );
         let mut shown: Vec<kinsyn::spatial::Displacement> = Vec::new();
         for c in real {
             let Some(l) = &c.real else { continue };
-            if shown.iter().any(|g| (g.to_homogeneous() - l.pose.to_homogeneous()).amax() < 1e-7) {
+            if shown
+                .iter()
+                .any(|g| (g.to_homogeneous() - l.pose.to_homogeneous()).amax() < 1e-7)
+            {
                 continue;
             }
             shown.push(l.pose.clone());
             let mode = c.released.as_ref().map_or_else(
                 || "its operation mode not found".to_string(),
-                |r| format!("operation mode with the inputs released: {}", motion_text(r)),
+                |r| {
+                    format!(
+                        "operation mode with the inputs released: {}",
+                        motion_text(r)
+                    )
+                },
             );
             let _ = writeln!(
                 out,

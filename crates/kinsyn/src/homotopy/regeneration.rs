@@ -33,12 +33,10 @@
 //! The equations are brought in in the order given: putting those that cut most (or are of
 //! lowest degree) first keeps the intermediate sets small.
 
-use super::parameter::{
-    FamilyEnd, ParametrizedSystem, track_parameters, track_parameters_to_end,
-};
+use super::parameter::{FamilyEnd, ParametrizedSystem, track_parameters, track_parameters_to_end};
 use super::witness::{
-    Component, DecomposeError, DecomposeSettings, Decomposition, MEMBERSHIP_TOLERANCE, SAME_POINT, Witness, gaussian,
-    irreducible_pieces, on_larger_component, vanishes,
+    Component, DecomposeError, DecomposeSettings, Decomposition, MEMBERSHIP_TOLERANCE, SAME_POINT,
+    Witness, gaussian, irreducible_pieces, on_larger_component, vanishes,
 };
 use super::{C64, relative_distance};
 use crate::poly::{Poly, System};
@@ -265,7 +263,8 @@ fn family(
     for k in 0..sliced {
         names.extend((0..=big_n).map(|j| format!("slice#{k}#{j}")));
     }
-    let family = System::new(names, equations).map_err(|e| DecomposeError::Family(e.to_string()))?;
+    let family =
+        System::new(names, equations).map_err(|e| DecomposeError::Family(e.to_string()))?;
     ParametrizedSystem::new(family, other_parameters + sliced * (big_n + 1))
         .map_err(|e| DecomposeError::Family(e.to_string()))
 }
@@ -317,15 +316,29 @@ impl Step<'_> {
             paths += points.len();
             let ends = track_parameters(&moving, &self.flag[k - 1], h, points, tracker)
                 .map_err(|e| DecomposeError::Family(e.to_string()))?;
+            // A path that failed is tracked again with stricter steps.
+            let failed: Vec<Vec<C64>> = points
+                .iter()
+                .zip(&ends)
+                .filter(|(_, e)| e.is_err())
+                .map(|(x, _)| x.clone())
+                .collect();
             starts.extend(ends.into_iter().flatten());
+            if !failed.is_empty() {
+                paths += failed.len();
+                let again =
+                    track_parameters(&moving, &self.flag[k - 1], h, &failed, tracker.stricter())
+                        .map_err(|e| DecomposeError::Family(e.to_string()))?;
+                starts.extend(again.into_iter().flatten());
+            }
         }
         // 2. (1 − s) f + s γ H1⋯He from s = 1 to 0, on Z ∩ L1 … Lk−1.
         let total = big_n + 1;
         let s = Poly::variable(total, big_n);
         let widen: Vec<usize> = (0..big_n).collect();
-        let product = targets
-            .iter()
-            .fold(Poly::real(total, 1.0), |acc, h| &acc * &hyperplane(h, total));
+        let product = targets.iter().fold(Poly::real(total, 1.0), |acc, h| {
+            &acc * &hyperplane(h, total)
+        });
         let fw = f.relabel(total, &widen);
         let blend = &fw + &(&s * &(&product.scale(gaussian(rng)) - &fw));
         let mut equations = active;
@@ -340,12 +353,34 @@ impl Step<'_> {
             tracker,
         )
         .map_err(|e| DecomposeError::Family(e.to_string()))?;
+        let failed: Vec<Vec<C64>> = starts
+            .iter()
+            .zip(&ends)
+            .filter(|(_, e)| e.is_err())
+            .map(|(x, _)| x.clone())
+            .collect();
+        let mut ends: Vec<_> = ends.into_iter().flatten().collect();
+        if !failed.is_empty() {
+            paths += failed.len();
+            let again = track_parameters_to_end(
+                &regeneration,
+                &[C64::from(1.0)],
+                &[C64::from(0.0)],
+                &failed,
+                tracker.stricter(),
+            )
+            .map_err(|e| DecomposeError::Family(e.to_string()))?;
+            ends.extend(again.into_iter().flatten());
+        }
         let mut regular: Vec<Vec<C64>> = Vec::new();
         let mut singular: Vec<Vec<C64>> = Vec::new();
-        for end in ends.into_iter().flatten() {
+        for end in ends {
             match end {
                 FamilyEnd::Regular(x) => {
-                    if !regular.iter().any(|y| relative_distance(y, &x) <= SAME_POINT) {
+                    if !regular
+                        .iter()
+                        .any(|y| relative_distance(y, &x) <= SAME_POINT)
+                    {
                         regular.push(x);
                     }
                 }
@@ -371,10 +406,11 @@ fn without_repeats(branches: Vec<Branch>) -> Vec<Branch> {
     let mut kept: Vec<Branch> = Vec::new();
     for mut b in branches {
         b.points.retain(|x| {
-            !kept
-                .iter()
-                .filter(|k| k.dim == b.dim)
-                .any(|k| k.points.iter().any(|y| relative_distance(y, x) <= SAME_POINT))
+            !kept.iter().filter(|k| k.dim == b.dim).any(|k| {
+                k.points
+                    .iter()
+                    .any(|y| relative_distance(y, x) <= SAME_POINT)
+            })
         });
         if !b.points.is_empty() {
             kept.push(b);
@@ -455,7 +491,11 @@ fn rescue(
         square.extend(flag[..dim].iter().map(|row| hyperplane(row, big_n)));
         match regular_root(&square, &x) {
             Some(y) if equations.iter().all(|f| vanishes(f, &y, 1e-8)) => {
-                if !b.points.iter().any(|p| relative_distance(p, &y) <= SAME_POINT) {
+                if !b
+                    .points
+                    .iter()
+                    .any(|p| relative_distance(p, &y) <= SAME_POINT)
+                {
                     b.points.push(y);
                 }
             }
@@ -470,7 +510,11 @@ fn rescue(
 /// converges there quadratically on a well-conditioned Jacobian.
 fn regular_root(equations: &[Poly], x: &[C64]) -> Option<Vec<C64>> {
     let n = x.len();
-    let system = System::new((0..n).map(|j| format!("x{j}")).collect(), equations.to_vec()).ok()?;
+    let system = System::new(
+        (0..n).map(|j| format!("x{j}")).collect(),
+        equations.to_vec(),
+    )
+    .ok()?;
     let program = system.program();
     let mut ws = program.workspace();
     let (mut values, mut jacobian) = (vec![C64::from(0.0); n], vec![C64::from(0.0); n * n]);

@@ -210,7 +210,8 @@ pub fn decompose(
             if s.regular && satisfies(system, &s.x, settings.residual_tolerance) {
                 points.push(s.x.clone());
             } else if !s.regular && satisfies(system, &s.x, settings.residual_tolerance.sqrt()) {
-                let (on_larger, paths) = on_larger_component(witnesses.iter().flatten(), &s.x, settings);
+                let (on_larger, paths) =
+                    on_larger_component(witnesses.iter().flatten(), &s.x, settings);
                 decomposition.paths += paths;
                 if on_larger {
                     decomposition.junk += 1;
@@ -309,10 +310,7 @@ fn slice_family(
 
 /// Whether `x` satisfies every equation of `system` to `tolerance` ([`vanishes`]).
 pub(super) fn satisfies(system: &System, x: &[C64], tolerance: f64) -> bool {
-    system
-        .equations()
-        .iter()
-        .all(|f| vanishes(f, x, tolerance))
+    system.equations().iter().all(|f| vanishes(f, x, tolerance))
 }
 
 /// Whether `|f(x)|` is below `tolerance` times the sum of the magnitudes of `f`'s terms at `x`

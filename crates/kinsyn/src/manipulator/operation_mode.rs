@@ -21,8 +21,8 @@
 use super::Manipulator;
 use super::polynomial::{InputValues, PositionSystem, PositionSystemError};
 use crate::homotopy::{
-    C64, Component, DecomposeError, DecomposeSettings, Decomposition, decompose, points_on_slice,
-    RegenerationProgress, regenerate_with_progress,
+    C64, Component, DecomposeError, DecomposeSettings, Decomposition, RegenerationProgress,
+    decompose, points_on_slice, regenerate_with_progress,
 };
 use crate::motion::{self, Classification};
 use crate::poly::geometry::Chart;
@@ -235,7 +235,8 @@ impl Manipulator {
                 let Some(q) = walk(system, p, settings.step, rng) else {
                     continue;
                 };
-                if let (Some((t, d)), Ok(g)) = (self.tangent_twists(system, &q), system.displacement(&q))
+                if let (Some((t, d)), Ok(g)) =
+                    (self.tangent_twists(system, &q), system.displacement(&q))
                     && d == dof
                 {
                     spans.push(t);
@@ -306,13 +307,20 @@ fn real_slices(
         let centre = &c.witness_points[attempt % c.witness_points.len()];
         let slice: Vec<Vec<C64>> = (0..c.dimension)
             .map(|_| {
-                let a: Vec<f64> = (0..n).map(|_| rng.sample::<f64, _>(StandardNormal)).collect();
+                let a: Vec<f64> = (0..n)
+                    .map(|_| rng.sample::<f64, _>(StandardNormal))
+                    .collect();
                 let b: f64 = -a.iter().zip(centre).map(|(a, x)| a * x.re).sum::<f64>();
                 a.into_iter().chain([b]).map(C64::from).collect()
             })
             .collect();
-        let Ok(points) = points_on_slice(system.system(), decomposition, c, &slice, &settings.decompose)
-        else {
+        let Ok(points) = points_on_slice(
+            system.system(),
+            decomposition,
+            c,
+            &slice,
+            &settings.decompose,
+        ) else {
             continue;
         };
         let real: Vec<Vec<f64>> = points.iter().filter_map(|x| real_point(x)).collect();
