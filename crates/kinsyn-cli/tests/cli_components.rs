@@ -130,12 +130,7 @@ fn bad_requests_are_refused_in_one_line() {
         "--free-inputs",
     ]);
     assert_refused(&o, "--inputs with --free-inputs", &["exclude each other"]);
-    let o = kinsyn(&[
-        "components",
-        "mechanisms/4-ruu.json",
-        "--inputs",
-        "R9.1=3",
-    ]);
+    let o = kinsyn(&["components", "mechanisms/4-ruu.json", "--inputs", "R9.1=3"]);
     assert_refused(&o, "an unknown input", &["R9.1"]);
     let o = kinsyn(&["components", "mechanisms/3-rrr-planar.json"]);
     assert_refused(

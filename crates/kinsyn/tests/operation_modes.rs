@@ -8,7 +8,7 @@
 //! §5.2 (equal inputs: a 1-dof self-motion in K2, Fig. 9), and the count of 32 isolated
 //! solutions at generic inputs — each pose twice as ±(x, y) — which Singular's `vdim` confirms
 //! in `tests/ruu_self_motions.rs`. The file's reference crank angles are θ1i = (−90°, 0°, 90°,
-//! 0°), so an input δ_i is the absolute angle θ1i minus that.
+//! 0°), so an input `δ_i` is the absolute angle θ1i minus that.
 
 use kinsyn::homotopy::DecomposeSettings;
 use kinsyn::manipulator::{

@@ -385,7 +385,7 @@ fn manipulator_text(
             {
                 continue;
             }
-            shown.push(l.pose.clone());
+            shown.push(l.pose);
             let mode = c.released.as_ref().map_or_else(
                 || "its operation mode not found".to_string(),
                 |r| {

@@ -166,10 +166,27 @@ pub fn regenerate_with_progress(
             paths: out.paths,
         });
     }
+    finish(system, branches, &flag, settings, &mut rng, &mut out)?;
+    out.components
+        .sort_by_key(|c| (std::cmp::Reverse(c.dimension), std::cmp::Reverse(c.degree)));
+    out.seconds = clock.elapsed().as_secs_f64();
+    Ok(out)
+}
+
+/// The last stage: each branch split into irreducible pieces, and pieces inside a larger
+/// component dropped (junk), into `out`.
+fn finish(
+    system: &System,
+    mut branches: Vec<Branch>,
+    flag: &[Vec<C64>],
+    settings: &DecomposeSettings,
+    rng: &mut ChaCha8Rng,
+    out: &mut Decomposition,
+) -> Result<(), DecomposeError> {
     branches.sort_by_key(|b| std::cmp::Reverse(b.dim));
     let witnesses: Vec<Witness> = branches
         .iter()
-        .map(|b| witness_of(system, b, &flag))
+        .map(|b| witness_of(system, b, flag))
         .collect::<Result<_, _>>()?;
     for (i, branch) in branches.iter().enumerate() {
         let witness = &witnesses[i];
@@ -179,7 +196,7 @@ pub fn regenerate_with_progress(
                 0,
             )
         } else {
-            irreducible_pieces(witness, settings, &mut rng)
+            irreducible_pieces(witness, settings, rng)
         };
         out.paths += paths;
         for (members, passed) in pieces {
@@ -204,10 +221,7 @@ pub fn regenerate_with_progress(
             });
         }
     }
-    out.components
-        .sort_by_key(|c| (std::cmp::Reverse(c.dimension), std::cmp::Reverse(c.degree)));
-    out.seconds = clock.elapsed().as_secs_f64();
-    Ok(out)
+    Ok(())
 }
 
 /// The point of `L1 ∩ … ∩ LN`.

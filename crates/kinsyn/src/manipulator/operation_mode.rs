@@ -229,7 +229,7 @@ impl Manipulator {
         let (twists, dof) = self.tangent_twists(system, p)?;
         let pose = system.displacement(p).ok()?;
         let mut spans = vec![twists];
-        let mut poses = vec![pose.clone()];
+        let mut poses = vec![pose];
         if dof > 0 {
             for _ in 1..settings.samples {
                 let Some(q) = walk(system, p, settings.step, rng) else {
@@ -286,7 +286,7 @@ impl Manipulator {
 
 /// The real point of a complex one, if it is real.
 fn real_point(x: &[C64]) -> Option<Vec<f64>> {
-    let size: f64 = 1.0 + x.iter().map(|v| v.norm_sqr()).sum::<f64>().sqrt();
+    let size: f64 = 1.0 + x.iter().map(C64::norm_sqr).sum::<f64>().sqrt();
     x.iter()
         .all(|v| v.im.abs() <= REAL * size)
         .then(|| x.iter().map(|v| v.re).collect())
