@@ -259,8 +259,8 @@ pub(super) enum Command {
     /// pattern of the platform with the inputs released (e.g. X(z), a Schönflies motion). With
     /// --free-inputs the inputs are unknowns too (tangents of their half angles) and the
     /// components are the operation modes over input and pose space, their dimension the dof.
-    /// Regeneration (the default) brings the equations in one at a time; by-dimension solves a
-    /// sliced system per dimension (docs/operation-modes.md).
+    /// By-dimension (the default) solves a sliced system per dimension; regeneration brings the
+    /// equations in one at a time (docs/operation-modes.md).
     #[command(
         after_help = "Examples:\n  kinsyn components mechanisms/4-ruu.json --inputs 'R1.1=17,R2.1=-11,R3.1=14,R4.1=6'\n  kinsyn components mechanisms/4-ruu.json --inputs 'R1.1=107.19,R2.1=17.19,R3.1=-72.81,R4.1=17.19'\n  kinsyn components examples/systems/twisted-cubic-and-line.bertini --json"
     )]
@@ -276,8 +276,10 @@ pub(super) enum Command {
         /// space (much larger systems: minutes where fixed inputs take a second).
         #[arg(long)]
         free_inputs: bool,
-        /// The algorithm: regeneration (equation by equation) or by-dimension.
-        #[arg(long, value_enum, default_value = "regeneration")]
+        /// The algorithm: by-dimension (a sliced system per dimension; robust) or regeneration
+        /// (equation by equation; fewer paths on large systems such as --free-inputs, but it
+        /// can lose components at special inputs — a warning then lists unresolved points).
+        #[arg(long, value_enum, default_value = "by-dimension")]
         method: MethodArg,
         /// Seed of every random choice (slices, randomisations, loops).
         #[arg(long, default_value_t = 1)]

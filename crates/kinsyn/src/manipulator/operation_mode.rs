@@ -35,10 +35,13 @@ use rand_distr::StandardNormal;
 /// Which decomposition algorithm.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum DecompositionMethod {
-    /// Equation-by-equation regeneration ([`crate::homotopy::regenerate`]).
-    #[default]
+    /// Equation-by-equation regeneration ([`crate::homotopy::regenerate`]): fewer paths on
+    /// large systems, but it can lose components through singular intermediate endpoints at
+    /// special inputs (docs/operation-modes.md).
     Regeneration,
-    /// Witness supersets dimension by dimension ([`crate::homotopy::decompose`]).
+    /// Witness supersets dimension by dimension ([`crate::homotopy::decompose`]): the default,
+    /// robust on the small systems of a manipulator at fixed inputs.
+    #[default]
     ByDimension,
 }
 
