@@ -387,7 +387,7 @@ fn manipulator_text(
             }
             shown.push(l.pose);
             let mode = c.released.as_ref().map_or_else(
-                || "its operation mode not found".to_string(),
+                || "its operation mode not found (an input 180° from the reference, where tan(δ/2) is infinite, or a singular point of the released variety)".to_string(),
                 |r| {
                     format!(
                         "operation mode with the inputs released: {}",

@@ -114,7 +114,8 @@ pub struct ModeComponent {
     /// The real witness points (isolated assemblies have one).
     pub real_points: Vec<Vec<f64>>,
     /// For a real assembly (dimension 0 at fixed inputs): the operation mode through it with
-    /// the inputs released.
+    /// the inputs released; `None` where that variety is singular, or where an input is half a
+    /// turn from the reference (its `tan(δ/2)` is infinite).
     pub released: Option<LocalMotion>,
 }
 
@@ -347,6 +348,10 @@ fn released_point(
     for a in 0..actuators {
         let delta = given.iter().find(|(i, _)| *i == a).map_or(0.0, |(_, v)| *v);
         let variable = *free.inputs().get(a)?;
+        // An input half a turn from the reference has no finite tangent of its half angle.
+        if (delta / 2.0).cos().abs() < 1e-6 {
+            return None;
+        }
         q[variable] = (delta / 2.0).tan();
     }
     Some(q)
