@@ -125,6 +125,30 @@ fn the_four_ruu_coplanarity_ideal_over_input_space() {
         vec![(1, 9), (2, 9), (3, 7)]
     );
     assert_eq!((m[0].2, m[1].2), (2, 2));
+    // Paper 004 §4.3 (J3 = J3(I) ∪ J3(II)): in the third component both pairs of middle U
+    // axes are parallel, s1 ∥ s3 and s2 ∥ s4, at every witness point; in K1 and K2 neither.
+    let pairs = [
+        parallel_links(12, (0, 8), (2, 10)),
+        parallel_links(12, (1, 9), (3, 11)),
+    ];
+    for c in &r.components {
+        for (k, (cross, scale)) in pairs.iter().enumerate() {
+            let worst = c
+                .witness_points
+                .iter()
+                .map(|x| cross.eval(x).norm() / scale.eval(x).norm().sqrt().max(1e-300))
+                .fold(0.0, f64::max);
+            if mode(&c.sample_point) == 3 {
+                assert!(worst < 1e-7, "third component, pair {k}: {worst:.1e}");
+            } else {
+                assert!(
+                    worst > 1e-3,
+                    "mode {}, pair {k}: {worst:.1e}",
+                    mode(&c.sample_point)
+                );
+            }
+        }
+    }
 }
 
 #[test]
@@ -159,6 +183,57 @@ fn the_two_ruu_has_three_four_dof_operation_modes() {
             (c.degree, exact)
         );
     }
+    // Paper 004 §4.1 (after eq. 19, "the axes s_i from both limbs are always parallel"): in the
+    // third mode the links B1C1 and B3C3 are parallel to one vertical plane — their horizontal
+    // projections are parallel, so the U joints' middle axes s1 ∥ s3 — at every witness point
+    // (392 points); in K1 and K2 they are not (generic points).
+    let cross = parallel_links(10, (0, 8), (2, 9));
+    for c in &d.components {
+        let values: Vec<f64> = c
+            .witness_points
+            .iter()
+            .map(|x| cross.0.eval(x).norm() / cross.1.eval(x).norm().sqrt().max(1e-300))
+            .collect();
+        let worst = values.iter().copied().fold(0.0, f64::max);
+        let best = values.iter().copied().fold(f64::INFINITY, f64::min);
+        eprintln!("mode {}: {best:.1e} … {worst:.1e}", mode(&c.sample_point));
+        if mode(&c.sample_point) == 3 {
+            assert!(worst < 1e-8, "third mode: s1 ∥ s3 to {worst:.1e}");
+        } else {
+            assert!(worst > 1e-3, "mode {}: {worst:.1e}", mode(&c.sample_point));
+        }
+    }
+}
+
+/// In `n` unknowns, for legs `i`, `j` (0-based) with their inputs `t1i`, `t1j` the unknowns
+/// `vi`, `vj`:
+/// the z component of the cross product of the horizontal parts of `w Δ (C − B)` for both legs
+/// (`w = 1 + t²`, `Δ = |x|²`), zero exactly when the links' horizontal projections are parallel
+/// (the middle U axes `s_i ⊥ (C_i − B_i)` horizontal and parallel); and the product of the
+/// squared sizes of those horizontal parts, its scale squared.
+fn parallel_links(n: usize, (i, vi): (usize, usize), (j, vj): (usize, usize)) -> (Poly, Poly) {
+    use kinsyn::poly::geometry::StudyVariables;
+    use nalgebra::Vector3;
+    let ruu = Ruu::paper004();
+    let s = StudyVariables::leading(n);
+    let delta = s.delta();
+    let one = Poly::real(n, 1.0);
+    let link = |leg: usize, var: usize| -> [Poly; 3] {
+        let t = Poly::variable(n, var);
+        let w = &one + &(&t * &t);
+        let c = s.point(&ruu.platform_joint(leg));
+        let a: Vector3<f64> = ruu.base_joint(leg);
+        let b = [
+            w.clone() * a.x + (&one - &(&t * &t)) * ruu.l,
+            w.clone() * a.y + t.clone() * (2.0 * ruu.l),
+            w.clone() * a.z,
+        ];
+        std::array::from_fn(|k| &(&w * &c[k]) - &(&delta * &b[k]))
+    };
+    let (u, v) = (link(i, vi), link(j, vj));
+    let cross = &(&u[0] * &v[1]) - &(&u[1] * &v[0]);
+    let size = |p: &[Poly; 3]| &(&p[0] * &p[0]) + &(&p[1] * &p[1]);
+    (cross, &size(&u) * &size(&v))
 }
 
 #[test]
