@@ -283,3 +283,96 @@ fn the_coplanarity_ideal_at_rational_inputs_matches_singular() {
     exact.sort_unstable();
     assert_eq!(numerical, exact, "Singular printed {out:?}");
 }
+
+/// The real points of `c` on a few random real slices (through the real part of a witness
+/// point).
+fn real_points(s: &System, d: &Decomposition, c: &kinsyn::homotopy::Component) -> Vec<Vec<f64>> {
+    use kinsyn::poly::C64;
+    use rand::{Rng, SeedableRng};
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(7);
+    let n = s.nvars();
+    for attempt in 0..8 {
+        let centre = &c.witness_points[attempt % c.witness_points.len()];
+        let slice: Vec<Vec<C64>> = (0..c.dimension)
+            .map(|_| {
+                let a: Vec<f64> = (0..n).map(|_| rng.random_range(-1.0..1.0)).collect();
+                let b: f64 = -a.iter().zip(centre).map(|(a, x)| a * x.re).sum::<f64>();
+                a.into_iter().chain([b]).map(C64::from).collect()
+            })
+            .collect();
+        let points =
+            kinsyn::homotopy::points_on_slice(s, d, c, &slice, &DecomposeSettings::default())
+                .unwrap();
+        let real: Vec<Vec<f64>> = points
+            .iter()
+            .filter(|x| x.iter().all(|v| v.im.abs() < 1e-8))
+            .map(|x| x.iter().map(|v| v.re).collect())
+            .collect();
+        if !real.is_empty() {
+            return real;
+        }
+    }
+    Vec::new()
+}
+
+#[test]
+fn the_third_mode_at_fig_13_is_two_dimensional_over_a_curve_of_inputs() {
+    // Paper 004 §4.3.1 calls the third mode "a 2-dof operation mode"; §5.3 says each of its
+    // configurations is a self-motion. At Fig. 13's inputs (t1 = (1, 0, 0, 1)) the fibre holds a
+    // self-motion of the third mode (dimension 1, degree 8: tests/ruu_self_motions.rs). With
+    // the inputs released (all ten equations in the Study parameters and t11 … t14), the
+    // Jacobian has full rank 10 at real points of that curve: the constraint variety is there a
+    // smooth 2-dimensional set (implicit function theorem) — the third mode has dimension 2 —
+    // and its tangent plane moves the inputs along one direction only: locally the mode lies
+    // over a curve of inputs with the 1-dof self-motion over each. (At generic inputs it is
+    // absent: tests/ruu_self_motions.rs.)
+    let t = [1.0, 0.0, 0.0, 1.0];
+    let fixed = system(&[0, 1, 2, 3, 4, 5, 6, 7, 12, 13], &[], Some(t));
+    let d = decompose(&fixed, &DecomposeSettings::default()).unwrap();
+    let k3 = d
+        .components
+        .iter()
+        .find(|c| c.dimension == 1 && mode(&c.sample_point) == 3)
+        .expect("the third mode's self-motion at Fig. 13's inputs");
+    assert_eq!(k3.degree, 8);
+    let points = real_points(&fixed, &d, k3);
+    assert!(!points.is_empty(), "a real point of the self-motion");
+    let free = system(&[0, 1, 2, 3, 4, 5, 6, 7, 12, 13], &[0, 1, 2, 3], None);
+    for p in points.iter().take(2) {
+        let x: Vec<kinsyn::poly::C64> = p
+            .iter()
+            .chain(&t)
+            .map(|v| kinsyn::poly::C64::from(*v))
+            .collect();
+        assert!(free.evaluate(&x).iter().all(|v| v.norm() < 1e-9));
+        let j = nalgebra::DMatrix::from_fn(free.len(), 12, |i, k| {
+            free.equations()[i].derivative(k).eval(&x).re
+        });
+        let sv = j.clone().svd(false, false).singular_values;
+        let largest = sv.max();
+        let rank = sv.iter().filter(|s| **s > 1e-8 * largest).count();
+        let gap = sv
+            .iter()
+            .filter(|s| **s > 1e-8 * largest)
+            .fold(f64::INFINITY, |a, b| a.min(*b))
+            / largest;
+        eprintln!("singular values {sv:?}");
+        assert_eq!(
+            12 - rank,
+            2,
+            "tangent dimension (smallest kept σ/σmax {gap:.1e})"
+        );
+        // The tangent space's projection on the inputs t11 … t14.
+        let mut padded = nalgebra::DMatrix::zeros(12, 12);
+        padded.rows_mut(0, j.nrows()).copy_from(&j);
+        let svd = padded.svd(false, true);
+        let v_t = svd.v_t.unwrap();
+        let null: Vec<usize> = (0..12)
+            .filter(|k| svd.singular_values[*k] <= 1e-8 * largest)
+            .collect();
+        let projection = nalgebra::DMatrix::from_fn(4, null.len(), |r, c| v_t[(null[c], 8 + r)]);
+        let psv = projection.svd(false, false).singular_values;
+        let input_rank = psv.iter().filter(|s| **s > 1e-6).count();
+        assert_eq!(input_rank, 1, "inputs moved by the tangent space: {psv:?}");
+    }
+}
