@@ -4,6 +4,7 @@
 #   fixed_inputs.sing                  case 1, minAssGTZ of I at fixed inputs        (< 1 s)
 #   two_ruu_input_space_sliced.sing    case 2 on a generic linear section             (~ 1 s)
 #   two_ruu_generic_inputs.sing        case 2 as the paper does it, inputs in Q(t11,t13) (~ 2 s)
+#   four_ruu_generic_inputs.sing       case 3 as the paper does it, inputs in Q(t11..t14) (~ 2 s)
 #   four_ruu_input_space_sliced.sing   case 3 on a generic linear section              (> 5 min)
 #   two_ruu_input_space.sing           case 2, minAssGTZ with t11, t13 ring variables  (> 10 min)
 #   four_ruu_input_space.sing          case 3, minAssGTZ with t11..t14 ring variables  (> 10 min)
@@ -18,7 +19,7 @@ for f in "$dir"/*.sing; do
     grep -qxF "$line" "$data" || { echo "$f: not in $data: $line"; exit 1; }
   done || exit 1
 done
-scripts="fixed_inputs two_ruu_input_space_sliced two_ruu_generic_inputs"
+scripts="fixed_inputs two_ruu_input_space_sliced two_ruu_generic_inputs four_ruu_generic_inputs"
 [ "${1:-}" = "--full" ] && scripts="$scripts four_ruu_input_space_sliced two_ruu_input_space four_ruu_input_space"
 for s in $scripts; do
   echo "== $s.sing"
