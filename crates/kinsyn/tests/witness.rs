@@ -173,13 +173,14 @@ fn non_reduced_line_is_unresolved() {
     let (dim, p) = &d.unresolved[0];
     assert_eq!(*dim, 1);
     assert!(p[0].norm() < 1e-5 && p[1].norm() < 1e-8, "{p:?}");
-    // Regeneration meets the double plane x² = 0 first: its witness point is singular, so the
-    // step cannot go on from it; it is reported (dimension 2, x = 0), nothing is made up.
+    // Regeneration brings in y first (lower degree), then x² = 0 on the plane y = 0: the line
+    // counted twice; its witness point is singular, so the step cannot go on from it: it is
+    // reported (dimension 1, x = 0), nothing is made up.
     let r = regenerate(&s, &DecomposeSettings::default()).unwrap();
     assert!(r.components.is_empty(), "{:?}", r.signature());
     assert_eq!(r.unresolved.len(), 1);
     let (dim, p) = &r.unresolved[0];
-    assert_eq!(*dim, 2);
+    assert_eq!(*dim, 1);
     assert!(p[0].norm() < 1e-5, "{p:?}");
 }
 

@@ -30,8 +30,8 @@
 //! number of the system: the 4-RUU's 12 unknowns and 10 quartic and quadratic equations take
 //! a few thousand paths where a total-degree cascade would take hundreds of thousands.
 //!
-//! The equations are brought in in the order given: putting those that cut most (or are of
-//! lowest degree) first keeps the intermediate sets small.
+//! The equations are brought in by increasing degree, then number of terms (in the order given
+//! among ties): short, low-degree equations first keep the intermediate sets small.
 
 use super::parameter::{FamilyEnd, ParametrizedSystem, track_parameters, track_parameters_to_end};
 use super::witness::{
@@ -113,7 +113,12 @@ pub fn regenerate_with_progress(
         active: Vec::new(),
         points: vec![flag_point(&flag)?],
     }];
-    let equations = system.equations();
+    // Lowest degree first, then fewest terms (stable): the intermediate sets stay small, and a
+    // mechanism's Study quadric and normalisation (four terms each) cut before its legs, which
+    // avoids singular endpoints on sets the normalisation excludes.
+    let mut equations: Vec<Poly> = system.equations().to_vec();
+    equations.sort_by_key(|f| (f.total_degree(), f.len()));
+    let equations = &equations[..];
     for (m, f) in equations.iter().enumerate() {
         let mut next = Vec::new();
         let mut suspects = Vec::new();
