@@ -107,6 +107,14 @@ fn the_two_ruu_coplanarity_ideal_has_three_components_over_input_space() {
         );
         assert!(r.components.iter().all(|c| c.trace_test_passed));
     }
+    // The 2-RUU(II) (legs 2 and 4, §4.2: J(II) = ⟨g2, g4, g13⟩ over t12, t14) is the 2-RUU(I)
+    // turned by 90° about Z: the same three components.
+    let (r, _) = both(&system(&[1, 3, 12], &[1, 3], None), 1);
+    assert_eq!(
+        modes_of(&r),
+        vec![(1, 7, 2), (2, 7, 2), (3, 7, 28)],
+        "2-RUU(II)"
+    );
 }
 
 #[test]
