@@ -23,6 +23,7 @@ pub mod catalogue;
 pub mod certify;
 pub mod chain;
 pub mod configurable;
+pub mod hexa;
 pub mod homotopy;
 mod linalg;
 pub mod lockset;

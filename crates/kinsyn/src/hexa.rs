@@ -1,0 +1,213 @@
+//! The **6-RUU HEXA with reconfigurable platforms** of paper 001 (Wu & Dong, *Kinematics of a
+//! 6-RUU parallel robot with reconfigurable platforms*, §2–3), by the paper's closed forms: the
+//! limbs' geometry (eq. 6), the inverse geometry of one limb (eqs. 4–5), the Jacobians
+//! `A χ̇ = B θ̇` (eqs. 9–11) and the transmission indices (eqs. 13, 15–16). Issue 15 builds
+//! the rest (the description file, the end-effector constraint of eqs. 7–8, workspace and maps);
+//! this module is the paper's second method beside it.
+//!
+//! # Conventions (paper 001 §2–3; those the paper leaves implicit are stated here)
+//! Limb `i = 1 … 6` has its actuated revolute at `a_i = R_z(μ_i)[(−1)^{i+1} a i + R j]`
+//! (eq. 6a), about `u_i = R_z(μ_i) i` (the first two axes are parallel to x, §2). The active
+//! link `A_i B_i` of length `b` has the direction
+//! `v_i(θ_i) = cos θ_i k + sin θ_i R_z(μ_i) j` — the convention under which eq. 5's
+//! coefficients `I_i = −2b m_iz` and `J_i = 2b(m_ix sin μ_i − m_iy cos μ_i)` are those of
+//! `|c_i − b_i|² = l²` written as `I_i cos θ_i + J_i sin θ_i + K_i = 0`. The parallelogram
+//! `B_i C_i` has length `l` and direction `w_i = (c_i − b_i)/l`.
+//!
+//! # Eq. 5 as printed
+//! The printed root `θ_i = 2 atan((−I_i ± √(I_i² + J_i² + K_i²))/(K_i − I_i))` does not solve
+//! eq. 4; the roots of `I cos θ + J sin θ + K = 0` are
+//! `θ = 2 atan((J ± √(I² + J² − K²))/(I − K))` ([`Hexa::inverse_limb`]). `tests/hexa.rs`
+//! shows the printed form leaving the limb open and the corrected one closing it;
+//! `docs/deviations.md` records it.
+//!
+//! # Signs and factors of eqs. 9–15
+//! With θ in the sense eq. 5's coefficients fix (`v_i` turning about `−u_i`), eq. 9 holds as
+//! `A χ̇ = −B θ̇` (`ḃ_i = −b θ̇_i u_i × v_i`); the indices, absolute values, are unaffected.
+//! Eq. 15 holds with `s1` the unit vector `Q1 j` (eq. 14 writes the rows `r1 w_iᵀ s_i`), not
+//! eq. 11's `s1 = r1 Q1 j`. Both are checked in `tests/hexa.rs`.
+
+use nalgebra::{DMatrix, Matrix3, Vector3};
+
+/// Paper 001's 6-RUU (lengths in mm): base radius `R`, the actuated joints' offset `a` along
+/// `±u_i`, the active link `b`, the parallelogram `l`, and the platform radii `r1 … r5`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Hexa {
+    /// `R`: the distance of the actuated joints' pairs from the base centre.
+    pub big_r: f64,
+    /// `a`: the offset of each actuated joint from its pair's centre, along `u_i`.
+    pub a: f64,
+    /// `b`: the length of the active link `A_i B_i`.
+    pub b: f64,
+    /// `l`: the length of the parallelogram `B_i C_i`.
+    pub l: f64,
+    /// `r1 … r5` of eqs. 6b–8.
+    pub r: [f64; 5],
+}
+
+/// The directions `μ_i` of the six limbs (paper 001 §2): `0, 0, 2π/3, 2π/3, −2π/3, −2π/3`.
+#[must_use]
+pub fn mu(i: usize) -> f64 {
+    use std::f64::consts::PI;
+    [
+        0.0,
+        0.0,
+        2.0 * PI / 3.0,
+        2.0 * PI / 3.0,
+        -2.0 * PI / 3.0,
+        -2.0 * PI / 3.0,
+    ][i]
+}
+
+/// `R_z(φ)`.
+#[must_use]
+pub fn rz(phi: f64) -> Matrix3<f64> {
+    let (s, c) = phi.sin_cos();
+    Matrix3::new(c, -s, 0.0, s, c, 0.0, 0.0, 0.0, 1.0)
+}
+
+/// One limb's state at an actuated angle: `b_i`, `v_i`, `w_i`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LimbState {
+    /// The actuated angle `θ_i`.
+    pub theta: f64,
+    /// `b_i`, the end of the active link.
+    pub b: Vector3<f64>,
+    /// `v_i`, the active link's direction.
+    pub v: Vector3<f64>,
+    /// `w_i = (c_i − b_i)/l`, the parallelogram's direction (unit when the limb closes).
+    pub w: Vector3<f64>,
+}
+
+impl Hexa {
+    /// Paper 001 §4: `R = 200, a = 60, b = 260, l = 550, r1 … r5 = 60` (mm).
+    #[must_use]
+    pub fn paper001() -> Self {
+        Self {
+            big_r: 200.0,
+            a: 60.0,
+            b: 260.0,
+            l: 550.0,
+            r: [60.0; 5],
+        }
+    }
+
+    /// `a_i` of limb `i` (0-based; eq. 6a with `(−1)^{i+1}` for the 1-based index).
+    #[must_use]
+    pub fn base_joint(&self, i: usize) -> Vector3<f64> {
+        let sign = if i.is_multiple_of(2) { 1.0 } else { -1.0 };
+        rz(mu(i)) * Vector3::new(sign * self.a, self.big_r, 0.0)
+    }
+
+    /// `u_i = R_z(μ_i) i`, the actuated joint's axis.
+    #[must_use]
+    pub fn axis(&self, i: usize) -> Vector3<f64> {
+        rz(mu(i)) * Vector3::x()
+    }
+
+    /// `v_i(θ) = cos θ k + sin θ R_z(μ_i) j` (module documentation).
+    #[must_use]
+    pub fn link_direction(&self, i: usize, theta: f64) -> Vector3<f64> {
+        Vector3::z() * theta.cos() + rz(mu(i)) * Vector3::y() * theta.sin()
+    }
+
+    /// Eq. 5's coefficients `(I_i, J_i, K_i)` for the platform joint `c` of limb `i`: the limb
+    /// closes (`|c − b_i| = l`, eq. 4) where `I cos θ + J sin θ + K = 0`.
+    #[must_use]
+    pub fn coefficients(&self, i: usize, c: &Vector3<f64>) -> (f64, f64, f64) {
+        let m = c - self.base_joint(i);
+        let (s, co) = mu(i).sin_cos();
+        (
+            -2.0 * self.b * m.z,
+            2.0 * self.b * (m.x * s - m.y * co),
+            m.norm_squared() + self.b * self.b - self.l * self.l,
+        )
+    }
+
+    /// The two actuated angles that close limb `i` on the platform joint `c` (eq. 5,
+    /// corrected: module documentation), or `None` when `c` is out of the limb's reach
+    /// (`I² + J² < K²`).
+    #[must_use]
+    pub fn inverse_limb(&self, i: usize, c: &Vector3<f64>) -> Option<[f64; 2]> {
+        let (ii, jj, kk) = self.coefficients(i, c);
+        let disc = ii * ii + jj * jj - kk * kk;
+        if disc < 0.0 {
+            return None;
+        }
+        let root = disc.sqrt();
+        // t = tan(θ/2): (K − I) t² + 2 J t + (K + I) = 0.
+        Some([jj + root, jj - root].map(|n| 2.0 * (n / (ii - kk)).atan()))
+    }
+
+    /// Eq. 5 **as printed**, `2 atan((−I ± √(I² + J² + K²))/(K − I))`: kept to show that it
+    /// does not close the limb (`tests/hexa.rs`).
+    #[must_use]
+    pub fn inverse_limb_as_printed(&self, i: usize, c: &Vector3<f64>) -> [f64; 2] {
+        let (ii, jj, kk) = self.coefficients(i, c);
+        let root = (ii * ii + jj * jj + kk * kk).sqrt();
+        [-ii + root, -ii - root].map(|n| 2.0 * (n / (kk - ii)).atan())
+    }
+
+    /// Limb `i` at the angle `theta` reaching for `c`.
+    #[must_use]
+    pub fn limb(&self, i: usize, theta: f64, c: &Vector3<f64>) -> LimbState {
+        let v = self.link_direction(i, theta);
+        let b = self.base_joint(i) + v * self.b;
+        LimbState {
+            theta,
+            b,
+            v,
+            w: (c - b) / self.l,
+        }
+    }
+
+    /// `h_i = b w_iᵀ(u_i × v_i)` (eq. 11): minus the rate of `w_i·c_i` per unit `θ̇_i` in this
+    /// module's sense of `θ` (module documentation).
+    #[must_use]
+    pub fn h(&self, i: usize, s: &LimbState) -> f64 {
+        self.b * s.w.dot(&self.axis(i).cross(&s.v))
+    }
+
+    /// The input transmission index `λ_i = |w_iᵀ(u_i × v_i)|` (eq. 13).
+    #[must_use]
+    pub fn input_index(&self, i: usize, s: &LimbState) -> f64 {
+        s.w.dot(&self.axis(i).cross(&s.v)).abs()
+    }
+}
+
+/// The forward Jacobian `A` of eqs. 10a–11 (rows `e_i`, columns `ẋ1, ẏ1, ż, φ̇1, ẋ2, ẏ2, φ̇2`;
+/// the printed `ż2` of eq. 10a is `ẋ2`, since `e_4`, `e_5` put `w_ix` there) from the limbs'
+/// `w_i` and the vectors `s_i` (`s1 = s6 = −s2 = −s3 = r1 Q1 j`, `s5 = −s4 = r5 Q2 j`).
+#[must_use]
+pub fn forward_jacobian(w: &[Vector3<f64>; 6], s: &[Vector3<f64>; 6]) -> DMatrix<f64> {
+    let mut a = DMatrix::zeros(6, 7);
+    for i in 0..6 {
+        let ws = w[i].dot(&s[i]);
+        if i == 3 || i == 4 {
+            a[(i, 2)] = w[i].z;
+            a[(i, 4)] = w[i].x;
+            a[(i, 5)] = w[i].y;
+            a[(i, 6)] = ws;
+        } else {
+            a[(i, 0)] = w[i].x;
+            a[(i, 1)] = w[i].y;
+            a[(i, 2)] = w[i].z;
+            a[(i, 3)] = ws;
+        }
+    }
+    a
+}
+
+/// The output transmission index `σ` of end-effector 1 (eq. 16):
+/// `|((w1 × w6) × (w2 × w3))·s1| / ‖(w1 × w6) × (w2 × w3)‖`, with `s1` a unit vector
+/// (`Q1 j`: the index is `|cos ω|`, in `[0, 1]`).
+#[must_use]
+pub fn output_index(w: &[Vector3<f64>; 6], s1_unit: &Vector3<f64>) -> f64 {
+    let n = w[0].cross(&w[5]).cross(&w[1].cross(&w[2]));
+    let size = n.norm();
+    if size == 0.0 {
+        0.0
+    } else {
+        n.dot(s1_unit).abs() / size
+    }
+}
