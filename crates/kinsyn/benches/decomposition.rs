@@ -21,7 +21,7 @@
 
 use criterion::Criterion;
 use kinsyn::homotopy::{DecomposeSettings, Decomposition, decompose, regenerate};
-use kinsyn::poly::{Poly, System};
+use kinsyn::poly::System;
 use kinsyn::ruu::{InputMode, Ruu};
 use std::time::Instant;
 
@@ -35,26 +35,9 @@ fn restricted(inputs: InputMode, which: &[usize], keep: &[usize]) -> System {
     let full = Ruu::paper004()
         .constraints(inputs)
         .expect("the paper's design");
-    let equations: Vec<Poly> = which
-        .iter()
-        .map(|&k| {
-            let f = &full.equations()[k - 1];
-            Poly::from_terms(
-                keep.len(),
-                f.terms().map(|(e, c)| {
-                    assert!(
-                        e.iter()
-                            .enumerate()
-                            .all(|(j, p)| *p == 0 || keep.contains(&j)),
-                        "g{k} involves an unknown outside {keep:?}"
-                    );
-                    (keep.iter().map(|&j| e[j]).collect(), c)
-                }),
-            )
-        })
-        .collect();
-    let names = keep.iter().map(|&j| full.variables()[j].clone()).collect();
-    System::new(names, equations).expect("well formed")
+    let which: Vec<usize> = which.iter().map(|k| k - 1).collect();
+    full.subsystem(&which, keep)
+        .expect("the equations involve only the unknowns kept")
 }
 
 /// Case 1: I = ⟨g13, g14, g1, g5, g2, g6, g3, g7, g4, g8⟩ at fixed inputs, in x0..y3.

@@ -118,3 +118,30 @@ fn homogenisation_per_group() {
     );
     assert_eq!(h, expected);
 }
+
+/// `System::subsystem`: the equations x·z − 1 and y + 2 of a system in (x, y, z, w), kept in
+/// (z, x) and in (x, y, z): by hand, the first becomes z·x − 1 in (z, x) — its value at
+/// (z, x) = (2, 3) is 5 — and the second cannot drop y.
+#[test]
+fn a_subsystem_keeps_the_equations_in_the_variables_named() {
+    let v = |i| Poly::variable(4, i);
+    let names = ["x", "y", "z", "w"].map(String::from).to_vec();
+    let s = System::new(
+        names,
+        vec![
+            &(&v(0) * &v(2)) - &Poly::real(4, 1.0),
+            &v(1) + &Poly::real(4, 2.0),
+        ],
+    )
+    .unwrap();
+    let sub = s.subsystem(&[0], &[2, 0]).unwrap();
+    assert_eq!(sub.variables(), ["z".to_string(), "x".to_string()]);
+    assert_eq!(
+        sub.evaluate(&[C64::from(2.0), C64::from(3.0)])[0],
+        C64::from(5.0)
+    );
+    assert!(s.subsystem(&[1], &[0, 2]).is_err(), "y left out");
+    assert!(s.subsystem(&[2], &[0]).is_err(), "no equation 2");
+    let both = s.subsystem(&[0, 1], &[0, 1, 2]).unwrap();
+    assert_eq!(both.len(), 2);
+}

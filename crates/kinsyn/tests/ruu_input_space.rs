@@ -20,26 +20,7 @@ fn system(which: &[usize], inputs: &[usize], values: Option<[f64; 4]>) -> System
         InputMode::Free => (0..8).chain(inputs.iter().map(|i| 8 + i)).collect(),
         _ => (0..8).collect(),
     };
-    let n = keep.len();
-    let equations: Vec<Poly> = which
-        .iter()
-        .map(|k| {
-            let f = &full.equations()[*k];
-            Poly::from_terms(
-                n,
-                f.terms().map(|(e, c)| {
-                    assert!(
-                        e.iter()
-                            .enumerate()
-                            .all(|(j, p)| *p == 0 || keep.contains(&j))
-                    );
-                    (keep.iter().map(|j| e[*j]).collect(), c)
-                }),
-            )
-        })
-        .collect();
-    let names = keep.iter().map(|j| full.variables()[*j].clone()).collect();
-    System::new(names, equations).unwrap()
+    full.subsystem(which, &keep).unwrap()
 }
 
 fn both(s: &System, seed: u64) -> (Decomposition, Decomposition) {
@@ -263,19 +244,10 @@ fn the_coplanarity_ideal_at_rational_inputs_matches_singular() {
         v
     };
     assert_eq!(d.signature(), r.signature());
-    let text = std::fs::read_to_string("../../data/paper004-constraints.txt").unwrap();
     let mut script = String::from(
         "LIB \"primdec.lib\";\nring R = 0,(x0,x1,x2,x3,y0,y1,y2,y3),dp;\nnumber a=2; number b=1; number l=1; number r=2;\nnumber t11=3/10; number t13=11/10;\n",
     );
-    for g in ["g1", "g3"] {
-        let line = text
-            .lines()
-            .find(|l| l.starts_with(&format!("{g} = ")))
-            .unwrap();
-        script.push_str("poly ");
-        script.push_str(line);
-        script.push('\n');
-    }
+    script += &singular::printed_paper004(&["g1", "g3"]);
     script += "poly g13 = x0*y0+x1*y1+x2*y2+x3*y3;\nideal I = g1,g3,g13;\nlist P = minAssGTZ(I);\nint k;\nfor (k=1; k<=size(P); k++) { ideal S(k) = std(P[k]); print(\"prime \" + string(dim(S(k))) + \" \" + string(mult(S(k)))); }\nquit;\n";
     let Some(out) = singular::run(&script, "the exact check of eq. 14 at fixed inputs") else {
         return;

@@ -4,7 +4,7 @@
 //! paper's own tool, when installed).
 
 use kinsyn::homotopy::{DecomposeSettings, decompose};
-use kinsyn::poly::{Poly, System};
+use kinsyn::poly::System;
 use kinsyn::ruu::{InputMode, Ruu};
 
 #[path = "common/singular.rs"]
@@ -18,18 +18,8 @@ fn coplanarity_system() -> System {
     let full = Ruu::paper004()
         .constraints(InputMode::Given(INPUTS))
         .unwrap();
-    let equations: Vec<Poly> = [0usize, 1, 2, 3, 12, 13]
-        .iter()
-        .map(|k| {
-            Poly::from_terms(
-                8,
-                full.equations()[*k]
-                    .terms()
-                    .map(|(e, c)| (e[..8].to_vec(), c)),
-            )
-        })
-        .collect();
-    System::new(full.variables()[..8].to_vec(), equations).unwrap()
+    let study: Vec<usize> = (0..8).collect();
+    full.subsystem(&[0, 1, 2, 3, 12, 13], &study).unwrap()
 }
 
 #[test]
@@ -71,19 +61,10 @@ fn singular_finds_the_same_two_modes() {
     // as rationals): exactly K1 = ⟨x0, x3, x1 y1 + x2 y2⟩ and K2 = ⟨x1, x2, x0 y0 + x3 y3⟩,
     // cones of dimension 5 and degree 2 — the numerical components above plus one dimension
     // and with half the degree (the normalisation g14 is a quadric).
-    let text = std::fs::read_to_string("../../data/paper004-constraints.txt").unwrap();
     let mut script = String::from(
         "LIB \"primdec.lib\";\nring R = 0,(x0,x1,x2,x3,y0,y1,y2,y3),dp;\nnumber a=2; number b=1; number l=1; number r=2;\nnumber t11=3/10; number t12=-7/10; number t13=11/10; number t14=9/20;\n",
     );
-    for g in ["g1", "g2", "g3", "g4"] {
-        let line = text
-            .lines()
-            .find(|l| l.starts_with(&format!("{g} = ")))
-            .unwrap();
-        script.push_str("poly ");
-        script.push_str(line);
-        script.push('\n');
-    }
+    script += &singular::printed_paper004(&["g1", "g2", "g3", "g4"]);
     script += "poly g13 = x0*y0+x1*y1+x2*y2+x3*y3;\nideal I = g1,g2,g3,g4,g13;\nlist P = minAssGTZ(I);\nint k;\nfor (k=1; k<=size(P); k++) { ideal S(k) = std(P[k]); print(string(dim(S(k))) + \" \" + string(mult(S(k))) + \" : \" + string(P[k])); }\nquit;\n";
     let Some(out) = singular::run(&script, "the exact check of the 4-RUU's modes") else {
         return;

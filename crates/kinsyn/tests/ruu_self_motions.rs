@@ -28,18 +28,8 @@ const IDEAL: [usize; 10] = [0, 1, 2, 3, 4, 5, 6, 7, 12, 13];
 /// passive `t2i` do not occur in these equations).
 fn fibre(inputs: InputMode) -> System {
     let full = Ruu::paper004().constraints(inputs).unwrap();
-    let equations: Vec<Poly> = IDEAL
-        .iter()
-        .map(|k| {
-            Poly::from_terms(
-                8,
-                full.equations()[*k]
-                    .terms()
-                    .map(|(e, c)| (e[..8].to_vec(), c)),
-            )
-        })
-        .collect();
-    System::new(full.variables()[..8].to_vec(), equations).unwrap()
+    let study: Vec<usize> = (0..8).collect();
+    full.subsystem(&IDEAL, &study).unwrap()
 }
 
 fn decomposition(inputs: InputMode, seed: u64) -> Decomposition {

@@ -561,7 +561,6 @@ fn eq31_reconstruction_has_exact_roots() {
 /// mode Jacobian's determinant factored, the Study parameters eliminated from the ideal plus
 /// the factor that is not the height, the eliminant and the printed polynomial factored.
 fn singular_script(mode: Mode, inputs: &str, printed: &[i128]) -> String {
-    let text = std::fs::read_to_string("../../data/paper004-constraints.txt").unwrap();
     let (ring, zero, rest) = match mode {
         Mode::K1 => (
             "x1,x2,y0,y1,y2,y3,t14,x0,x3",
@@ -577,13 +576,7 @@ fn singular_script(mode: Mode, inputs: &str, printed: &[i128]) -> String {
     let mut s = format!(
         "LIB \"elim.lib\";\nring R = 0,({ring}),dp;\nnumber a=2; number b=1; number l=1; number r=2;\n{inputs}\n"
     );
-    for g in ["g5", "g6", "g7", "g8"] {
-        let line = text
-            .lines()
-            .find(|l| l.starts_with(&format!("{g} = ")))
-            .unwrap();
-        writeln!(s, "poly {line}").unwrap();
-    }
+    s += &singular::printed_paper004(&["g5", "g6", "g7", "g8"]);
     let d = printed.len() - 1;
     let p: Vec<String> = printed
         .iter()

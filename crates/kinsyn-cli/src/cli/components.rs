@@ -2,7 +2,7 @@
 //! file) or of a manipulator's constraint variety — its assemblies, self-motions and operation
 //! modes — by numerical irreducible decomposition (docs/operation-modes.md).
 
-use super::manipulator::{load, pose_text};
+use super::manipulator::{input_texts, inputs_or_reference, load, pose_text};
 use super::solve::read_input;
 use super::{CliError, json, terminal};
 use kinsyn::homotopy::{
@@ -55,17 +55,11 @@ pub fn components(
     }
     let input = read_input(path)?;
     let system = &input.system;
-    let bar = terminal::progress(system.len(), "equations", "regeneration");
-    let d = match options.method {
-        DecompositionMethod::Regeneration => {
-            regenerate_with_progress(system, &settings, &mut |p: RegenerationProgress| {
-                bar.set_position(p.equations as u64);
-            })
-        }
+    let d = with_feedback(options.method, |progress| match options.method {
+        DecompositionMethod::Regeneration => regenerate_with_progress(system, &settings, progress),
         DecompositionMethod::ByDimension => decompose(system, &settings),
-    }
+    })
     .map_err(|e| CliError::Input(format!("{}: {e}", path.display())))?;
-    bar.finish_and_clear();
     if as_json {
         return Ok(json(&serde_json::json!({
             "file": path.display().to_string(),
@@ -108,6 +102,28 @@ pub fn components(
     }
     unresolved_text(&mut out, &d);
     Ok(out)
+}
+
+/// Runs a decomposition with feedback on a terminal: a bar over the equations for
+/// regeneration (which reports after each), a spinner otherwise.
+fn with_feedback<T>(
+    method: DecompositionMethod,
+    work: impl FnOnce(&mut dyn FnMut(RegenerationProgress)) -> T,
+) -> T {
+    match method {
+        DecompositionMethod::Regeneration => {
+            let bar = terminal::progress(0, "equations", "regeneration");
+            let result = work(&mut |p: RegenerationProgress| {
+                bar.set_length(p.of as u64);
+                bar.set_position(p.equations as u64);
+            });
+            bar.finish_and_clear();
+            result
+        }
+        DecompositionMethod::ByDimension => {
+            terminal::working("decomposing, dimension by dimension", || work(&mut |_| {}))
+        }
+    }
 }
 
 fn method_name(m: DecompositionMethod) -> &'static str {
@@ -209,23 +225,12 @@ fn manipulator_components(
     as_json: bool,
 ) -> Result<String, CliError> {
     let m: Manipulator = load(path)?;
-    let given = match &options.inputs {
-        Some(text) => m
-            .parse_inputs(text)
-            .map_err(|e| CliError::Input(format!("--inputs {text:?}: {e}")))?,
-        None => Vec::new(),
-    };
     if options.free_inputs && options.inputs.is_some() {
         return Err(CliError::Input(
             "--free-inputs and --inputs exclude each other: free inputs are unknowns".into(),
         ));
     }
-    let mut all = given.clone();
-    for a in 0..m.actuators().len() {
-        if !all.iter().any(|(b, _)| *b == a) {
-            all.push((a, 0.0));
-        }
-    }
+    let all = inputs_or_reference(&m, options.inputs.as_deref())?;
     let inputs = if options.free_inputs {
         InputValues::Free
     } else {
@@ -236,26 +241,11 @@ fn manipulator_components(
         method: options.method,
         ..OperationModeSettings::default()
     };
-    let bar = terminal::progress(0, "equations", "regeneration");
-    let modes = m
-        .operation_modes_with_progress(&inputs, &settings, &mut |p: RegenerationProgress| {
-            bar.set_length(p.of as u64);
-            bar.set_position(p.equations as u64);
-        })
-        .map_err(|e| CliError::Input(format!("{}: {e}", path.display())))?;
-    bar.finish_and_clear();
-    let input_text: Vec<String> = all
-        .iter()
-        .map(|(a, v)| {
-            let actuator = &m.actuators()[*a];
-            let value = if actuator.label().starts_with('R') {
-                m.units().angle.from_radians(*v)
-            } else {
-                *v
-            };
-            format!("{}={}", actuator.label(), (value * 1e9).round() / 1e9)
-        })
-        .collect();
+    let modes = with_feedback(options.method, |progress| {
+        m.operation_modes_with_progress(&inputs, &settings, progress)
+    })
+    .map_err(|e| CliError::Input(format!("{}: {e}", path.display())))?;
+    let input_text = input_texts(&m, &all);
     if as_json {
         return Ok(json(&manipulator_json(&m, &modes, &input_text, options)));
     }

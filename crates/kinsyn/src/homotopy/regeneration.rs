@@ -33,10 +33,12 @@
 //! The equations are brought in by increasing degree, then number of terms (in the order given
 //! among ties): short, low-degree equations first keep the intermediate sets small.
 
-use super::parameter::{FamilyEnd, ParametrizedSystem, track_parameters, track_parameters_to_end};
+use super::parameter::{FamilyEnd, track_parameters, track_parameters_to_end};
+use super::tracker::{PathFailure, TrackerSettings};
 use super::witness::{
     Component, DecomposeError, DecomposeSettings, Decomposition, MEMBERSHIP_TOLERANCE, SAME_POINT,
-    Witness, gaussian, irreducible_pieces, on_larger_component, vanishes,
+    Witness, check_system, family, gaussian, hyperplane, irreducible_pieces, on_larger_component,
+    random_combinations, vanishes,
 };
 use super::{C64, relative_distance};
 use crate::poly::{Poly, System};
@@ -65,7 +67,11 @@ pub struct RegenerationProgress {
 }
 
 /// The irreducible decomposition of `V(system)` by regeneration (module documentation), with
-/// the same settings and output as [`super::decompose`].
+/// the same settings and output as [`super::decompose`] — except that
+/// [`Decomposition::unresolved`] holds the singular endpoints of every step that no set
+/// contained and no rescue made regular, with the dimension they had at that step: points of a
+/// non-reduced set of the first equations, which may satisfy only those (the components inside
+/// such a set are not followed).
 ///
 /// # Errors
 /// [`DecomposeError`] for a system without equations or unknowns, or with a zero equation.
@@ -86,16 +92,8 @@ pub fn regenerate_with_progress(
     progress: &mut dyn FnMut(RegenerationProgress),
 ) -> Result<Decomposition, DecomposeError> {
     let clock = std::time::Instant::now();
+    check_system(system)?;
     let (n, big_n) = (system.len(), system.nvars());
-    if n == 0 || big_n == 0 {
-        return Err(DecomposeError::Empty {
-            equations: n,
-            variables: big_n,
-        });
-    }
-    if let Some(i) = system.equations().iter().position(Poly::is_empty) {
-        return Err(DecomposeError::ZeroEquation(i));
-    }
     let mut rng = ChaCha8Rng::seed_from_u64(settings.seed);
     let flag: Vec<Vec<C64>> = (0..big_n)
         .map(|_| (0..=big_n).map(|_| gaussian(&mut rng)).collect())
@@ -240,54 +238,6 @@ fn flag_point(flag: &[Vec<C64>]) -> Result<Vec<C64>, DecomposeError> {
         .ok_or_else(|| DecomposeError::Family("the random slices are dependent".into()))
 }
 
-/// The affine form `Σ a_j x_j + b` of a hyperplane row `[a_0 … a_{N−1}, b]`, in `total`
-/// variables of which the unknowns are the first `N`.
-fn hyperplane(row: &[C64], total: usize) -> Poly {
-    let big_n = row.len() - 1;
-    let mut h = Poly::constant(total, row[big_n]);
-    for (j, a) in row[..big_n].iter().enumerate() {
-        h = &h + &Poly::variable(total, j).scale(*a);
-    }
-    h
-}
-
-/// The square family of `rows` fixed hyperplanes, the given equations (in `N + parameters`
-/// variables) and `sliced` hyperplanes whose coefficients are the parameters (after any
-/// already in `equations`' ring).
-fn family(
-    system: &System,
-    mut equations: Vec<Poly>,
-    fixed: &[Vec<C64>],
-    sliced: usize,
-    other_parameters: usize,
-) -> Result<ParametrizedSystem, DecomposeError> {
-    let big_n = system.nvars();
-    let total = big_n + other_parameters + sliced * (big_n + 1);
-    for f in &mut equations {
-        let widen: Vec<usize> = (0..f.nvars()).collect();
-        *f = f.relabel(total, &widen);
-    }
-    equations.extend(fixed.iter().map(|row| hyperplane(row, total)));
-    let first = big_n + other_parameters;
-    for k in 0..sliced {
-        let p = |j: usize| Poly::variable(total, first + k * (big_n + 1) + j);
-        let mut h = p(big_n);
-        for j in 0..big_n {
-            h = &h + &(&p(j) * &Poly::variable(total, j));
-        }
-        equations.push(h);
-    }
-    let mut names = system.variables().to_vec();
-    names.extend((0..other_parameters).map(|k| format!("regeneration#{k}")));
-    for k in 0..sliced {
-        names.extend((0..=big_n).map(|j| format!("slice#{k}#{j}")));
-    }
-    let family =
-        System::new(names, equations).map_err(|e| DecomposeError::Family(e.to_string()))?;
-    ParametrizedSystem::new(family, other_parameters + sliced * (big_n + 1))
-        .map_err(|e| DecomposeError::Family(e.to_string()))
-}
-
 /// The witness set of a branch: its active equations and its slice `L1 … L_dim` as parameters.
 fn witness_of(system: &System, b: &Branch, flag: &[Vec<C64>]) -> Result<Witness, DecomposeError> {
     Ok(Witness {
@@ -332,24 +282,11 @@ impl Step<'_> {
             .collect();
         let mut starts = Vec::new();
         for h in &targets {
-            paths += points.len();
-            let ends = track_parameters(&moving, &self.flag[k - 1], h, points, tracker)
-                .map_err(|e| DecomposeError::Family(e.to_string()))?;
-            // A path that failed is tracked again with stricter steps.
-            let failed: Vec<Vec<C64>> = points
-                .iter()
-                .zip(&ends)
-                .filter(|(_, e)| e.is_err())
-                .map(|(x, _)| x.clone())
-                .collect();
-            starts.extend(ends.into_iter().flatten());
-            if !failed.is_empty() {
-                paths += failed.len();
-                let again =
-                    track_parameters(&moving, &self.flag[k - 1], h, &failed, tracker.stricter())
-                        .map_err(|e| DecomposeError::Family(e.to_string()))?;
-                starts.extend(again.into_iter().flatten());
-            }
+            let (ends, tracked) = with_retry(points, tracker, |xs, t| {
+                track_parameters(&moving, &self.flag[k - 1], h, xs, t)
+            })?;
+            paths += tracked;
+            starts.extend(ends);
         }
         // 2. (1 − s) f + s γ H1⋯He from s = 1 to 0, on Z ∩ L1 … Lk−1.
         let total = big_n + 1;
@@ -363,34 +300,10 @@ impl Step<'_> {
         let mut equations = active;
         equations.push(blend);
         let regeneration = family(system, equations, fixed, 0, 1)?;
-        paths += starts.len();
-        let ends = track_parameters_to_end(
-            &regeneration,
-            &[C64::from(1.0)],
-            &[C64::from(0.0)],
-            &starts,
-            tracker,
-        )
-        .map_err(|e| DecomposeError::Family(e.to_string()))?;
-        let failed: Vec<Vec<C64>> = starts
-            .iter()
-            .zip(&ends)
-            .filter(|(_, e)| e.is_err())
-            .map(|(x, _)| x.clone())
-            .collect();
-        let mut ends: Vec<_> = ends.into_iter().flatten().collect();
-        if !failed.is_empty() {
-            paths += failed.len();
-            let again = track_parameters_to_end(
-                &regeneration,
-                &[C64::from(1.0)],
-                &[C64::from(0.0)],
-                &failed,
-                tracker.stricter(),
-            )
-            .map_err(|e| DecomposeError::Family(e.to_string()))?;
-            ends.extend(again.into_iter().flatten());
-        }
+        let (ends, tracked) = with_retry(&starts, tracker, |xs, t| {
+            track_parameters_to_end(&regeneration, &[C64::from(1.0)], &[C64::from(0.0)], xs, t)
+        })?;
+        paths += tracked;
         let mut regular: Vec<Vec<C64>> = Vec::new();
         let mut singular: Vec<Vec<C64>> = Vec::new();
         for end in ends {
@@ -417,6 +330,37 @@ impl Step<'_> {
         }
         Ok((regular, singular, paths))
     }
+}
+
+/// The ends of the paths from `starts` tracked by `track`, those that failed tracked once more
+/// with stricter steps (the ends of the paths that fail twice are left out), and the number of
+/// paths tracked.
+fn with_retry<T>(
+    starts: &[Vec<C64>],
+    tracker: TrackerSettings,
+    track: impl Fn(
+        &[Vec<C64>],
+        TrackerSettings,
+    ) -> Result<Vec<Result<T, PathFailure>>, super::ParameterError>,
+) -> Result<(Vec<T>, usize), DecomposeError> {
+    let family = |e: super::ParameterError| DecomposeError::Family(e.to_string());
+    let first = track(starts, tracker).map_err(family)?;
+    let failed: Vec<Vec<C64>> = starts
+        .iter()
+        .zip(&first)
+        .filter(|(_, e)| e.is_err())
+        .map(|(x, _)| x.clone())
+        .collect();
+    let mut ends: Vec<T> = first.into_iter().flatten().collect();
+    if !failed.is_empty() {
+        ends.extend(
+            track(&failed, tracker.stricter())
+                .map_err(family)?
+                .into_iter()
+                .flatten(),
+        );
+    }
+    Ok((ends, starts.len() + failed.len()))
 }
 
 /// The branches with every point kept once per dimension (the same component reached along
@@ -491,13 +435,7 @@ fn rescue(
         let index = if let Some(i) = branches.iter().position(|b| b.dim == dim) {
             i
         } else {
-            let active: Vec<Poly> = (0..big_n - dim)
-                .map(|_| {
-                    equations
-                        .iter()
-                        .fold(Poly::zero(big_n), |acc, f| &acc + &f.scale(gaussian(rng)))
-                })
-                .collect();
+            let active = random_combinations(equations, big_n - dim, rng);
             branches.push(Branch {
                 dim,
                 active,

@@ -167,16 +167,8 @@ pub fn decompose(
     settings: &DecomposeSettings,
 ) -> Result<Decomposition, DecomposeError> {
     let clock = std::time::Instant::now();
+    check_system(system)?;
     let (n, big_n) = (system.len(), system.nvars());
-    if n == 0 || big_n == 0 {
-        return Err(DecomposeError::Empty {
-            equations: n,
-            variables: big_n,
-        });
-    }
-    if let Some(i) = system.equations().iter().position(Poly::is_empty) {
-        return Err(DecomposeError::ZeroEquation(i));
-    }
     let mut rng = ChaCha8Rng::seed_from_u64(settings.seed);
     let lowest = big_n.saturating_sub(n);
     let mut witnesses: Vec<Option<Witness>> = (0..big_n).map(|_| None).collect();
@@ -261,51 +253,101 @@ pub(super) fn gaussian(rng: &mut ChaCha8Rng) -> C64 {
     C64::new(re, im)
 }
 
+/// A system [`decompose`] and [`super::regenerate`] can work on: some equations, some
+/// unknowns, no equation identically zero.
+pub(super) fn check_system(system: &System) -> Result<(), DecomposeError> {
+    let (n, big_n) = (system.len(), system.nvars());
+    if n == 0 || big_n == 0 {
+        return Err(DecomposeError::Empty {
+            equations: n,
+            variables: big_n,
+        });
+    }
+    if let Some(i) = system.equations().iter().position(Poly::is_empty) {
+        return Err(DecomposeError::ZeroEquation(i));
+    }
+    Ok(())
+}
+
+/// `count` random complex combinations of `equations` (the equations themselves when there
+/// are exactly `count`): by Bertini's theorem their solution set has every component of the
+/// equations' of codimension `count` as a component of multiplicity one.
+pub(super) fn random_combinations(
+    equations: &[Poly],
+    count: usize,
+    rng: &mut ChaCha8Rng,
+) -> Vec<Poly> {
+    if equations.len() == count {
+        return equations.to_vec();
+    }
+    let nvars = equations.first().map_or(0, Poly::nvars);
+    (0..count)
+        .map(|_| {
+            equations
+                .iter()
+                .fold(Poly::zero(nvars), |acc, f| &acc + &f.scale(gaussian(rng)))
+        })
+        .collect()
+}
+
+/// The affine form `Σ a_j x_j + b` of a hyperplane row `[a_0 … a_{N−1}, b]`, in `total`
+/// variables of which the unknowns are the first `N`.
+pub(super) fn hyperplane(row: &[C64], total: usize) -> Poly {
+    let big_n = row.len() - 1;
+    let mut h = Poly::constant(total, row[big_n]);
+    for (j, a) in row[..big_n].iter().enumerate() {
+        h = &h + &Poly::variable(total, j).scale(*a);
+    }
+    h
+}
+
+/// The square family of the given equations (in the `N` unknowns of `system`, then
+/// `other_parameters` parameters), the `fixed` hyperplanes, and `sliced` hyperplanes whose
+/// coefficients are the last parameters (`slice#k#j`).
+pub(super) fn family(
+    system: &System,
+    mut equations: Vec<Poly>,
+    fixed: &[Vec<C64>],
+    sliced: usize,
+    other_parameters: usize,
+) -> Result<ParametrizedSystem, DecomposeError> {
+    let big_n = system.nvars();
+    let total = big_n + other_parameters + sliced * (big_n + 1);
+    for f in &mut equations {
+        let widen: Vec<usize> = (0..f.nvars()).collect();
+        *f = f.relabel(total, &widen);
+    }
+    equations.extend(fixed.iter().map(|row| hyperplane(row, total)));
+    let first = big_n + other_parameters;
+    for k in 0..sliced {
+        let p = |j: usize| Poly::variable(total, first + k * (big_n + 1) + j);
+        let mut h = p(big_n);
+        for j in 0..big_n {
+            h = &h + &(&p(j) * &Poly::variable(total, j));
+        }
+        equations.push(h);
+    }
+    let mut names = system.variables().to_vec();
+    names.extend((0..other_parameters).map(|k| format!("regeneration#{k}")));
+    for k in 0..sliced {
+        names.extend((0..=big_n).map(|j| format!("slice#{k}#{j}")));
+    }
+    let family =
+        System::new(names, equations).map_err(|e| DecomposeError::Family(e.to_string()))?;
+    ParametrizedSystem::new(family, other_parameters + sliced * (big_n + 1))
+        .map_err(|e: ParameterError| DecomposeError::Family(e.to_string()))
+}
+
 /// The family, in the unknowns then the slice parameters, of `N − d` random combinations of
-/// `F` (or `F` itself when it has exactly `N − d` equations) and `d` affine hyperplanes whose
-/// coefficients are the parameters.
+/// `F` ([`random_combinations`]) and `d` affine hyperplanes whose coefficients are the
+/// parameters.
 fn slice_family(
     system: &System,
     d: usize,
     rng: &mut ChaCha8Rng,
 ) -> Result<ParametrizedSystem, DecomposeError> {
-    let big_n = system.nvars();
-    let total = big_n + d * (big_n + 1);
-    let widen: Vec<usize> = (0..big_n).collect();
-    let equations: Vec<Poly> = system
-        .equations()
-        .iter()
-        .map(|f| f.relabel(total, &widen))
-        .collect();
-    let mut all: Vec<Poly> = if equations.len() == big_n - d {
-        equations
-    } else {
-        (0..big_n - d)
-            .map(|_| {
-                equations
-                    .iter()
-                    .fold(Poly::zero(total), |acc, f| &acc + &f.scale(gaussian(rng)))
-            })
-            .collect()
-    };
-    for k in 0..d {
-        let p = |j: usize| Poly::variable(total, big_n + k * (big_n + 1) + j);
-        let mut hyperplane = p(big_n);
-        for j in 0..big_n {
-            hyperplane = &hyperplane + &(&p(j) * &Poly::variable(total, j));
-        }
-        all.push(hyperplane);
-    }
-    let mut names = system.variables().to_vec();
-    for k in 0..d {
-        for j in 0..=big_n {
-            names.push(format!("slice#{k}#{j}"));
-        }
-    }
-    let family_system =
-        System::new(names, all).map_err(|e| DecomposeError::Family(e.to_string()))?;
-    ParametrizedSystem::new(family_system, d * (big_n + 1))
-        .map_err(|e: ParameterError| DecomposeError::Family(e.to_string()))
+    let equations = random_combinations(system.equations(), system.nvars() - d, rng);
+    family(system, equations, &[], d, 0)
 }
 
 /// Whether `x` satisfies every equation of `system` to `tolerance` ([`vanishes`]).

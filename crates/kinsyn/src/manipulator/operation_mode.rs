@@ -25,6 +25,7 @@ use crate::homotopy::{
     decompose, points_on_slice, regenerate_with_progress,
 };
 use crate::motion::{self, Classification};
+use crate::poly::Program;
 use crate::poly::geometry::Chart;
 use crate::spatial::{Displacement, compose, inverse, log, study};
 use nalgebra::{DMatrix, DVector};
@@ -230,17 +231,18 @@ impl Manipulator {
         settings: &OperationModeSettings,
         rng: &mut ChaCha8Rng,
     ) -> Option<LocalMotion> {
-        let (twists, dof) = self.tangent_twists(system, p)?;
+        let program = system.system().program();
+        let (twists, dof) = self.tangent_twists(&program, p)?;
         let pose = system.displacement(p).ok()?;
         let mut spans = vec![twists];
         let mut poses = vec![pose];
         if dof > 0 {
             for _ in 1..settings.samples {
-                let Some(q) = walk(system, p, settings.step, rng) else {
+                let Some(q) = walk(&program, p, settings.step, rng) else {
                     continue;
                 };
                 if let (Some((t, d)), Ok(g)) =
-                    (self.tangent_twists(system, &q), system.displacement(&q))
+                    (self.tangent_twists(&program, &q), system.displacement(&q))
                     && d == dof
                 {
                     spans.push(t);
@@ -265,8 +267,8 @@ impl Manipulator {
 
     /// The platform's twists (dimensionless, [`crate::mechanism::Mechanism::unitless_twists`])
     /// along the tangent space of the constraint variety at `p`, and its dimension.
-    fn tangent_twists(&self, system: &PositionSystem, p: &[f64]) -> Option<(DMatrix<f64>, usize)> {
-        let null = tangent_space(system, p)?;
+    fn tangent_twists(&self, program: &Program, p: &[f64]) -> Option<(DMatrix<f64>, usize)> {
+        let null = tangent_space(program, p)?;
         let dof = null.ncols();
         let h = 1e-6;
         let mut twists = DMatrix::zeros(6, dof);
@@ -357,25 +359,24 @@ fn released_point(
     Some(q)
 }
 
-/// The constraint Jacobian of `system` at the real point `p` (rows: equations).
-fn jacobian(system: &PositionSystem, p: &[f64]) -> (DVector<f64>, DMatrix<f64>) {
-    let s = system.system();
+/// The constraint values and Jacobian (rows: equations) of the compiled system at the real
+/// point `p`.
+fn jacobian(program: &Program, p: &[f64]) -> (DVector<f64>, DMatrix<f64>) {
+    let (m, n) = (program.len(), program.nvars());
     let x: Vec<C64> = p.iter().map(|v| C64::from(*v)).collect();
-    let n = s.nvars();
-    let values = DVector::from_iterator(s.len(), s.evaluate(&x).iter().map(|v| v.re));
-    let mut j = DMatrix::zeros(s.len(), n);
-    for (i, f) in s.equations().iter().enumerate() {
-        for k in 0..n {
-            j[(i, k)] = f.derivative(k).eval(&x).re;
-        }
-    }
-    (values, j)
+    let mut values = vec![C64::from(0.0); m];
+    let mut j = vec![C64::from(0.0); m * n];
+    program.evaluate_with_jacobian(&x, &mut values, &mut j, &mut program.workspace());
+    (
+        DVector::from_iterator(m, values.iter().map(|v| v.re)),
+        DMatrix::from_row_iterator(m, n, j.iter().map(|v| v.re)),
+    )
 }
 
 /// An orthonormal basis of the null space of the constraint Jacobian at `p` (singular values
 /// below `1e-8` of the largest dropped).
-fn tangent_space(system: &PositionSystem, p: &[f64]) -> Option<DMatrix<f64>> {
-    let (_, j) = jacobian(system, p);
+fn tangent_space(program: &Program, p: &[f64]) -> Option<DMatrix<f64>> {
+    let (_, j) = jacobian(program, p);
     let n = j.ncols();
     // Zero rows added so that the SVD's Vᵀ is square: all n right singular vectors.
     let mut padded = DMatrix::zeros(j.nrows().max(n), n);
@@ -395,8 +396,8 @@ fn tangent_space(system: &PositionSystem, p: &[f64]) -> Option<DMatrix<f64>> {
 
 /// A point of the variety a step away from `p` in a random tangent direction, corrected back
 /// onto it by minimum-norm Newton steps.
-fn walk(system: &PositionSystem, p: &[f64], step: f64, rng: &mut ChaCha8Rng) -> Option<Vec<f64>> {
-    let null = tangent_space(system, p)?;
+fn walk(program: &Program, p: &[f64], step: f64, rng: &mut ChaCha8Rng) -> Option<Vec<f64>> {
+    let null = tangent_space(program, p)?;
     if null.ncols() == 0 {
         return None;
     }
@@ -404,13 +405,13 @@ fn walk(system: &PositionSystem, p: &[f64], step: f64, rng: &mut ChaCha8Rng) -> 
     let d = &null * c;
     let mut q = DVector::from_column_slice(p) + d.normalize() * step;
     for _ in 0..30 {
-        let (f, j) = jacobian(system, q.as_slice());
+        let (f, j) = jacobian(program, q.as_slice());
         if f.norm() < 1e-13 {
             return Some(q.iter().copied().collect());
         }
         let dq = j.svd(true, true).solve(&f, 1e-10).ok()?;
         q -= dq;
     }
-    let (f, _) = jacobian(system, q.as_slice());
+    let (f, _) = jacobian(program, q.as_slice());
     (f.norm() < 1e-10).then(|| q.iter().copied().collect())
 }

@@ -56,6 +56,10 @@ pub enum PolyError {
     /// The variable groups do not partition the variables.
     #[error("the variable groups must list every variable exactly once: {0}")]
     Groups(String),
+    /// A subsystem leaves out a variable that one of its equations involves, or names an
+    /// equation or variable the system does not have.
+    #[error("subsystem: {0}")]
+    Subsystem(String),
 }
 
 /// A polynomial in `nvars` variables with complex coefficients, stored as its non-zero terms:
@@ -563,6 +567,47 @@ impl System {
     #[must_use]
     pub fn evaluate(&self, x: &[C64]) -> Vec<C64> {
         self.equations.iter().map(|p| p.eval(x)).collect()
+    }
+
+    /// The equations `equations` (indices) as a system in the variables `variables` alone
+    /// (indices, in the order given): e.g. a mechanism's pose equations without the passive
+    /// angles they do not involve. Variable groups are not kept.
+    ///
+    /// # Errors
+    /// [`PolyError::Subsystem`] if an index is out of range or a kept equation involves a
+    /// variable left out.
+    pub fn subsystem(&self, equations: &[usize], variables: &[usize]) -> Result<Self, PolyError> {
+        let n = variables.len();
+        if let Some(v) = variables.iter().find(|v| **v >= self.nvars()) {
+            return Err(PolyError::Subsystem(format!("no variable {v}")));
+        }
+        let kept = equations
+            .iter()
+            .map(|&k| {
+                let f = self
+                    .equations
+                    .get(k)
+                    .ok_or_else(|| PolyError::Subsystem(format!("no equation {k}")))?;
+                let mut terms = Vec::with_capacity(f.len());
+                for (e, c) in f.terms() {
+                    if let Some(j) = (0..e.len()).find(|j| e[*j] > 0 && !variables.contains(j)) {
+                        return Err(PolyError::Subsystem(format!(
+                            "equation {k} involves {}, which is left out",
+                            self.variables[j]
+                        )));
+                    }
+                    terms.push((variables.iter().map(|&j| e[j]).collect(), c));
+                }
+                Ok(Poly::from_terms(n, terms))
+            })
+            .collect::<Result<Vec<Poly>, PolyError>>()?;
+        Self::new(
+            variables
+                .iter()
+                .map(|&j| self.variables[j].clone())
+                .collect(),
+            kept,
+        )
     }
 
     /// The straight-line program of the equations and their Jacobian.

@@ -35,3 +35,27 @@ pub fn run(script: &str, check: &str) -> Option<String> {
     assert!(out.status.success(), "Singular failed on {script}");
     Some(String::from_utf8_lossy(&out.stdout).into_owned())
 }
+
+/// Singular declarations `poly gK = …;` of paper 004's printed equations `names` (e.g. "g1"),
+/// as transcribed in `data/paper004-constraints.txt` (the design parameters and inputs are
+/// declared by the caller as `number`s).
+///
+/// # Panics
+/// If the data file is missing or lacks one of the equations.
+#[allow(dead_code)]
+#[must_use]
+pub fn printed_paper004(names: &[&str]) -> String {
+    let text = std::fs::read_to_string("../../data/paper004-constraints.txt")
+        .expect("data/paper004-constraints.txt");
+    let mut out = String::new();
+    for g in names {
+        let line = text
+            .lines()
+            .find(|l| l.starts_with(&format!("{g} = ")))
+            .unwrap_or_else(|| panic!("{g} is not in data/paper004-constraints.txt"));
+        out.push_str("poly ");
+        out.push_str(line);
+        out.push('\n');
+    }
+    out
+}

@@ -1,7 +1,7 @@
 //! `kinsyn analyze FILE --inputs … --all-assemblies`: every assembly of a manipulator at given
 //! inputs, from its constraint polynomials in Study parameters solved by homotopy continuation.
 
-use super::{clean, leg_warnings, load_with_body, warn};
+use super::{clean, input_texts, inputs_or_reference, leg_warnings, load_with_body, warn};
 use crate::cli::solve::{certificate_line, solve_with_bar};
 use crate::cli::{CliError, json};
 use kinsyn::homotopy::SolveSettings;
@@ -47,18 +47,7 @@ pub fn all_assemblies(
     as_json: bool,
 ) -> Result<String, CliError> {
     let m = load_with_body(path, body, None)?;
-    let mut inputs = match inputs_text {
-        Some(text) => m
-            .parse_inputs(text)
-            .map_err(|e| CliError::Input(format!("--inputs {text:?}: {e}")))?,
-        None => Vec::new(),
-    };
-    // Inputs not named keep their values at the reference configuration (value 0).
-    for a in 0..m.actuators().len() {
-        if !inputs.iter().any(|(b, _)| *b == a) {
-            inputs.push((a, 0.0));
-        }
-    }
+    let inputs = inputs_or_reference(&m, inputs_text)?;
     let ps = m
         .position_system(&inputs, &Chart::random_linear(seed))
         .map_err(|e| CliError::Input(format!("--all-assemblies: {e}")))?;
@@ -125,18 +114,7 @@ pub fn all_assemblies(
             LegKind::CoplanarDistance => "U–U: distance and coplanar lines",
         })
         .collect();
-    let input_text: Vec<String> = inputs
-        .iter()
-        .map(|(a, v)| {
-            let actuator = &m.actuators()[*a];
-            let value = if actuator.label().starts_with('R') {
-                m.units().angle.from_radians(*v)
-            } else {
-                *v
-            };
-            format!("{} = {}", actuator.label(), clean(value))
-        })
-        .collect();
+    let input_text = input_texts(&m, &inputs);
     if as_json {
         let v = serde_json::json!({
             "manipulator": m.name(),

@@ -116,6 +116,46 @@ pub fn build_command(spec: &BuildSpec, output: Option<&Path>) -> Result<String, 
     }
 }
 
+/// The inputs of `--inputs` (none: `None`), every input not named held at its reference value
+/// (0); errors quote the text.
+pub fn inputs_or_reference(
+    m: &Manipulator,
+    text: Option<&str>,
+) -> Result<Vec<(usize, f64)>, CliError> {
+    let mut inputs = match text {
+        Some(text) => m
+            .parse_inputs(text)
+            .map_err(|e| CliError::Input(format!("--inputs {text:?}: {e}")))?,
+        None => Vec::new(),
+    };
+    for a in 0..m.actuators().len() {
+        if !inputs.iter().any(|(b, _)| *b == a) {
+            inputs.push((a, 0.0));
+        }
+    }
+    Ok(inputs)
+}
+
+/// `LABEL = value` for each input, angles in the file's unit, rounded to 1e-9.
+pub fn input_texts(m: &Manipulator, inputs: &[(usize, f64)]) -> Vec<String> {
+    inputs
+        .iter()
+        .map(|(a, v)| {
+            let actuator = &m.actuators()[*a];
+            let value = if actuator.label().starts_with('R') {
+                m.units().angle.from_radians(*v)
+            } else {
+                *v
+            };
+            format!(
+                "{} = {}",
+                actuator.label(),
+                clean((value * 1e9).round() / 1e9)
+            )
+        })
+        .collect()
+}
+
 /// A value printed with six decimals, without a "-0.000000" for round-off.
 fn clean(x: f64) -> f64 {
     if x.abs() < 5e-7 { 0.0 } else { x }
