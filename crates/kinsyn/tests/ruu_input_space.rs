@@ -149,7 +149,10 @@ fn the_two_ruu_has_three_four_dof_operation_modes() {
     let (r, d) = both(&system(&[0, 2, 12, 4, 6, 13], &[0, 2], None), 1);
     let m = modes_of(&d);
     // By dimension: K1 and K2 of degree 60, the third mode of degree 392, every trace test
-    // passed (so each witness set is complete and irreducible).
+    // passed (so each witness set is complete and irreducible). These degrees are kinsyn's own,
+    // confirmed by the trace test and by K1, K2 being mirror images (equal degrees); no outside
+    // method confirms them yet — Singular's standard basis of a generic section of this ideal
+    // did not finish in 5 minutes.
     assert_eq!(m, vec![(1, 4, 60), (2, 4, 60), (3, 4, 392)]);
     assert!(d.components.iter().all(|c| c.trace_test_passed));
     // Regeneration finds the same three 4-dimensional modes; where singular endpoints at an
