@@ -27,7 +27,7 @@
 //! Eq. 15 holds with `s1` the unit vector `Q1 j` (eq. 14 writes the rows `r1 w_iᵀ s_i`), not
 //! eq. 11's `s1 = r1 Q1 j`. Both are checked in `tests/hexa.rs`.
 
-use nalgebra::{DMatrix, Matrix3, Vector3};
+use nalgebra::{Matrix3, Vector3};
 
 /// Paper 001's 6-RUU (lengths in mm): base radius `R`, the actuated joints' offset `a` along
 /// `±u_i`, the active link `b`, the parallelogram `l`, and the platform radii `r1 … r5`.
@@ -43,6 +43,9 @@ pub struct Hexa {
     pub l: f64,
     /// `r1 … r5` of eqs. 6b–8.
     pub r: [f64; 5],
+    /// `γ` of eq. 6b, the direction of the sub-platforms' arms `C2C3` and `C1C6`: unstated in
+    /// the paper; [`Hexa::paper001`] takes `π/6` (module documentation).
+    pub gamma: f64,
 }
 
 /// The directions `μ_i` of the six limbs (paper 001 §2): `0, 0, 2π/3, 2π/3, −2π/3, −2π/3`.
@@ -89,6 +92,7 @@ impl Hexa {
             b: 260.0,
             l: 550.0,
             r: [60.0; 5],
+            gamma: std::f64::consts::FRAC_PI_6,
         }
     }
 
@@ -175,39 +179,126 @@ impl Hexa {
     }
 }
 
-/// The forward Jacobian `A` of eqs. 10a–11 (rows `e_i`, columns `ẋ1, ẏ1, ż, φ̇1, ẋ2, ẏ2, φ̇2`;
-/// the printed `ż2` of eq. 10a is `ẋ2`, since `e_4`, `e_5` put `w_ix` there) from the limbs'
-/// `w_i` and the vectors `s_i` (`s1 = s6 = −s2 = −s3 = r1 Q1 j`, `s5 = −s4 = r5 Q2 j`).
-#[must_use]
-pub fn forward_jacobian(w: &[Vector3<f64>; 6], s: &[Vector3<f64>; 6]) -> DMatrix<f64> {
-    let mut a = DMatrix::zeros(6, 7);
-    for i in 0..6 {
-        let ws = w[i].dot(&s[i]);
-        if i == 3 || i == 4 {
-            a[(i, 2)] = w[i].z;
-            a[(i, 4)] = w[i].x;
-            a[(i, 5)] = w[i].y;
-            a[(i, 6)] = ws;
-        } else {
-            a[(i, 0)] = w[i].x;
-            a[(i, 1)] = w[i].y;
-            a[(i, 2)] = w[i].z;
-            a[(i, 3)] = ws;
-        }
-    }
-    a
+/// A pose of both end-effectors, `χ = (x1, y1, z, φ1, x2, y2, φ2)` (eq. 10a): `P1 = (x1, y1, z)`
+/// and `P2 = (x2, y2, z)` at one height (the platforms' vertical offsets are zero, §2), and
+/// their turns `φ1`, `φ2` about `k`. Only poses whose `P2` lies on the four-bar's coupler curve
+/// (eqs. 7–8, [`Hexa::four_bar_through`]) are assemblable.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Pose {
+    /// `χ` in the order of eq. 10a (mm and radians).
+    pub chi: [f64; 7],
 }
 
-/// The output transmission index `σ` of end-effector 1 (eq. 16):
-/// `|((w1 × w6) × (w2 × w3))·s1| / ‖(w1 × w6) × (w2 × w3)‖`, with `s1` a unit vector
-/// (`Q1 j`: the index is `|cos ω|`, in `[0, 1]`).
-#[must_use]
-pub fn output_index(w: &[Vector3<f64>; 6], s1_unit: &Vector3<f64>) -> f64 {
-    let n = w[0].cross(&w[5]).cross(&w[1].cross(&w[2]));
-    let size = n.norm();
-    if size == 0.0 {
-        0.0
-    } else {
-        n.dot(s1_unit).abs() / size
+impl Pose {
+    /// `P1`.
+    #[must_use]
+    pub fn p1(&self) -> Vector3<f64> {
+        Vector3::new(self.chi[0], self.chi[1], self.chi[2])
+    }
+
+    /// `P2`.
+    #[must_use]
+    pub fn p2(&self) -> Vector3<f64> {
+        Vector3::new(self.chi[4], self.chi[5], self.chi[2])
+    }
+
+    /// `φ1`.
+    #[must_use]
+    pub fn phi1(&self) -> f64 {
+        self.chi[3]
+    }
+
+    /// `φ2`.
+    #[must_use]
+    pub fn phi2(&self) -> f64 {
+        self.chi[6]
+    }
+
+    /// End-effector 1 at `(p1, φ1)` and end-effector 2 at `(p2.x, p2.y, φ2)`, at `p1`'s height.
+    #[must_use]
+    pub fn new(p1: &Vector3<f64>, phi1: f64, p2: &Vector3<f64>, phi2: f64) -> Self {
+        Self {
+            chi: [p1.x, p1.y, p1.z, phi1, p2.x, p2.y, phi2],
+        }
     }
 }
+
+/// The robot at a pose: both end-effectors and every limb in the working mode
+/// ([`Hexa::inverse`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Configuration {
+    /// The pose.
+    pub pose: Pose,
+    /// The platform joints `c_i` (eq. 6b).
+    pub joints: [Vector3<f64>; 6],
+    /// The limbs, in the working mode.
+    pub limbs: [LimbState; 6],
+}
+
+impl Hexa {
+    /// The platform joints `c_i` of eq. 6b at a pose: `c1, c2 = p1 ± r1 Q1 i` on end-effector 1;
+    /// `c3 = c2 − r2 (cos γ, sin γ, 0)` and `c6 = c1 + r2 (cos γ, −sin γ, 0)` on the translating
+    /// sub-platforms (not turned by `Q1`); `c4, c5 = p2 ∓ r5 Q2 i` on end-effector 2 (eq. 6b's
+    /// `Q` read as `Q2`).
+    #[must_use]
+    pub fn platform_joints(&self, pose: &Pose) -> [Vector3<f64>; 6] {
+        let (p1, p2) = (pose.p1(), pose.p2());
+        let x1 = rz(pose.phi1()) * Vector3::x() * self.r[0];
+        let x2 = rz(pose.phi2()) * Vector3::x() * self.r[4];
+        let (s, c) = self.gamma.sin_cos();
+        let arm = |sign: f64| Vector3::new(sign * c, -s, 0.0) * self.r[1];
+        [
+            p1 + x1,
+            p1 - x1,
+            p1 - x1 + arm(-1.0),
+            p2 - x2,
+            p2 + x2,
+            p1 + x1 + arm(1.0),
+        ]
+    }
+
+    /// The working mode's root of eq. 5 for limb `i` reaching `c`: the active link pointing
+    /// away from the base centre (`b_i` the farther from the `z` axis, the HEXA's "elbow out"),
+    /// or `None` out of reach.
+    #[must_use]
+    pub fn working_root(&self, i: usize, c: &Vector3<f64>) -> Option<f64> {
+        let roots = self.inverse_limb(i, c)?;
+        let reach = |theta: f64| {
+            self.link_direction(i, theta)
+                .dot(&(rz(mu(i)) * Vector3::y()))
+        };
+        Some(if reach(roots[0]) >= reach(roots[1]) {
+            roots[0]
+        } else {
+            roots[1]
+        })
+    }
+
+    /// The inverse geometry of the whole robot (eqs. 4–6): every limb's actuated angle in the
+    /// working mode, or `None` when a limb cannot reach its platform joint. The pose's `P2` is
+    /// not checked against the four-bar ([`Hexa::four_bar_through`] does).
+    #[must_use]
+    pub fn inverse(&self, pose: &Pose) -> Option<Configuration> {
+        let joints = self.platform_joints(pose);
+        let mut limbs = [LimbState {
+            theta: 0.0,
+            b: Vector3::zeros(),
+            v: Vector3::zeros(),
+            w: Vector3::zeros(),
+        }; 6];
+        for (i, c) in joints.iter().enumerate() {
+            limbs[i] = self.limb(i, self.working_root(i, c)?, c);
+        }
+        Some(Configuration {
+            pose: *pose,
+            joints,
+            limbs,
+        })
+    }
+}
+
+mod four_bar;
+mod transmission;
+
+pub use four_bar::{FourBar, FourBarPose};
+pub use transmission::{Indices, forward_jacobian, output_index};
