@@ -2,8 +2,8 @@
 //! against the constraint it solves (eq. 4), the Jacobians of eqs. 9–11 against finite
 //! differences of the inverse geometry, and the indices of eqs. 13, 15–16.
 
-use kinsyn::hexa::{Hexa, forward_jacobian, output_index, rz};
-use nalgebra::{DMatrix, DVector, Vector3};
+use kinsyn::hexa::{Hexa, Pose, forward_jacobian, output_index, rz};
+use nalgebra::{DMatrix, DVector, Matrix3, Vector3};
 
 /// The platform joints `c_i` (eq. 6b) at the pose `χ = (x1, y1, z, φ1, x2, y2, φ2)`, with
 /// `γ` (unstated in the paper) a parameter and `Q` of the fourth and fifth limbs read as `Q2`.
@@ -148,5 +148,234 @@ fn eq15_against_the_determinant_of_a1() {
         );
         let with_eq11_s1 = printed * h.r[0];
         assert!((det - with_eq11_s1).abs() > 0.5 * det.abs());
+    }
+}
+
+#[test]
+fn the_library_platform_joints_are_eq_6b() {
+    // Eq. 6b transcribed above (`joints`, with γ a parameter) against `Hexa::platform_joints`.
+    let h = Hexa::paper001();
+    for chi in POSES {
+        let by_hand = joints(&h, &chi, h.gamma);
+        let library = h.platform_joints(&Pose { chi });
+        for i in 0..6 {
+            assert!((by_hand[i] - library[i]).norm() < 1e-12, "c_{}", i + 1);
+        }
+    }
+}
+
+/// `R_η` as printed in eq. 8.
+fn r_eta(eta: f64) -> Matrix3<f64> {
+    Matrix3::new(
+        eta.cos(),
+        eta.sin(),
+        0.0,
+        eta.sin(),
+        -eta.cos(),
+        0.0,
+        0.0,
+        0.0,
+        1.0,
+    )
+}
+
+#[test]
+fn eq7a_is_the_four_bar_and_eqs_7b_7c_place_p2_at_the_coupler_middle() {
+    // For crank angles α over a turn, the β that eq. 7a pairs with α (Freudenstein's equation,
+    // k1, k2 = k3 of eq. 8) must make the coupler D3D6 exactly 2 r4 long — the four-bar's
+    // closure, an independent statement — and eqs. 7b–c as printed (with R_η of eq. 8) must
+    // both give P2.
+    let h = Hexa::paper001();
+    let (r3, r4) = (h.r[2], h.r[3]);
+    let mut assembled = 0;
+    for (p1, phi1) in [
+        (Vector3::new(0.0, 0.0, -600.0), 0.0),
+        (Vector3::new(40.0, -30.0, -650.0), 0.4),
+        (Vector3::new(-20.0, 10.0, -550.0), -0.7),
+    ] {
+        let fb = h.four_bar(&p1, phi1);
+        // Eq. 8's k1 against the Freudenstein constant (d² + a² + c² − b²)/(2ac), a = c = r3,
+        // b = 2 r4, by hand.
+        let (k1, k2) = h.freudenstein(fb.d);
+        let hand = (fb.d * fb.d + 2.0 * r3 * r3 - 4.0 * r4 * r4) / (2.0 * r3 * r3);
+        assert!((k1 - hand).abs() < 1e-12 && (k2 - fb.d / r3).abs() < 1e-12);
+        for k in 0..72 {
+            let alpha = f64::from(k) * 5f64.to_radians();
+            let Some(betas) = h.rocker_angles(&fb, alpha) else {
+                continue;
+            };
+            for beta in betas {
+                assert!(h.eq7a(&fb, alpha, beta).abs() < 1e-12);
+                let pose = h.four_bar_pose(&fb, alpha, beta);
+                assert!(((pose.d6 - pose.d3).norm() - 2.0 * r4).abs() < 1e-9);
+                let e = |t: f64| Vector3::new(t.cos(), t.sin(), 0.0);
+                let eq7b = fb.c3 + r_eta(fb.eta) * (e(alpha) * r3 + e(pose.psi) * r4) - pose.p2;
+                let eq7c = fb.c6 + r_eta(fb.eta) * (e(beta) * r3 - e(pose.psi) * r4) - pose.p2;
+                assert!(eq7b.norm() < 1e-9 && eq7c.norm() < 1e-9, "α = {alpha}");
+                assembled += 1;
+            }
+        }
+    }
+    assert!(assembled > 100, "{assembled} assemblies");
+}
+
+#[test]
+fn four_bar_through_inverts_four_bar_pose_and_refuses_points_off_the_curve() {
+    let h = Hexa::paper001();
+    let p1 = Vector3::new(25.0, -15.0, -620.0);
+    let fb = h.four_bar(&p1, 0.3);
+    let alpha = 0.45;
+    let beta = h.rocker_angles(&fb, alpha).unwrap()[0];
+    let pose = h.four_bar_pose(&fb, alpha, beta);
+    let found = h.four_bar_through(&p1, 0.3, &pose.p2, 1e-9);
+    assert!(
+        found
+            .iter()
+            .any(|f| (f.d3 - pose.d3).norm() < 1e-7 && (f.d6 - pose.d6).norm() < 1e-7),
+        "{found:?}"
+    );
+    // 5 mm across the curve is off it.
+    let normal = (pose.d6 - pose.d3).normalize();
+    assert!(
+        h.four_bar_through(
+            &p1,
+            0.3,
+            &(pose.p2 + normal.cross(&Vector3::z()) * 5.0),
+            1e-6
+        )
+        .is_empty()
+            || h.four_bar_through(
+                &p1,
+                0.3,
+                &(pose.p2 - normal.cross(&Vector3::z()) * 5.0),
+                1e-6
+            )
+            .is_empty()
+    );
+}
+
+#[test]
+fn the_nominal_four_bar_puts_p2_60_mm_below_p1() {
+    // By hand at φ1 = 0: d = 2 r1 + 2 r2 cos γ and cos α = (d − 2 r4)/(2 r3) = cos γ when r1 = r4
+    // and r2 = r3 (paper 001 §4: all 60), so α = γ = 30° and P2 = P1 − (r2 sin γ + r3 sin α) j
+    // = P1 − 60 j.
+    let h = Hexa::paper001();
+    let p1 = Vector3::new(12.0, -7.0, -640.0);
+    let nominal = h.nominal_four_bar(&p1, 0.0).unwrap();
+    assert!((nominal.alpha - 30f64.to_radians()).abs() < 1e-12);
+    assert!((nominal.p2 - (p1 - Vector3::y() * 60.0)).norm() < 1e-9);
+}
+
+/// End-effector 2 at the four-bar's crank angle `alpha` (the `beta` branch nearest `beta0`) with
+/// end-effector 1 held at `(p1, φ1)`, turned so that limb `locked` keeps the angle `theta`:
+/// `φ2` by the secant method on limb `locked`'s working-mode angle. Returns `c_driving`.
+fn driven_joint(
+    h: &Hexa,
+    p1: &Vector3<f64>,
+    phi1: f64,
+    (alpha, beta0): (f64, f64),
+    (locked, theta, phi2_start): (usize, f64, f64),
+    driving: usize,
+) -> Vector3<f64> {
+    let fb = h.four_bar(p1, phi1);
+    let beta = *h
+        .rocker_angles(&fb, alpha)
+        .unwrap()
+        .iter()
+        .min_by(|x, y| (*x - beta0).abs().total_cmp(&(*y - beta0).abs()))
+        .unwrap();
+    let p2 = h.four_bar_pose(&fb, alpha, beta).p2;
+    let miss = |phi2: f64| {
+        let c = h.platform_joints(&Pose::new(p1, phi1, &p2, phi2));
+        h.working_root(locked, &c[locked]).unwrap() - theta
+    };
+    let (mut x0, mut x1) = (phi2_start, phi2_start + 1e-3);
+    for _ in 0..50 {
+        let (f0, f1) = (miss(x0), miss(x1));
+        if f1 == 0.0 || (f1 - f0) == 0.0 {
+            break;
+        }
+        let x2 = x1 - f1 * (x1 - x0) / (f1 - f0);
+        (x0, x1) = (x1, x2);
+        if (x1 - x0).abs() < 1e-15 {
+            break;
+        }
+    }
+    h.platform_joints(&Pose::new(p1, phi1, &p2, x1))[driving]
+}
+
+#[test]
+fn xi_is_the_pressure_angle_found_by_moving_the_robot() {
+    // ξ_k (eq. 17, as defined in `hexa::transmission`): an independent, position-level method.
+    // Hold end-effector 1 and limb k's partner at its angle, move the four-bar a little either
+    // way, re-solve φ2 so the partner's angle stays, and take the cosine between w_k and the
+    // displacement of C_k. It must equal the library's velocity-level ξ_k.
+    let h = Hexa::paper001();
+    for (p1, phi1, alpha, phi2) in [
+        (Vector3::new(30.0, -20.0, -600.0), 0.2, 0.6, -0.1),
+        (Vector3::new(-45.0, 35.0, -650.0), -0.4, 0.35, 0.3),
+        (Vector3::new(10.0, -60.0, -560.0), 0.7, 0.8, -0.6),
+    ] {
+        let fb = h.four_bar(&p1, phi1);
+        let beta = h.rocker_angles(&fb, alpha).unwrap()[0];
+        let p2 = h.four_bar_pose(&fb, alpha, beta).p2;
+        let conf = h.inverse(&Pose::new(&p1, phi1, &p2, phi2)).unwrap();
+        let xi = h.indices(&conf).xi;
+        for (k, (driving, locked)) in [(3usize, 4usize), (4, 3)].into_iter().enumerate() {
+            let eps = 1e-5;
+            let moved = |s: f64| {
+                driven_joint(
+                    &h,
+                    &p1,
+                    phi1,
+                    (alpha + s * eps, beta),
+                    (locked, conf.limbs[locked].theta, phi2),
+                    driving,
+                )
+            };
+            let dc = moved(1.0) - moved(-1.0);
+            let w = conf.limbs[driving].w;
+            let cosine = (w.dot(&dc) / (w.norm() * dc.norm())).abs();
+            assert!(
+                (cosine - xi[k]).abs() < 1e-6,
+                "ξ_{}: moved {cosine}, library {}",
+                driving + 1,
+                xi[k]
+            );
+        }
+    }
+}
+
+#[test]
+fn end_effector_2_is_singular_on_the_mirror_plane_and_the_printed_eq17_misses_it() {
+    // By hand: at x1 = 0, φ1 = φ2 = 0 with the nominal (symmetric) four-bar, the robot is
+    // mirror-symmetric about the plane x = 0; the coupler's middle moves along x (its velocity
+    // is the mirror image of itself with the crank rates swapped), so rows 4 and 5 of
+    // end-effector 2's Jacobian are [s w4x, −r5 w4y] and [−s w4x, r5 w4y]: opposite, det = 0,
+    // ξ_4 = ξ_5 = 0. Off the plane (x1 = 40) it is regular.
+    let h = Hexa::paper001();
+    let at = |x1: f64| {
+        let p1 = Vector3::new(x1, -20.0, -600.0);
+        let p2 = h.nominal_four_bar(&p1, 0.0).unwrap().p2;
+        h.inverse(&Pose::new(&p1, 0.0, &p2, 0.0)).unwrap()
+    };
+    let singular = at(0.0);
+    let m = h.end_effector2_jacobian(&singular).unwrap();
+    assert!(m.determinant().abs() < 1e-9 * m.norm_squared());
+    assert!(h.indices(&singular).xi_min() < 1e-9);
+    let regular = at(40.0);
+    let m = h.end_effector2_jacobian(&regular).unwrap();
+    assert!(m.determinant().abs() > 1e-3 * m.norm_squared());
+    assert!(h.indices(&regular).xi_min() > 1e-3);
+    // Eq. 17 as printed: ŝ_O ∘ ŝ_T = k · (b v_k × w_k) + r5 (Q2 i) · w_k. Its value at the
+    // singular pose is far from 0 for both limbs (on the scale b + r5 of its terms), so the
+    // printed screws cannot give an index that vanishes there (docs/deviations.md).
+    for k in [3, 4] {
+        let s = singular.limbs[k];
+        let printed = Vector3::z().dot(&(s.v * h.b).cross(&s.w)) + h.r[4] * Vector3::x().dot(&s.w);
+        assert!(
+            printed.abs() > 0.05 * (h.b + h.r[4]),
+            "printed product {printed}"
+        );
     }
 }
