@@ -125,9 +125,7 @@ fn the_file_reads_back_into_paper_001s_dimensions() {
         e.contains("2 moving bodies and 4 legs, where the HEXA has 19 and 31"),
         "{e}"
     );
-    for e in [&e] {
-        assert_eq!(e.lines().count(), 1);
-    }
+    assert_eq!(e.lines().count(), 1);
     // A reference out of reach is an error, not a panic.
     let far = Pose::new(
         &Vector3::new(0.0, 0.0, -900.0),
@@ -343,7 +341,11 @@ fn the_general_solver_gives_eq_5s_working_mode() {
     let m = hexa_mechanism();
     let h = Hexa::paper001();
     // The actuated joints are the first joint of legs 1, 5, 9, …: limb i's R(A_i).
-    let labels: Vec<String> = m.actuators().iter().map(|a| a.label()).collect();
+    let labels: Vec<String> = m
+        .actuators()
+        .iter()
+        .map(kinsyn::manipulator::Actuator::label)
+        .collect();
     assert_eq!(labels, ["R1.1", "R5.1", "R9.1", "R13.1", "R17.1", "R21.1"]);
     for target in POSES {
         let (q, pose) = assemble(&m, target, 4);
@@ -353,12 +355,12 @@ fn the_general_solver_gives_eq_5s_working_mode() {
             "{target:?}: near a singularity"
         );
         let theta = thetas(&m, &q);
-        for i in 0..6 {
+        for (i, theta) in theta.iter().enumerate() {
             assert!(
-                wrap(theta[i] - conf.limbs[i].theta).abs() < 1e-8,
+                wrap(theta - conf.limbs[i].theta).abs() < 1e-8,
                 "{target:?} limb {}: {} vs {}",
                 i + 1,
-                theta[i],
+                theta,
                 conf.limbs[i].theta
             );
             // The limb closes (eq. 4) and its ends are eq. 6b's c_i and the b_i of θ_i.

@@ -23,7 +23,7 @@
 //! The actuated joint's file axis is `+u_i`: a positive joint value turns the active link about
 //! `u_i`, that is by `−Δθ_i` in the sense of [`Hexa::link_direction`].
 
-use super::{Hexa, Pose, mu, rz};
+use super::{Configuration, FourBarPose, Hexa, Pose, mu, rz};
 use crate::manipulator::file::{
     AngleUnit, AxisSpec, BodySpec, FORMAT_2, LegBetween, MultibodyDescription, Units,
 };
@@ -123,16 +123,11 @@ impl Hexa {
         let Some(conf) = self.inverse(reference) else {
             return bad("a limb cannot reach its platform joint (eq. 5 has no real root)".into());
         };
-        let (p1, phi1, p2, phi2) = (
-            reference.p1(),
-            reference.phi1(),
-            reference.p2(),
-            reference.phi2(),
-        );
+        let (p1, phi1, p2) = (reference.p1(), reference.phi1(), reference.p2());
         let assemblies = self.four_bar_through(&p1, phi1, &p2, 1e-9 * self.l);
         let nominal = self.nominal_four_bar(&p1, phi1).map(|f| f.d3);
         let Some(fb) = assemblies.iter().min_by(|x, y| {
-            let d = |f: &super::FourBarPose| nominal.map_or(0.0, |n| (f.d3 - n).norm());
+            let d = |f: &FourBarPose| nominal.map_or(0.0, |n| (f.d3 - n).norm());
             d(x).total_cmp(&d(y))
         }) else {
             return bad(format!(
@@ -140,48 +135,54 @@ impl Hexa {
                 p2.x, p2.y, p2.z
             ));
         };
+        let frames = Self::frames(&conf, fb, reference);
+        let legs = self.legs(&conf, fb, &frames, half_width)?;
+        Ok(MultibodyDescription {
+            format: FORMAT_2.into(),
+            name: "6-RUU HEXA with reconfigurable platforms".into(),
+            source: Some(self.source(reference, half_width)),
+            units: Units {
+                length: "mm".into(),
+                angle: AngleUnit::Deg,
+            },
+            ground: GROUND.into(),
+            bodies: frames.iter().map(|(name, f)| f.body(name)).collect(),
+            end_effector: Some("ee1".into()),
+            legs,
+        })
+    }
+
+    /// The nineteen bodies' names and frames at a configuration and a four-bar assembly.
+    fn frames(conf: &Configuration, fb: &FourBarPose, pose: &Pose) -> Vec<(String, Frame)> {
+        let c = &conf.joints;
+        let angle = |d: Vector3<f64>| d.y.atan2(d.x);
+        let mut frames = Vec::new();
+        for (i, (limb, ci)) in conf.limbs.iter().zip(c).enumerate() {
+            frames.push((format!("upper{}", i + 1), Frame::at(limb.b, mu(i))));
+            frames.push((format!("lower{}", i + 1), Frame::at(*ci, mu(i))));
+        }
+        frames.extend([
+            ("sub16".to_string(), Frame::at(c[0], 0.0)),
+            ("sub23".into(), Frame::at(c[1], 0.0)),
+            ("ee1".into(), Frame::at(pose.p1(), pose.phi1())),
+            ("crank3".into(), Frame::at(c[2], angle(fb.d3 - c[2]))),
+            ("crank6".into(), Frame::at(c[5], angle(fb.d6 - c[5]))),
+            ("coupler".into(), Frame::at(fb.p2, angle(fb.d6 - fb.d3))),
+            ("ee2".into(), Frame::at(pose.p2(), pose.phi2())),
+        ]);
+        frames
+    }
+
+    /// The 31 legs (module documentation), their points in the frames of their bodies.
+    fn legs(
+        &self,
+        conf: &Configuration,
+        fb: &FourBarPose,
+        frames: &[(String, Frame)],
+        half_width: f64,
+    ) -> Result<Vec<LegBetween>, HexaFileError> {
         let c = &conf.joints;
         let k = Vector3::z();
-        let angle = |d: Vector3<f64>| d.y.atan2(d.x);
-        let mut bodies = Vec::new();
-        let mut frames = std::collections::HashMap::new();
-        let mut add = |name: String, f: Frame, bodies: &mut Vec<BodySpec>| {
-            bodies.push(f.body(&name));
-            frames.insert(name, f);
-        };
-        for i in 0..6 {
-            let limb = &conf.limbs[i];
-            add(
-                format!("upper{}", i + 1),
-                Frame::at(limb.b, mu(i)),
-                &mut bodies,
-            );
-            add(
-                format!("lower{}", i + 1),
-                Frame::at(c[i], mu(i)),
-                &mut bodies,
-            );
-        }
-        add("sub16".into(), Frame::at(c[0], 0.0), &mut bodies);
-        add("sub23".into(), Frame::at(c[1], 0.0), &mut bodies);
-        add("ee1".into(), Frame::at(p1, phi1), &mut bodies);
-        add(
-            "crank3".into(),
-            Frame::at(c[2], angle(fb.d3 - c[2])),
-            &mut bodies,
-        );
-        add(
-            "crank6".into(),
-            Frame::at(c[5], angle(fb.d6 - c[5])),
-            &mut bodies,
-        );
-        add(
-            "coupler".into(),
-            Frame::at(fb.p2, angle(fb.d6 - fb.d3)),
-            &mut bodies,
-        );
-        add("ee2".into(), Frame::at(p2, phi2), &mut bodies);
-
         let mut legs = Vec::new();
         let mut leg = |chain: &str,
                        (from, to): (&str, &str),
@@ -189,8 +190,9 @@ impl Hexa {
                        axes: Vec<Vector3<f64>>| {
             let local = |name: &str, p: &Vector3<f64>| {
                 frames
-                    .get(name)
-                    .map_or([p.x, p.y, p.z], |f: &Frame| f.local(p))
+                    .iter()
+                    .find(|(n, _)| n == name)
+                    .map_or([p.x, p.y, p.z], |(_, f)| f.local(p))
             };
             legs.push(LegBetween {
                 chain: chain.into(),
@@ -203,16 +205,15 @@ impl Hexa {
                 actuated: None,
             });
         };
-        for i in 0..6 {
-            let limb = &conf.limbs[i];
+        for (i, (limb, ci)) in conf.limbs.iter().zip(c).enumerate() {
             let u = self.axis(i);
             let n = u.cross(&limb.w);
             if n.norm() <= 1e-12 * limb.w.norm() {
-                return bad(format!(
+                return Err(HexaFileError::Reference(format!(
                     "limb {}'s parallelogram lies along its axis u_{} (u × w = 0)",
                     i + 1,
                     i + 1
-                ));
+                )));
             }
             let n = n.normalize();
             let (upper, lower) = (format!("upper{}", i + 1), format!("lower{}", i + 1));
@@ -227,14 +228,14 @@ impl Hexa {
                 leg(
                     "RR",
                     (&upper, &lower),
-                    (limb.b + offset, c[i] + offset),
+                    (limb.b + offset, ci + offset),
                     vec![n, n],
                 );
             }
             if platform_of(i) == "ee2" {
-                leg("U", (&lower, "ee2"), (c[i], c[i]), vec![u, k]);
+                leg("U", (&lower, "ee2"), (*ci, *ci), vec![u, k]);
             } else {
-                leg("R", (&lower, platform_of(i)), (c[i], c[i]), vec![u]);
+                leg("R", (&lower, platform_of(i)), (*ci, *ci), vec![u]);
             }
         }
         for (from, to, p) in [
@@ -248,20 +249,7 @@ impl Hexa {
         ] {
             leg("R", (from, to), (p, p), vec![k]);
         }
-
-        Ok(MultibodyDescription {
-            format: FORMAT_2.into(),
-            name: "6-RUU HEXA with reconfigurable platforms".into(),
-            source: Some(self.source(reference, half_width)),
-            units: Units {
-                length: "mm".into(),
-                angle: AngleUnit::Deg,
-            },
-            ground: GROUND.into(),
-            bodies,
-            end_effector: Some("ee1".into()),
-            legs,
-        })
+        Ok(legs)
     }
 
     /// The `source` field: the paper, the dimensions, the choices the paper leaves open.
