@@ -109,6 +109,10 @@ pub(super) enum Command {
         /// to the ground.
         #[arg(long, value_name = "NAME")]
         relative_to: Option<String>,
+        /// Keep only these legs (1-based, ranges: '1-4', '1-8,29') and the bodies they still
+        /// join to the ground: the sub-mechanism, e.g. one limb, whose bond --body shows.
+        #[arg(long, value_name = "LIST")]
+        legs: Option<String>,
         /// Refuse more lock subsets than this (each is a sampled motion of about 1–5 ms of CPU;
         /// 4096 take about 16–20 s on a 6-UPS).
         #[arg(long, value_name = "COUNT", default_value_t = super::manipulator::DEFAULT_MAX_SUBSETS,

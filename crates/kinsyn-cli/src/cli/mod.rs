@@ -131,6 +131,7 @@ fn execute(command: Command) -> Result<String, CliError> {
             max_subsets,
             body,
             relative_to,
+            legs,
             sampling,
             json: as_json,
         } => {
@@ -142,6 +143,7 @@ fn execute(command: Command) -> Result<String, CliError> {
             manipulator::modes(
                 &file,
                 (pose.as_deref(), body.as_deref(), relative_to.as_deref()),
+                legs.as_deref(),
                 &selection,
                 max_subsets,
                 &sampling.settings(),

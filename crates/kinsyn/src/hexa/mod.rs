@@ -298,7 +298,9 @@ impl Hexa {
 }
 
 mod four_bar;
+mod mechanism;
 mod transmission;
 
 pub use four_bar::{FourBar, FourBarPose};
+pub use mechanism::{FILE_TOLERANCE, GROUND, HexaFile, HexaFileError};
 pub use transmission::{Indices, forward_jacobian, output_index};

@@ -30,6 +30,7 @@ mod request;
 mod singularity;
 mod stack;
 pub mod stacking;
+mod sub_mechanism;
 
 pub use jacobian::{Jacobians, RowKind, WrenchRow};
 pub use leg::{LegCheck, LegWarning, LegWarningKind};
@@ -49,6 +50,7 @@ pub use request::{ContinuationFailure, PositionError, RequestError};
 pub use singularity::{
     Analysis, GenericRanks, Singularity, SingularityCause, SingularityKind, rank_text,
 };
+pub use sub_mechanism::{SubMechanismError, parse_leg_list};
 
 use crate::chain::Displacement;
 use crate::mechanism::{Mechanism, MechanismError};
@@ -609,12 +611,15 @@ pub const SMALLEST_LENGTH: f64 = 1e-12;
 /// legs' joint twists differ in size by more than the rank tolerances can tell from round-off.
 pub const LARGEST_LENGTH_RATIO: f64 = 1e6;
 
-/// The most moving bodies a `/2` description may have (docs/limits.md).
-pub const MAX_BODIES: usize = 12;
+/// The most moving bodies a `/2` description may have (docs/limits.md): enough for paper 001's
+/// HEXA with reconfigurable platforms (19: two parallelogram bars per limb, two sub-platforms,
+/// two end-effectors, a four-bar's cranks and coupler). The cost is bounded by [`MAX_JOINTS`].
+pub const MAX_BODIES: usize = 24;
 
 /// The most legs a `/2` description may have (docs/limits.md): legs there may be single joints
 /// between bodies, so the cost is bounded by [`MAX_JOINTS`] rather than by the legs.
-pub const MAX_LEGS_BETWEEN_BODIES: usize = 24;
+/// 48 leaves room for the HEXA of paper 001 (31 legs, most of them one or two joints).
+pub const MAX_LEGS_BETWEEN_BODIES: usize = 48;
 
 /// The most primitive joints a `/2` description may have in all (docs/limits.md): those of
 /// [`MAX_LEGS`] legs of six joints, the largest `/1` description.

@@ -82,7 +82,7 @@ pub fn analyze(
     settings: &SampleSettings,
     as_json: bool,
 ) -> Result<String, CliError> {
-    let m = load_with_body(path, placement.body, placement.relative_to)?;
+    let m = load_with_body(path, placement.body, placement.relative_to, None)?;
     let locked = match lock {
         Some(text) => m
             .parse_locks(text)

@@ -46,7 +46,7 @@ pub fn all_assemblies(
     seed: u64,
     as_json: bool,
 ) -> Result<String, CliError> {
-    let m = load_with_body(path, body, None)?;
+    let m = load_with_body(path, body, None, None)?;
     let inputs = inputs_or_reference(&m, inputs_text)?;
     let ps = m
         .position_system(&inputs, &Chart::random_linear(seed))

@@ -29,14 +29,38 @@ pub fn load(path: &Path) -> Result<Manipulator, CliError> {
     })
 }
 
+/// [`load`] cut down to the legs of `legs` (`--legs 1-4,29`) and the bodies they still join to
+/// the ground, when given: the sub-mechanism, its end-effector `body` when given.
+fn load_legs(path: &Path, legs: &str, body: Option<&str>) -> Result<Manipulator, CliError> {
+    let shown = path.display();
+    let text = crate::cli::files::read_text(path, file::NOT_A_DESCRIPTION)?;
+    let d = file::MultibodyDescription::from_json(&text).map_err(|e| {
+        if e.is_not_a_description() {
+            CliError::Input(format!("{shown} is {}", e.message))
+        } else {
+            CliError::Input(format!("{shown}: {e}"))
+        }
+    })?;
+    let refuse = |e: &dyn std::fmt::Display| CliError::Input(format!("--legs {legs:?}: {e}"));
+    let kept = kinsyn::manipulator::parse_leg_list(legs, d.legs.len())
+        .and_then(|list| d.with_legs(&list, body))
+        .map_err(|e| refuse(&e))?;
+    Manipulator::from_bodies(&kept).map_err(|e| refuse(&e))
+}
+
 /// [`load`], with the moving body `body` (`--body NAME`) as the end-effector when given, and its
-/// motion taken relative to the moving body `relative` (`--relative-to NAME`) when given.
+/// motion taken relative to the moving body `relative` (`--relative-to NAME`) when given; cut
+/// down to the legs `legs` (`--legs`) when given ([`load_legs`]).
 fn load_with_body(
     path: &Path,
     body: Option<&str>,
     relative: Option<&str>,
+    legs: Option<&str>,
 ) -> Result<Manipulator, CliError> {
-    let m = load(path)?;
+    let m = match legs {
+        Some(list) => load_legs(path, list, body)?,
+        None => load(path)?,
+    };
     let m = match body {
         None => m,
         Some(name) => m

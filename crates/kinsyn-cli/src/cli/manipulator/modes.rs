@@ -91,12 +91,13 @@ fn selected_subsets(
 pub fn modes(
     path: &Path,
     (pose, body, relative): (Option<&str>, Option<&str>, Option<&str>),
+    legs: Option<&str>,
     selection: &Selection,
     max_subsets: u32,
     settings: &SampleSettings,
     as_json: bool,
 ) -> Result<String, CliError> {
-    let m = load_with_body(path, body, relative)?;
+    let m = load_with_body(path, body, relative, legs)?;
     let subsets = selected_subsets(path, &m, selection, max_subsets)?;
     let start = start_configuration(&m, pose)?;
     let modes = if subsets.len() > 1 {
