@@ -100,7 +100,7 @@ fn bad_leg_lists_are_refused_in_one_line() {
         (
             "1-40",
             None,
-            "leg 40 does not exist: the mechanism has legs 1 to 31",
+            "leg 40 does not exist: the mechanism has legs 1 to 33",
         ),
         ("0", None, "leg 0 does not exist"),
         ("4-1", None, "the range 4-1 runs backwards"),

@@ -3,23 +3,25 @@
 //! reference pose, and read back into those dimensions.
 //!
 //! # The model (paper 001 §2, Figs. 1–2)
-//! Nineteen moving bodies. Limb `i` is eq. 1's bond `R(A_i) R(B_i) T(n_i) R(C_i)`: the active
+//! Limb `i` is eq. 1's bond `R(A_i) R(B_i) T(n_i) R(C_i)`: the active
 //! link turns about `u_i` at `A_i` (the actuated joint) and carries the parallelogram's upper
 //! bar `upper{i}` by a revolute about `u_i` at `B_i`; two rods, hinged about
 //! `n_i = u_i × w_i / |u_i × w_i|` at `B_i ± h u_i` and `C_i ± h u_i`, make the lower bar
 //! `lower{i}` translate on a circle relative to the upper one (`T(n_i)`); the lower bar joins
 //! the platform by a revolute about `u_i` at `C_i`: onto the sub-platform `sub16` (limbs 1, 6)
-//! or `sub23` (limbs 2, 3), or by a universal joint (`u_i`, then `k`) onto end-effector 2 `ee2`
-//! (limbs 4, 5: the turn of `ee2` about `k`). End-effector 1 `ee1` (the bar `C2C1`, frame at
+//! or `sub23` (limbs 2, 3), or onto a wrist `wrist{i}` (limbs 4, 5) that end-effector 2 `ee2`
+//! turns on about `k` at `C_i` (the two revolutes at `C_i` are a universal joint; the wrist is
+//! named so that each limb's bond, the motion of the body after `R(C_i)`, can be asked for). End-effector 1 `ee1` (the bar `C2C1`, frame at
 //! `P1`, `x` along `C2 → C1`) turns about `k` on both sub-platforms at `C1` and `C2` (eq. 2's
 //! `R(N, k)`). The four-bar of eqs. 7–8: cranks `crank3`, `crank6` about `k` at `C3` (on
 //! `sub23`) and `C6` (on `sub16`), the coupler `coupler` (`D3`–`D6`, frame at its middle `P2`,
 //! `x` along `D3 → D6`), and `ee2` (frame at `P2`, `x` along `C4 → C5`) turning about `k` on it.
 //!
 //! Legs, in order: for limb `i`, legs `4i − 3 … 4i` (1-based) are `ground → upper{i}` (`R!R`),
-//! the two rods `upper{i} → lower{i}` (`RR`), and `lower{i} →` its platform (`R` or `U`); then
-//! legs 25–31: `sub16 → ee1`, `sub23 → ee1`, `sub23 → crank3`, `crank3 → coupler`,
-//! `sub16 → crank6`, `crank6 → coupler`, `coupler → ee2`. Lengths in mm, angles in degrees.
+//! the two rods `upper{i} → lower{i}` (`RR`), and `lower{i} →` its sub-platform or wrist (`R`);
+//! then legs 25–33: `sub16 → ee1`, `sub23 → ee1`, `sub23 → crank3`, `crank3 → coupler`,
+//! `sub16 → crank6`, `crank6 → coupler`, `coupler → ee2`, `wrist4 → ee2`, `wrist5 → ee2`.
+//! Twenty-one moving bodies, 33 legs, 51 primitive joints. Lengths in mm, angles in degrees.
 //! The actuated joint's file axis is `+u_i`: a positive joint value turns the active link about
 //! `u_i`, that is by `−Δθ_i` in the sense of [`Hexa::link_direction`].
 
@@ -90,12 +92,13 @@ fn axis(v: &Vector3<f64>) -> AxisSpec {
     AxisSpec::Vector([v.x, v.y, v.z])
 }
 
-/// The platform of limb `i` (0-based): `sub16`, `sub23` or `ee2`.
+/// The body after limb `i`'s `R(C_i)` (0-based): `sub16`, `sub23` or its wrist.
 fn platform_of(i: usize) -> &'static str {
     match i {
         0 | 5 => "sub16",
         1 | 2 => "sub23",
-        _ => "ee2",
+        3 => "wrist4",
+        _ => "wrist5",
     }
 }
 
@@ -152,7 +155,7 @@ impl Hexa {
         })
     }
 
-    /// The nineteen bodies' names and frames at a configuration and a four-bar assembly.
+    /// The twenty-one bodies' names and frames at a configuration and a four-bar assembly.
     fn frames(conf: &Configuration, fb: &FourBarPose, pose: &Pose) -> Vec<(String, Frame)> {
         let c = &conf.joints;
         let angle = |d: Vector3<f64>| d.y.atan2(d.x);
@@ -165,6 +168,8 @@ impl Hexa {
             ("sub16".to_string(), Frame::at(c[0], 0.0)),
             ("sub23".into(), Frame::at(c[1], 0.0)),
             ("ee1".into(), Frame::at(pose.p1(), pose.phi1())),
+            ("wrist4".into(), Frame::at(c[3], mu(3))),
+            ("wrist5".into(), Frame::at(c[4], mu(4))),
             ("crank3".into(), Frame::at(c[2], angle(fb.d3 - c[2]))),
             ("crank6".into(), Frame::at(c[5], angle(fb.d6 - c[5]))),
             ("coupler".into(), Frame::at(fb.p2, angle(fb.d6 - fb.d3))),
@@ -173,7 +178,7 @@ impl Hexa {
         frames
     }
 
-    /// The 31 legs (module documentation), their points in the frames of their bodies.
+    /// The 33 legs (module documentation), their points in the frames of their bodies.
     fn legs(
         &self,
         conf: &Configuration,
@@ -232,11 +237,7 @@ impl Hexa {
                     vec![n, n],
                 );
             }
-            if platform_of(i) == "ee2" {
-                leg("U", (&lower, "ee2"), (*ci, *ci), vec![u, k]);
-            } else {
-                leg("R", (&lower, platform_of(i)), (*ci, *ci), vec![u]);
-            }
+            leg("R", (&lower, platform_of(i)), (*ci, *ci), vec![u]);
         }
         for (from, to, p) in [
             ("sub16", "ee1", c[0]),
@@ -246,6 +247,8 @@ impl Hexa {
             ("sub16", "crank6", c[5]),
             ("crank6", "coupler", fb.d6),
             ("coupler", "ee2", fb.p2),
+            ("wrist4", "ee2", c[3]),
+            ("wrist5", "ee2", c[4]),
         ] {
             leg("R", (from, to), (p, p), vec![k]);
         }
@@ -257,12 +260,12 @@ impl Hexa {
         let [r1, r2, r3, r4, r5] = self.r;
         let (p1, p2) = (reference.p1(), reference.p2());
         format!(
-            "paper 001 (Wu & Dong, Kinematics of a 6-RUU parallel robot with reconfigurable platforms) §2–4: R = {}, a = {}, b = {}, l = {}, r1..r5 = {r1}, {r2}, {r3}, {r4}, {r5} mm; gamma = {} deg (eq. 6b's direction of the sub-platforms' arms C2C3, C1C6, unstated in the paper); parallelogram rods at B_i ± h u_i, C_i ± h u_i with h = {half_width} mm (a modelling choice: any h > 0 gives the same motion). Reference: P1 = ({}, {}, {}), phi1 = {} deg, P2 = ({}, {}, {}), phi2 = {} deg, limbs in the working mode (elbow out), the four-bar's assembly through P2 nearest the nominal one. Bodies: upper{{i}}, lower{{i}} the parallelogram's bars of limb i; sub16, sub23 the sub-platforms; ee1, ee2 the end-effectors (frames at P1, P2); crank3, crank6, coupler the four-bar of eqs. 7–8. Legs 4i-3..4i: limb i (R!R to upper{{i}}, two RR rods, R or U onto the platform); legs 25-31: the platform linkage. Written by Hexa::description (crates/kinsyn/src/hexa/mechanism.rs); regenerate with KINSYN_BLESS=1 cargo test -p kinsyn --test hexa_mechanism",
+            "paper 001 (Wu & Dong, Kinematics of a 6-RUU parallel robot with reconfigurable platforms) §2–4: R = {}, a = {}, b = {}, l = {}, r1..r5 = {r1}, {r2}, {r3}, {r4}, {r5} mm; gamma = {} deg (eq. 6b's direction of the sub-platforms' arms C2C3, C1C6, unstated in the paper); parallelogram rods at B_i ± h u_i, C_i ± h u_i with h = {half_width} mm (a modelling choice: any h > 0 gives the same motion). Reference: P1 = ({}, {}, {}), phi1 = {} deg, P2 = ({}, {}, {}), phi2 = {} deg, limbs in the working mode (elbow out), the four-bar's assembly through P2 nearest the nominal one. Bodies: upper{{i}}, lower{{i}} the parallelogram's bars of limb i; sub16, sub23 the sub-platforms; wrist4, wrist5 the wrists of limbs 4, 5; ee1, ee2 the end-effectors (frames at P1, P2); crank3, crank6, coupler the four-bar of eqs. 7–8. Legs 4i-3..4i: limb i (R!R to upper{{i}}, two RR rods, R onto a sub-platform or a wrist); legs 25-33: the platform linkage. Written by Hexa::description (crates/kinsyn/src/hexa/mechanism.rs); regenerate with KINSYN_BLESS=1 cargo test -p kinsyn --test hexa_mechanism",
             self.big_r,
             self.a,
             self.b,
             self.l,
-            self.gamma.to_degrees(),
+            (self.gamma.to_degrees() * 1e9).round() / 1e9,
             p1.x,
             p1.y,
             p1.z,
@@ -294,9 +297,9 @@ impl Hexa {
     /// See [`Hexa::from_description`].
     pub fn read_description(d: &MultibodyDescription) -> Result<HexaFile, HexaFileError> {
         let not = |why: String| HexaFileError::NotAHexa(why);
-        if d.bodies.len() != 19 || d.legs.len() != 31 {
+        if d.bodies.len() != 21 || d.legs.len() != 33 {
             return Err(not(format!(
-                "{} moving bodies and {} legs, where the HEXA has 19 and 31",
+                "{} moving bodies and {} legs, where the HEXA has 21 and 33",
                 d.bodies.len(),
                 d.legs.len()
             )));
@@ -324,7 +327,7 @@ impl Hexa {
                 arm.norm(),
                 v(&d.legs[27].first).norm(),
                 v(&d.legs[27].last).norm(),
-                v(&d.legs[19].last).norm(),
+                v(&d.legs[32].last).norm(),
             ],
             gamma: (-arm.y).atan2(-arm.x),
         };
