@@ -29,18 +29,24 @@ pub fn load(path: &Path) -> Result<Manipulator, CliError> {
     })
 }
 
-/// [`load`] cut down to the legs of `legs` (`--legs 1-4,29`) and the bodies they still join to
-/// the ground, when given: the sub-mechanism, its end-effector `body` when given.
-fn load_legs(path: &Path, legs: &str, body: Option<&str>) -> Result<Manipulator, CliError> {
+/// The description a file holds, as the description of several bodies (a `/1` file as its `/2`
+/// form), without building the mechanism.
+pub fn load_description(path: &Path) -> Result<file::MultibodyDescription, CliError> {
     let shown = path.display();
     let text = crate::cli::files::read_text(path, file::NOT_A_DESCRIPTION)?;
-    let d = file::MultibodyDescription::from_json(&text).map_err(|e| {
+    file::MultibodyDescription::from_json(&text).map_err(|e| {
         if e.is_not_a_description() {
             CliError::Input(format!("{shown} is {}", e.message))
         } else {
             CliError::Input(format!("{shown}: {e}"))
         }
-    })?;
+    })
+}
+
+/// [`load`] cut down to the legs of `legs` (`--legs 1-4,29`) and the bodies they still join to
+/// the ground, when given: the sub-mechanism, its end-effector `body` when given.
+fn load_legs(path: &Path, legs: &str, body: Option<&str>) -> Result<Manipulator, CliError> {
+    let d = load_description(path)?;
     let refuse = |e: &dyn std::fmt::Display| CliError::Input(format!("--legs {legs:?}: {e}"));
     let kept = kinsyn::manipulator::parse_leg_list(legs, d.legs.len())
         .and_then(|list| d.with_legs(&list, body))
