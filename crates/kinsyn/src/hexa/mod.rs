@@ -299,6 +299,11 @@ impl Hexa {
 
 mod four_bar;
 mod transmission;
+mod workspace;
 
 pub use four_bar::{FourBar, FourBarPose};
 pub use transmission::{Indices, forward_jacobian, output_index};
+pub use workspace::{
+    Cylinder, Grid, IndexMap, IndexMapSettings, MAX_CELLS, Progress, Workspace, WorkspaceError,
+    WorkspaceSettings,
+};
