@@ -99,9 +99,10 @@ fn statistics(values: &[f64]) -> Option<(f64, f64, f64)> {
 }
 
 fn statistics_json(values: &[f64]) -> serde_json::Value {
-    statistics(values).map_or(serde_json::Value::Null, |(min, mean, max)| {
-        serde_json::json!({"min": min, "mean": mean, "max": max})
-    })
+    statistics(values).map_or(
+        serde_json::Value::Null,
+        |(min, mean, max)| serde_json::json!({"min": min, "mean": mean, "max": max}),
+    )
 }
 
 fn cylinder_json(c: Option<&Cylinder>) -> serde_json::Value {
@@ -357,12 +358,12 @@ fn draw_workspace<DB: DrawingBackend>(
             .label("end-effector 2 (P2)")
             .legend(|(x, y)| Rectangle::new([(x, y - 5), (x + 12, y + 5)], RED_CELL.filled()));
         chart
-            .draw_series(
-                cells
-                    .iter()
-                    .filter(|c| w.end_effector1[c.0])
-                    .map(|c| Polygon::new(vec![(c.1 - s, c.2 - s), (c.1 - s, c.2 + s), (c.1 + s, c.2 + s)], GREEN_CELL.filled())),
-            )
+            .draw_series(cells.iter().filter(|c| w.end_effector1[c.0]).map(|c| {
+                Polygon::new(
+                    vec![(c.1 - s, c.2 - s), (c.1 - s, c.2 + s), (c.1 + s, c.2 + s)],
+                    GREEN_CELL.filled(),
+                )
+            }))
             .map_err(draw_error)?
             .label("end-effector 1 (P1)")
             .legend(|(x, y)| Rectangle::new([(x, y - 5), (x + 12, y + 5)], GREEN_CELL.filled()));
@@ -387,7 +388,9 @@ fn draw_workspace<DB: DrawingBackend>(
                 .draw_series(LineSeries::new(outline, BLACK.stroke_width(3)))
                 .map_err(draw_error)?
                 .label("regular common workspace")
-                .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 12, y)], BLACK.stroke_width(3)));
+                .legend(|(x, y)| {
+                    PathElement::new(vec![(x, y), (x + 12, y)], BLACK.stroke_width(3))
+                });
         }
         if p == 0 {
             chart
@@ -462,7 +465,12 @@ fn draw_four_bar<DB: DrawingBackend>(
     // End-effector 1 (C1–C2) and the sub-platforms' arms (C2–C3, C1–C6).
     chart
         .draw_series(LineSeries::new(
-            [rel(&joints[2]), rel(&joints[1]), rel(&joints[0]), rel(&joints[5])],
+            [
+                rel(&joints[2]),
+                rel(&joints[1]),
+                rel(&joints[0]),
+                rel(&joints[5]),
+            ],
             GREEN_CELL.stroke_width(4),
         ))
         .map_err(draw_error)?
@@ -615,26 +623,26 @@ pub fn indices(out: &Path, options: &IndexOptions, as_json: bool) -> Result<Stri
         "paper 001 HEXA, φ1 = {}°, φ2 = {}°, z = {z:.1} mm, P1 over the disc of radius {radius:.1} mm (regular common workspace, z from {:.1} to {:.1} mm), step {map_step} mm, end-effector 2 at the nominal four-bar assembly",
         options.phi.0, options.phi.1, cylinder.z_lo, cylinder.z_hi
     );
-    let _ = writeln!(
-        text,
-        "{} cells, {assemblable} assemblable",
-        inside.len()
-    );
+    let _ = writeln!(text, "{} cells, {assemblable} assemblable", inside.len());
     for (name, f) in [
         ("λ_min", &lambda as &dyn Fn(&Indices) -> f64),
         ("σ", &sigma),
         ("ξ_min", &xi),
     ] {
-        let line = [("all", &all as &dyn Fn(f64) -> bool), ("y ≤ 0", &south), ("y > 0", &north)]
-            .iter()
-            .map(|(part, keep)| match statistics(&values(f, keep)) {
-                Some((min, mean, max)) => {
-                    format!("{part}: min {min:.3}, mean {mean:.3}, max {max:.3}")
-                }
-                None => format!("{part}: none"),
-            })
-            .collect::<Vec<_>>()
-            .join("; ");
+        let line = [
+            ("all", &all as &dyn Fn(f64) -> bool),
+            ("y ≤ 0", &south),
+            ("y > 0", &north),
+        ]
+        .iter()
+        .map(|(part, keep)| match statistics(&values(f, keep)) {
+            Some((min, mean, max)) => {
+                format!("{part}: min {min:.3}, mean {mean:.3}, max {max:.3}")
+            }
+            None => format!("{part}: none"),
+        })
+        .collect::<Vec<_>>()
+        .join("; ");
         let _ = writeln!(text, "{name}: {line}");
     }
     for f in &files {
@@ -685,6 +693,10 @@ fn band(value: f64) -> u8 {
     b
 }
 
+#[allow(
+    clippy::too_many_lines,
+    reason = "one figure: three banded panels and the colour bar"
+)]
 /// Fig. 4: the three index maps side by side, banded by 0.1, with a colour bar.
 fn draw_indices<DB: DrawingBackend>(
     root: &DrawingArea<DB, Shift>,
@@ -715,7 +727,10 @@ fn draw_indices<DB: DrawingBackend>(
         let (title, f): (&str, fn(&Indices) -> f64) = match p {
             0 => ("input index λ_min (eq. 13)", Indices::lambda_min),
             1 => ("output index σ of end-effector 1 (eq. 16)", |i| i.sigma),
-            _ => ("output index ξ_min of end-effector 2 (eq. 17)", Indices::xi_min),
+            _ => (
+                "output index ξ_min of end-effector 2 (eq. 17)",
+                Indices::xi_min,
+            ),
         };
         let mut chart = ChartBuilder::on(panel)
             .caption(title, ("sans-serif", 15))
@@ -788,7 +803,10 @@ fn draw_indices<DB: DrawingBackend>(
     scale
         .draw_series((0..10).map(|b| {
             let lo = f64::from(b) / 10.0;
-            Rectangle::new([(0.0, lo), (1.0, lo + 0.1)], band_colour(lo + 0.05).filled())
+            Rectangle::new(
+                [(0.0, lo), (1.0, lo + 0.1)],
+                band_colour(lo + 0.05).filled(),
+            )
         }))
         .map_err(draw_error)?;
     Ok(())

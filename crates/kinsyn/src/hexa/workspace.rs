@@ -420,7 +420,12 @@ impl Hexa {
     /// The coupler curve's points `P2` with end-effector 1 at `(p1, φ1)`: `samples` evenly
     /// spaced angles of each crank, both assemblies of each (module documentation).
     #[must_use]
-    pub fn coupler_points(&self, p1: &Vector3<f64>, phi1: f64, samples: usize) -> Vec<Vector3<f64>> {
+    pub fn coupler_points(
+        &self,
+        p1: &Vector3<f64>,
+        phi1: f64,
+        samples: usize,
+    ) -> Vec<Vector3<f64>> {
         let fb = self.four_bar(p1, phi1);
         let mut points = Vec::with_capacity(4 * samples);
         for k in 0..samples {
@@ -467,7 +472,9 @@ impl Hexa {
         finite("φ1", settings.phi1)?;
         finite("φ2", settings.phi2)?;
         if settings.curve_samples == 0 {
-            return Err(WorkspaceError::Value("curve samples: give at least one".into()));
+            return Err(WorkspaceError::Value(
+                "curve samples: give at least one".into(),
+            ));
         }
         let grid = self.workspace_grid(settings.step)?;
         let side = grid.side();
