@@ -46,8 +46,8 @@ fn the_workspace_figures_and_json_match_the_library() {
     assert_eq!(v["end_effector1"]["cells"], w.points(0).len());
     assert_eq!(v["end_effector2"]["cells"], w.points(1).len());
     let c = w.regular_cylinder().unwrap();
-    assert_eq!(v["cylinder"]["radius"].as_f64().unwrap(), c.radius);
-    assert_eq!(v["cylinder"]["z_lo"].as_f64().unwrap(), c.z_lo);
+    assert!((v["cylinder"]["radius"].as_f64().unwrap() - c.radius).abs() < 1e-9);
+    assert!((v["cylinder"]["z_lo"].as_f64().unwrap() - c.z_lo).abs() < 1e-9);
 }
 
 #[test]
