@@ -296,7 +296,7 @@ pub(super) enum Command {
     /// and forward position, velocities by screw theory (geometry of §5; angles in degrees).
     #[command(subcommand)]
     Configurable(ConfigurableCommand),
-    /// Figures of the papers drawn by kinsyn (SVG).
+    /// Figures of the papers drawn by kinsyn (SVG, and PNG for paper 001).
     #[command(subcommand)]
     Plot(PlotCommand),
     /// Write a series-parallel stack of three-legged modules (paper 002) as a description file.
@@ -555,6 +555,60 @@ pub(super) enum PlotCommand {
         /// φ in degrees (eq. 11's sense).
         #[arg(long, default_value_t = 100.0, allow_hyphen_values = true)]
         phi: f64,
+    },
+    /// Paper 001 (the HEXA with reconfigurable platforms), Fig. 3: the reachable workspaces of
+    /// both end-effectors at constant orientations by a grid search, as three sections with the
+    /// regular common workspace (the largest vertical cylinder on the z axis inside both), and
+    /// the positions of end-effector 2 relative to end-effector 1 (the four-bar's coupler
+    /// curve); DIR/hexa-workspace.svg/.png and DIR/hexa-four-bar.svg/.png.
+    #[command(
+        after_help = "Examples:\n  kinsyn plot workspace --out figures\n  kinsyn plot workspace --phi1 45 --phi2 -45 --step 20 --json"
+    )]
+    Workspace {
+        /// The folder for the figures (created if missing).
+        #[arg(long, default_value = ".")]
+        out: PathBuf,
+        /// φ1, end-effector 1's turn about z, in degrees (-180 to 180).
+        #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
+        phi1: f64,
+        /// φ2, end-effector 2's turn about z, in degrees (-180 to 180).
+        #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
+        phi2: f64,
+        /// The grid step in mm.
+        #[arg(long, default_value_t = 10.0, allow_hyphen_values = true)]
+        step: f64,
+        /// Print JSON (grid, volumes, cylinder) instead of text.
+        #[arg(long)]
+        json: bool,
+    },
+    /// Paper 001 (the HEXA), Fig. 4: the input index `λ_min` and the output indices σ and `ξ_min`
+    /// over the regular common workspace at one height, end-effector 2 at the four-bar's
+    /// nominal (symmetric) assembly; three banded maps as DIR/hexa-indices.svg/.png.
+    #[command(
+        after_help = "Examples:\n  kinsyn plot indices --out figures\n  kinsyn plot indices --phi1 45 --phi2 -45 --json"
+    )]
+    Indices {
+        /// The folder for the figures (created if missing).
+        #[arg(long, default_value = ".")]
+        out: PathBuf,
+        /// φ1 in degrees (-180 to 180).
+        #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
+        phi1: f64,
+        /// φ2 in degrees (-180 to 180).
+        #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
+        phi2: f64,
+        /// The height of the map in mm (default: the middle of the regular workspace).
+        #[arg(long, allow_hyphen_values = true)]
+        z: Option<f64>,
+        /// The map's grid step in mm.
+        #[arg(long, default_value_t = 5.0, allow_hyphen_values = true)]
+        step: f64,
+        /// The grid step in mm of the workspace search that finds the regular workspace.
+        #[arg(long, default_value_t = 10.0, allow_hyphen_values = true)]
+        workspace_step: f64,
+        /// Print JSON (cylinder, index statistics) instead of text.
+        #[arg(long)]
+        json: bool,
     },
     /// Paper 003 §5: the inputs' trajectory followed from Table 2's assembly by parameter
     /// homotopy; the corner speeds against time (like Fig. 12) as SVG, and where the followed

@@ -11,6 +11,7 @@ mod catalogue;
 mod components;
 mod configurable;
 mod files;
+mod hexa_plot;
 mod manipulator;
 mod notation;
 mod plot;
@@ -113,6 +114,9 @@ fn usage_error(e: &clap::Error) -> String {
     reason = "a dispatcher: one arm per subcommand, each only naming its options"
 )]
 fn execute(command: Command) -> Result<String, CliError> {
+    if matches!(command, Command::Plot(_)) {
+        hexa_plot::register_font();
+    }
     match command {
         Command::Notation { chain, json } => notation::notation(&chain, json),
         Command::Catalogue(c) => catalogue::catalogue(c),
@@ -263,6 +267,31 @@ fn execute(command: Command) -> Result<String, CliError> {
             steps,
             json: as_json,
         }) => plot::trajectory(&out, steps, as_json),
+        Command::Plot(args::PlotCommand::Workspace {
+            out,
+            phi1,
+            phi2,
+            step,
+            json: as_json,
+        }) => hexa_plot::workspace(&out, (phi1, phi2), step, as_json),
+        Command::Plot(args::PlotCommand::Indices {
+            out,
+            phi1,
+            phi2,
+            z,
+            step,
+            workspace_step,
+            json: as_json,
+        }) => hexa_plot::indices(
+            &out,
+            &hexa_plot::IndexOptions {
+                phi: (phi1, phi2),
+                z,
+                step,
+                workspace_step,
+            },
+            as_json,
+        ),
         Command::Stack {
             modules,
             radii,

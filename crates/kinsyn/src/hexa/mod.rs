@@ -300,7 +300,12 @@ impl Hexa {
 mod four_bar;
 mod mechanism;
 mod transmission;
+mod workspace;
 
 pub use four_bar::{FourBar, FourBarPose};
 pub use mechanism::{FILE_TOLERANCE, GROUND, HexaFile, HexaFileError};
 pub use transmission::{Indices, forward_jacobian, output_index};
+pub use workspace::{
+    Cylinder, Grid, IndexMap, IndexMapSettings, MAX_CELLS, Progress, Workspace, WorkspaceError,
+    WorkspaceSettings,
+};
