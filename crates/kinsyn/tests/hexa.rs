@@ -379,3 +379,33 @@ fn end_effector_2_is_singular_on_the_mirror_plane_and_the_printed_eq17_misses_it
         );
     }
 }
+
+#[test]
+fn at_the_coupler_curves_double_point_the_pose_leaves_the_four_bar_open() {
+    // Fig. 3(a)'s curve is a figure-eight, symmetric about x = x1 at φ1 = 0 and under
+    // (α, β) → (π − β, π − α) (the four-bar's own mirror), so it crosses itself on x = x1
+    // halfway between its tips P1 and P1 − 60 j: at P1 − 30 j two assemblies pass, mirror
+    // images of each other. `inverse` must keep the one nearest the nominal assembly, and the
+    // choice matters: end-effector 2's Jacobian differs between them.
+    let h = Hexa::paper001();
+    let p1 = Vector3::new(20.0, -10.0, -600.0);
+    let p2 = p1 - Vector3::y() * 30.0;
+    let both = h.four_bar_through(&p1, 0.0, &p2, 1e-9 * h.l);
+    assert_eq!(both.len(), 2, "{both:?}");
+    let nominal = h.nominal_four_bar(&p1, 0.0).unwrap();
+    let conf = h.inverse(&Pose::new(&p1, 0.0, &p2, 0.1)).unwrap();
+    let kept = conf.four_bar.unwrap();
+    let other = both
+        .iter()
+        .find(|f| (f.d3 - kept.d3).norm() > 1e-6)
+        .unwrap();
+    assert!((kept.d3 - nominal.d3).norm() < (other.d3 - nominal.d3).norm());
+    let m_kept = h.end_effector2_jacobian(&conf).unwrap();
+    let m_other = h
+        .end_effector2_jacobian(&kinsyn::hexa::Configuration {
+            four_bar: Some(*other),
+            ..conf
+        })
+        .unwrap();
+    assert!((m_kept - m_other).norm() > 1e-3 * m_kept.norm());
+}

@@ -171,6 +171,20 @@ impl Hexa {
         found
     }
 
+    /// The four-bar's assembly at a pose: through `P2`, and where two pass through it (the
+    /// coupler curve's double point) the one nearest the nominal assembly (by `D3`): a pose `χ`
+    /// fixes `P2` but not always the four-bar. `None` when `P2` is off the coupler curve (by more
+    /// than `1e-9 l`).
+    #[must_use]
+    pub fn four_bar_assembly(&self, pose: &super::Pose) -> Option<FourBarPose> {
+        let (p1, phi1) = (pose.p1(), pose.phi1());
+        let nominal = self.nominal_four_bar(&p1, phi1).map(|f| f.d3);
+        let distance = |f: &FourBarPose| nominal.map_or(0.0, |n| (f.d3 - n).norm());
+        self.four_bar_through(&p1, phi1, &pose.p2(), 1e-9 * self.l)
+            .into_iter()
+            .min_by(|x, y| distance(x).total_cmp(&distance(y)))
+    }
+
     /// The nominal position of end-effector 2: the four-bar's symmetric assembly, cranks hanging
     /// away from end-effector 1 with `β = π − α` and the coupler parallel to the ground link
     /// (`cos α = (d − 2 r4)/(2 r3)`). At `φ1 = 0` it puts `P2` straight below `P1` in `y`

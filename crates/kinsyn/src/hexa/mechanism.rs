@@ -126,13 +126,8 @@ impl Hexa {
         let Some(conf) = self.inverse(reference) else {
             return bad("a limb cannot reach its platform joint (eq. 5 has no real root)".into());
         };
-        let (p1, phi1, p2) = (reference.p1(), reference.phi1(), reference.p2());
-        let assemblies = self.four_bar_through(&p1, phi1, &p2, 1e-9 * self.l);
-        let nominal = self.nominal_four_bar(&p1, phi1).map(|f| f.d3);
-        let Some(fb) = assemblies.iter().min_by(|x, y| {
-            let d = |f: &FourBarPose| nominal.map_or(0.0, |n| (f.d3 - n).norm());
-            d(x).total_cmp(&d(y))
-        }) else {
+        let p2 = reference.p2();
+        let Some(fb) = &conf.four_bar else {
             return bad(format!(
                 "P2 = ({}, {}, {}) is off the four-bar's coupler curve (eqs. 7–8)",
                 p2.x, p2.y, p2.z

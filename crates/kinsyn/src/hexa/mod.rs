@@ -223,7 +223,7 @@ impl Pose {
     }
 }
 
-/// The robot at a pose: both end-effectors and every limb in the working mode
+/// The robot at a pose: both end-effectors, every limb in the working mode and the four-bar
 /// ([`Hexa::inverse`]).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Configuration {
@@ -233,6 +233,9 @@ pub struct Configuration {
     pub joints: [Vector3<f64>; 6],
     /// The limbs, in the working mode.
     pub limbs: [LimbState; 6],
+    /// The four-bar's assembly through `P2` ([`Hexa::four_bar_assembly`]), `None` when `P2` is
+    /// off its coupler curve.
+    pub four_bar: Option<FourBarPose>,
 }
 
 impl Hexa {
@@ -275,8 +278,9 @@ impl Hexa {
     }
 
     /// The inverse geometry of the whole robot (eqs. 4–6): every limb's actuated angle in the
-    /// working mode, or `None` when a limb cannot reach its platform joint. The pose's `P2` is
-    /// not checked against the four-bar ([`Hexa::four_bar_through`] does).
+    /// working mode, and the four-bar's assembly through `P2` ([`Hexa::four_bar_assembly`]); `None`
+    /// when a limb cannot reach its platform joint. A `P2` off the coupler curve leaves
+    /// [`Configuration::four_bar`] empty (and end-effector 2's indices 0).
     #[must_use]
     pub fn inverse(&self, pose: &Pose) -> Option<Configuration> {
         let joints = self.platform_joints(pose);
@@ -293,6 +297,7 @@ impl Hexa {
             pose: *pose,
             joints,
             limbs,
+            four_bar: self.four_bar_assembly(pose),
         })
     }
 }

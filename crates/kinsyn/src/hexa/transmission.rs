@@ -102,15 +102,11 @@ impl Hexa {
     }
 
     /// The velocity of `P2` along the coupler curve with end-effector 1 held, for a unit rate
-    /// of the four-bar's motion (normalised crank rates), or `None` when `P2` is off the
-    /// four-bar or the four-bar is at a change point.
+    /// of the four-bar's motion (normalised crank rates) in the configuration's assembly, or
+    /// `None` when `P2` is off the four-bar or the four-bar is at a change point.
     fn coupler_rate(&self, conf: &Configuration) -> Option<Vector3<f64>> {
-        let (p1, phi1) = (conf.pose.p1(), conf.pose.phi1());
-        let ground = self.four_bar(&p1, phi1);
-        let fb = self
-            .four_bar_through(&p1, phi1, &conf.pose.p2(), 1e-9 * self.l)
-            .into_iter()
-            .next()?;
+        let ground = self.four_bar(&conf.pose.p1(), conf.pose.phi1());
+        let fb = conf.four_bar?;
         // Crank tips move at k × (D − C) per unit crank rate; the coupler keeps its length:
         // g · (ω6 t6 − ω3 t3) = 0, so (ω3, ω6) ∝ (g · t6, g · t3).
         let t3 = Vector3::z().cross(&(fb.d3 - ground.c3));
@@ -124,7 +120,7 @@ impl Hexa {
     /// End-effector 2's Jacobian with end-effector 1 held: rows limbs 4 and 5 (`w_k · ċ_k`),
     /// columns the four-bar's motion (`coupler_rate`) and `φ̇2`. Singular at end-effector 2's
     /// parallel singularities. `None` when `P2` is off the four-bar
-    /// ([`Hexa::four_bar_through`]).
+    /// ([`Configuration::four_bar`]).
     #[must_use]
     pub fn end_effector2_jacobian(&self, conf: &Configuration) -> Option<Matrix2<f64>> {
         let p2_rate = self.coupler_rate(conf)?;
