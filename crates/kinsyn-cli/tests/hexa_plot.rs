@@ -4,6 +4,10 @@
 mod common;
 use common::kinsyn;
 use kinsyn::hexa::{Hexa, WorkspaceSettings};
+use kinsyn::manipulator::file::MultibodyDescription;
+
+/// Paper 001's HEXA as data (the plots read its dimensions from it).
+const HEXA: &str = "mechanisms/6-ruu-hexa.json";
 
 fn run_ok(args: &[&str]) -> String {
     let out = kinsyn(args);
@@ -29,11 +33,28 @@ fn check_figure(dir: &std::path::Path, name: &str) {
 fn the_workspace_figures_and_json_match_the_library() {
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path().to_str().unwrap();
-    let text = run_ok(&["plot", "workspace", "--out", d, "--step", "40", "--json"]);
+    let text = run_ok(&[
+        "plot",
+        "workspace",
+        HEXA,
+        "--out",
+        d,
+        "--step",
+        "40",
+        "--json",
+    ]);
     check_figure(dir.path(), "hexa-workspace");
     check_figure(dir.path(), "hexa-four-bar");
     let v: serde_json::Value = serde_json::from_str(&text).unwrap();
-    let h = Hexa::paper001();
+    // The library on the file's dimensions (read back to about 1e-14 mm: P2 samples binned to
+    // the nearest cell can fall on a cell boundary, so paper001()'s exact 60s may bin a few
+    // cells the other way).
+    let text_file = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../mechanisms/6-ruu-hexa.json"
+    ))
+    .unwrap();
+    let h = Hexa::from_description(&MultibodyDescription::from_json(&text_file).unwrap()).unwrap();
     let w = h
         .workspace(
             &WorkspaceSettings {
@@ -57,6 +78,7 @@ fn the_index_maps_are_written_at_45_degrees() {
     let text = run_ok(&[
         "plot",
         "indices",
+        HEXA,
         "--out",
         d,
         "--phi1",
@@ -86,14 +108,17 @@ fn bad_input_is_one_line_and_exit_2() {
     let file = tempfile::NamedTempFile::new().unwrap();
     let f = file.path().to_str().unwrap();
     for args in [
-        vec!["plot", "workspace", "--step", "0"],
-        vec!["plot", "workspace", "--step", "-5"],
-        vec!["plot", "workspace", "--step", "NaN"],
-        vec!["plot", "workspace", "--step", "0.5"],
-        vec!["plot", "workspace", "--phi1", "400"],
-        vec!["plot", "indices", "--phi2", "inf"],
-        vec!["plot", "indices", "--z", "100"],
-        vec!["plot", "workspace", "--step", "40", "--out", f],
+        vec!["plot", "workspace", HEXA, "--step", "0"],
+        vec!["plot", "workspace", HEXA, "--step", "-5"],
+        vec!["plot", "workspace", HEXA, "--step", "NaN"],
+        vec!["plot", "workspace", HEXA, "--step", "0.5"],
+        vec!["plot", "workspace", HEXA, "--phi1", "400"],
+        vec!["plot", "indices", HEXA, "--phi2", "inf"],
+        vec!["plot", "indices", HEXA, "--z", "100"],
+        vec!["plot", "workspace", HEXA, "--step", "40", "--out", f],
+        // Not a HEXA (docs/hexa.md: the dimensions are read from the file, which must be one).
+        vec!["plot", "workspace", "mechanisms/3-rps.json"],
+        vec!["plot", "indices", "mechanisms/missing.json"],
     ] {
         let out = kinsyn(&args);
         assert_eq!(out.status.code(), Some(2), "{args:?}");

@@ -562,9 +562,12 @@ pub(super) enum PlotCommand {
     /// the positions of end-effector 2 relative to end-effector 1 (the four-bar's coupler
     /// curve); DIR/hexa-workspace.svg/.png and DIR/hexa-four-bar.svg/.png.
     #[command(
-        after_help = "Examples:\n  kinsyn plot workspace --out figures\n  kinsyn plot workspace --phi1 45 --phi2 -45 --step 20 --json"
+        after_help = "Examples:\n  kinsyn plot workspace mechanisms/6-ruu-hexa.json --out figures\n  kinsyn plot workspace mechanisms/6-ruu-hexa.json --phi1 45 --phi2 -45 --step 20 --json"
     )]
     Workspace {
+        /// The HEXA's description, mechanisms/6-ruu-hexa.json or another written by
+        /// `Hexa::description` (its dimensions are read from it; docs/hexa.md).
+        file: PathBuf,
         /// The folder for the figures (created if missing).
         #[arg(long, default_value = ".")]
         out: PathBuf,
@@ -585,9 +588,12 @@ pub(super) enum PlotCommand {
     /// over the regular common workspace at one height, end-effector 2 at the four-bar's
     /// nominal (symmetric) assembly; three banded maps as DIR/hexa-indices.svg/.png.
     #[command(
-        after_help = "Examples:\n  kinsyn plot indices --out figures\n  kinsyn plot indices --phi1 45 --phi2 -45 --json"
+        after_help = "Examples:\n  kinsyn plot indices mechanisms/6-ruu-hexa.json --out figures\n  kinsyn plot indices mechanisms/6-ruu-hexa.json --phi1 45 --phi2 -45 --json"
     )]
     Indices {
+        /// The HEXA's description, mechanisms/6-ruu-hexa.json or another written by
+        /// `Hexa::description` (its dimensions are read from it; docs/hexa.md).
+        file: PathBuf,
         /// The folder for the figures (created if missing).
         #[arg(long, default_value = ".")]
         out: PathBuf,

@@ -12,13 +12,11 @@ use plotters::prelude::*;
 use std::fmt::Write as _;
 use std::path::Path;
 
-/// The geometry the commands draw: paper 001 §4's. The one place to read a description file.
-#[allow(
-    clippy::unnecessary_wraps,
-    reason = "the place a description file will be read, which can fail"
-)]
-fn hexa_geometry() -> Result<Hexa, CliError> {
-    Ok(Hexa::paper001())
+/// The HEXA a description file holds (`Hexa::from_description`: its dimensions read and the
+/// whole file checked against a fresh copy), or a one-line refusal naming the file.
+fn hexa_geometry(file: &Path) -> Result<Hexa, CliError> {
+    let d = super::manipulator::load_description(file)?;
+    Hexa::from_description(&d).map_err(|e| CliError::Input(format!("{}: {e}", file.display())))
 }
 
 /// Registers `DejaVu` Sans as plotters' "sans-serif", once: the PNG figures' text needs no
@@ -139,6 +137,7 @@ macro_rules! svg_and_png {
 /// sections with the regular common workspace, and the positions of end-effector 2 relative to
 /// end-effector 1 (Fig. 3a).
 pub fn workspace(
+    file: &Path,
     out: &Path,
     phi: (f64, f64),
     step_mm: f64,
@@ -151,7 +150,7 @@ pub fn workspace(
         phi2,
         ..WorkspaceSettings::default()
     };
-    let h = hexa_geometry()?;
+    let h = hexa_geometry(file)?;
     h.workspace_grid(settings.step)
         .map_err(|e| input_error(&e))?;
     out_dir(out)?;
@@ -525,7 +524,12 @@ pub struct IndexOptions {
 )]
 /// `kinsyn plot indices`: `λ_min`, `σ` and `ξ_min` over the regular common workspace at one
 /// height (Fig. 4), end-effector 2 at the four-bar's nominal assembly.
-pub fn indices(out: &Path, options: &IndexOptions, as_json: bool) -> Result<String, CliError> {
+pub fn indices(
+    file: &Path,
+    out: &Path,
+    options: &IndexOptions,
+    as_json: bool,
+) -> Result<String, CliError> {
     let (phi1, phi2) = (
         angle("--phi1", options.phi.0)?,
         angle("--phi2", options.phi.1)?,
@@ -537,7 +541,7 @@ pub fn indices(out: &Path, options: &IndexOptions, as_json: bool) -> Result<Stri
         phi2,
         ..WorkspaceSettings::default()
     };
-    let h = hexa_geometry()?;
+    let h = hexa_geometry(file)?;
     h.workspace_grid(settings.step)
         .map_err(|e| input_error(&e))?;
     if let Some(z) = options.z

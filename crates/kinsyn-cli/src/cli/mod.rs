@@ -268,13 +268,15 @@ fn execute(command: Command) -> Result<String, CliError> {
             json: as_json,
         }) => plot::trajectory(&out, steps, as_json),
         Command::Plot(args::PlotCommand::Workspace {
+            file,
             out,
             phi1,
             phi2,
             step,
             json: as_json,
-        }) => hexa_plot::workspace(&out, (phi1, phi2), step, as_json),
+        }) => hexa_plot::workspace(&file, &out, (phi1, phi2), step, as_json),
         Command::Plot(args::PlotCommand::Indices {
+            file,
             out,
             phi1,
             phi2,
@@ -283,6 +285,7 @@ fn execute(command: Command) -> Result<String, CliError> {
             workspace_step,
             json: as_json,
         }) => hexa_plot::indices(
+            &file,
             &out,
             &hexa_plot::IndexOptions {
                 phi: (phi1, phi2),
