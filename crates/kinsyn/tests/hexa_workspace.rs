@@ -168,9 +168,12 @@ fn indices_lie_in_0_1_and_vanish_with_the_finite_difference_determinants() {
             pairs.push((ind.xi_min(), xi_fd, j2_ratio));
         }
         // Where ξ_min = 0 both determinants vanish (end_effector2_jacobian's and the
-        // finite-difference one of the inverse geometry). Away from zero the two are NOT
-        // monotone in ξ_min (a cell with ξ_min = 0.004 has a finite-difference ratio of 0.83):
-        // reported as an open doubt (four_bar_through may pick the other assembly through P2).
+        // finite-difference one of the inverse geometry). Away from zero they are not functions
+        // of ξ_min, nor should they be: a normalised determinant depends on the columns' units
+        // (a crank angle against φ2), and ξ_k is the cosine between the limb's force w_k, mostly
+        // vertical, and the horizontal motion of C_k, so a cell can have ξ_min = 0.004 and a
+        // ratio of 0.83. ξ itself is checked against a position-level method in tests/hexa.rs
+        // (`xi_is_the_pressure_angle_found_by_moving_the_robot`).
         let mut zero_xi = 0;
         for (xi, xi_fd, j2) in &pairs {
             if *xi < 1e-9 {
