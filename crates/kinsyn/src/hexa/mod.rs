@@ -119,11 +119,15 @@ impl Hexa {
     /// closes (`|c − b_i| = l`, eq. 4) where `I cos θ + J sin θ + K = 0`.
     #[must_use]
     pub fn coefficients(&self, i: usize, c: &Vector3<f64>) -> (f64, f64, f64) {
-        let m = c - self.base_joint(i);
-        let (s, co) = mu(i).sin_cos();
+        self.coefficients_of(&(c - self.base_joint(i)), mu(i).sin_cos())
+    }
+
+    /// Eq. 5's `(I, J, K)` for `m = c − a_i` and `(sin μ_i, cos μ_i)`.
+    #[must_use]
+    pub fn coefficients_of(&self, m: &Vector3<f64>, (s, c): (f64, f64)) -> (f64, f64, f64) {
         (
             -2.0 * self.b * m.z,
-            2.0 * self.b * (m.x * s - m.y * co),
+            2.0 * self.b * (m.x * s - m.y * c),
             m.norm_squared() + self.b * self.b - self.l * self.l,
         )
     }

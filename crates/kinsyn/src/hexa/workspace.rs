@@ -364,6 +364,45 @@ fn count(x: f64, step: f64) -> Result<usize, WorkspaceError> {
     Ok(n.max(0.0) as usize)
 }
 
+/// Eq. 5's reach test with everything that does not depend on the platform's position worked
+/// out once: the base joints `a_i`, `(sin μ_i, cos μ_i)`, and the platform joints' offsets from
+/// `P1` at `φ1` and from `P2` at `φ2`. Limb `i` reaches `c` where `I² + J² ≥ K²`.
+struct Reach {
+    hexa: Hexa,
+    base: [Vector3<f64>; 6],
+    mu: [(f64, f64); 6],
+    offsets: [Vector3<f64>; 6],
+}
+
+impl Reach {
+    fn new(h: &Hexa, phi1: f64, phi2: f64) -> Self {
+        let origin = Vector3::zeros();
+        let offsets = h.platform_joints(&Pose::new(&origin, phi1, &origin, phi2));
+        Self {
+            base: std::array::from_fn(|i| h.base_joint(i)),
+            mu: std::array::from_fn(|i| super::mu(i).sin_cos()),
+            offsets,
+            hexa: *h,
+        }
+    }
+
+    /// Whether limb `i` reaches the platform joint of the platform point `p` (eq. 5).
+    fn limb(&self, i: usize, p: &Vector3<f64>) -> bool {
+        let (ii, jj, kk) = self
+            .hexa
+            .coefficients_of(&(p + self.offsets[i] - self.base[i]), self.mu[i]);
+        ii * ii + jj * jj >= kk * kk
+    }
+
+    fn end_effector1(&self, p1: &Vector3<f64>) -> bool {
+        [0, 1, 2, 5].into_iter().all(|i| self.limb(i, p1))
+    }
+
+    fn end_effector2(&self, p2: &Vector3<f64>) -> bool {
+        self.limb(3, p2) && self.limb(4, p2)
+    }
+}
+
 impl Hexa {
     /// The half-width `H` of the search grid in `x` and `y` (module documentation): no
     /// reachable `P1` or `P2` is farther from the `z` axis.
@@ -404,17 +443,13 @@ impl Hexa {
     /// Whether limbs 4 and 5 reach end-effector 2 at `(p2, φ2)` (eq. 5 has real roots).
     #[must_use]
     pub fn reaches_end_effector2(&self, p2: &Vector3<f64>, phi2: f64) -> bool {
-        let joints = self.platform_joints(&Pose::new(p2, 0.0, p2, phi2));
-        self.inverse_limb(3, &joints[3]).is_some() && self.inverse_limb(4, &joints[4]).is_some()
+        Reach::new(self, 0.0, phi2).end_effector2(p2)
     }
 
     /// Whether limbs 1, 2, 3 and 6 reach end-effector 1 at `(p1, φ1)`.
     #[must_use]
     pub fn reaches_end_effector1(&self, p1: &Vector3<f64>, phi1: f64) -> bool {
-        let joints = self.platform_joints(&Pose::new(p1, phi1, p1, 0.0));
-        [0, 1, 2, 5]
-            .into_iter()
-            .all(|i| self.inverse_limb(i, &joints[i]).is_some())
+        Reach::new(self, phi1, 0.0).end_effector1(p1)
     }
 
     /// The coupler curve's points `P2` with end-effector 1 at `(p1, φ1)`: `samples` evenly
@@ -481,6 +516,9 @@ impl Hexa {
         let rows = side * grid.layers;
         let done = AtomicUsize::new(0);
         // Each row (j, k): its reachable P1 cells and the P2 cells they reach.
+        let reach = Reach::new(self, settings.phi1, settings.phi2);
+        // The coupler curve relative to P1 depends on φ1 only (the sub-platforms translate).
+        let curve = self.coupler_points(&Vector3::zeros(), settings.phi1, settings.curve_samples);
         let found: Vec<(Vec<usize>, Vec<usize>)> = (0..rows)
             .into_par_iter()
             .map(|row| {
@@ -489,12 +527,13 @@ impl Hexa {
                 let mut twos = Vec::new();
                 for i in 0..side {
                     let p1 = grid.centre(i, j, k);
-                    if !self.reaches_end_effector1(&p1, settings.phi1) {
+                    if !reach.end_effector1(&p1) {
                         continue;
                     }
                     let before = twos.len();
-                    for p2 in self.coupler_points(&p1, settings.phi1, settings.curve_samples) {
-                        if self.reaches_end_effector2(&p2, settings.phi2)
+                    for offset in &curve {
+                        let p2 = p1 + offset;
+                        if reach.end_effector2(&p2)
                             && let Some((a, b, c)) = grid.nearest(&p2)
                         {
                             twos.push(grid.index(a, b, c));
@@ -502,6 +541,16 @@ impl Hexa {
                     }
                     if twos.len() > before {
                         ones.push(grid.index(i, j, k));
+                        // One P1's curve falls in a few cells: keep each once.
+                        twos[before..].sort_unstable();
+                        let mut kept = before;
+                        for n in before..twos.len() {
+                            if n == before || twos[n] != twos[kept - 1] {
+                                twos[kept] = twos[n];
+                                kept += 1;
+                            }
+                        }
+                        twos.truncate(kept);
                     }
                 }
                 progress(done.fetch_add(1, Ordering::Relaxed) + 1, rows);
