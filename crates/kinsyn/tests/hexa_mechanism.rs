@@ -525,3 +525,46 @@ fn sub_mechanisms_keep_the_legs_listed_and_the_bodies_they_join() {
     let e = d.with_legs(&[4], Some("lower1")).unwrap_err().to_string();
     assert!(e.starts_with("the body \"lower1\" is not joined"), "{e}");
 }
+
+#[test]
+fn where_sigma_vanishes_the_locked_mechanism_lets_end_effector_1_move() {
+    // σ (eq. 16) is 0 where (w1 × w6) × (w2 × w3) ⟂ Q1 j (eq. 15: det A1 = 0). Found by bisection
+    // in y (x1 = 30 mm, z = −420 mm, φ = 0, P2 nominal: σ falls from 0.8 at y = 0 through 0 near
+    // y = 425 mm, beyond the regular workspace but inside the reachable one), that pose is a
+    // parallel singularity of end-effector 1: the general machinery, with inputs 1, 2, 3, 6
+    // locked, must give the mechanism one more freedom there (3: the four-bar, φ2 and a motion
+    // of end-effector 1) than at a regular pose (2) — an independent check of σ's zero.
+    let m = hexa_mechanism();
+    let h = Hexa::paper001();
+    let signed = |y: f64| {
+        let pose = pose_on_four_bar([30.0, y, -420.0], 0.0, 0.0, 0.0);
+        let conf = h.inverse(&pose).unwrap();
+        let w: [Vector3<f64>; 6] = std::array::from_fn(|i| conf.limbs[i].w);
+        w[0].cross(&w[5])
+            .cross(&w[1].cross(&w[2]))
+            .dot(&Vector3::y())
+    };
+    let (mut lo, mut hi) = (350.0, 450.0);
+    assert!(signed(lo) * signed(hi) < 0.0);
+    for _ in 0..60 {
+        let mid = 0.5 * (lo + hi);
+        if signed(lo) * signed(mid) <= 0.0 {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+    let y0 = 0.5 * (lo + hi);
+    let locked = [0, 1, 2, 5];
+    for (y, sigma_zero) in [(y0, true), (150.0, false)] {
+        let (q, pose) = assemble(&m, ([30.0, y, -420.0], 0.0, 0.0, 0.0), 8);
+        let sigma = h.indices(&h.inverse(&pose).unwrap()).sigma;
+        assert_eq!(sigma < 1e-9, sigma_zero, "σ = {sigma} at y = {y}");
+        let mobility = m.mechanism().mobility(&q, &m.lock_mask(&locked));
+        assert_eq!(
+            mobility.dof,
+            if sigma_zero { 3 } else { 2 },
+            "y = {y}, σ = {sigma}"
+        );
+    }
+}
