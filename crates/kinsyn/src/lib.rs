@@ -34,6 +34,7 @@ pub mod notation;
 pub mod paper;
 pub mod poly;
 pub mod ruu;
+pub mod schematic;
 pub mod screw;
 pub mod series;
 pub mod spatial;

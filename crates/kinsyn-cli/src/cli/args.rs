@@ -465,6 +465,16 @@ pub(super) enum CatalogueCommand {
         #[command(flatten)]
         reading: Reading,
     },
+    /// Write a static, browsable site of the catalogue: an index with filters (pattern, family,
+    /// lock count: `kinsyn query`'s rows), and a page per entry with its lock table and a
+    /// schematic of its chain. No server or network needed: open DIR/index.html.
+    Site {
+        /// Folder to write into (created if missing; the site's files in it are replaced).
+        #[arg(long)]
+        out: PathBuf,
+        #[command(flatten)]
+        reading: Reading,
+    },
     /// The entries the numerical check rejects (not 3T3R), with rank, singular values and idle
     /// joints (the table kept in docs/deviations.md).
     Rejected {

@@ -15,6 +15,7 @@ mod hexa_plot;
 mod manipulator;
 mod notation;
 mod plot;
+mod site;
 mod solve;
 mod terminal;
 
