@@ -27,12 +27,26 @@ const JS: &str = include_str!("site/site.js");
 pub(super) fn site(out: &Path, reading: &Reading) -> Result<String, CliError> {
     let cat = reading.catalogue()?;
     let entry_dir = out.join("entry");
-    std::fs::create_dir_all(&entry_dir)?;
-    std::fs::write(out.join("site.css"), CSS)?;
-    std::fs::write(out.join("site.js"), JS)?;
-    std::fs::write(out.join("index.html"), index(&cat))?;
+    let written = |path: &Path, r: std::io::Result<()>| {
+        r.map_err(|e| {
+            CliError::Io(std::io::Error::new(
+                e.kind(),
+                format!("cannot write {}: {e}", path.display()),
+            ))
+        })
+    };
+    written(&entry_dir, std::fs::create_dir_all(&entry_dir))?;
+    for (name, text) in [
+        ("site.css", CSS.to_string()),
+        ("site.js", JS.to_string()),
+        ("index.html", index(&cat)),
+    ] {
+        let path = out.join(name);
+        written(&path, std::fs::write(&path, text))?;
+    }
     for e in &cat.entries {
-        std::fs::write(entry_dir.join(format!("{}.html", e.id)), entry_page(e)?)?;
+        let path = entry_dir.join(format!("{}.html", e.id));
+        written(&path, std::fs::write(&path, entry_page(e)?))?;
     }
     Ok(format!(
         "wrote the catalogue site ({} entries) to {}; open {}\n",
