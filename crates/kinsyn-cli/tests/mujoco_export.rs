@@ -35,7 +35,9 @@ fn mujoco_available() -> bool {
             std::env::var_os("CI").is_none(),
             "CI is set but `python3 -c 'import mujoco, numpy'` fails: install them (pip install mujoco numpy)"
         );
-        eprintln!("notice: python3 with mujoco and numpy not found; the MuJoCo export test is skipped");
+        eprintln!(
+            "notice: python3 with mujoco and numpy not found; the MuJoCo export test is skipped"
+        );
     }
     ok
 }
@@ -49,7 +51,12 @@ fn labels(m: &Manipulator) -> Vec<String> {
     let mut out = vec![String::new(); m.mechanism().joints().len()];
     for (l, leg) in m.legs().iter().enumerate() {
         for (k, j) in leg.joints.clone().enumerate() {
-            out[j] = format!("{}{}.{}", m.mechanism().joints()[j].kind.letter(), l + 1, k + 1);
+            out[j] = format!(
+                "{}{}.{}",
+                m.mechanism().joints()[j].kind.letter(),
+                l + 1,
+                k + 1
+            );
         }
     }
     out
@@ -58,7 +65,11 @@ fn labels(m: &Manipulator) -> Vec<String> {
 /// Exports `file`, solves kinsyn's inverse kinematics for `goal`, and checks in MuJoCo that the
 /// inputs found put the end-effector where kinsyn says; `expect` checks kinsyn's pose against
 /// the goal's own terms first. Returns MuJoCo's measurements.
-fn check(file: &str, goal: PlatformGoal, expect: impl Fn(&nalgebra::IsometryMatrix3<f64>)) -> serde_json::Value {
+fn check(
+    file: &str,
+    goal: PlatformGoal,
+    expect: impl Fn(&nalgebra::IsometryMatrix3<f64>),
+) -> serde_json::Value {
     let text = std::fs::read_to_string(repo().join(file)).unwrap();
     let m = Manipulator::from_json(&text).unwrap();
     let request = PositionRequest {
@@ -66,7 +77,10 @@ fn check(file: &str, goal: PlatformGoal, expect: impl Fn(&nalgebra::IsometryMatr
         ..PositionRequest::default()
     };
     let reached = m.solve_position(&m.reference(), &request).unwrap();
-    assert!(reached.continuous, "{file}: kinsyn left the reference's branch");
+    assert!(
+        reached.continuous,
+        "{file}: kinsyn left the reference's branch"
+    );
     let q = reached.q;
     let frame = m.body_frame(m.end_effector(), &q);
     expect(&frame);
@@ -148,7 +162,11 @@ fn three_prrr_translates_to_the_point_its_inputs_give() {
     if !mujoco_available() {
         return;
     }
-    let goal = [(Coordinate::X, 0.04), (Coordinate::Y, -0.03), (Coordinate::Z, 1.05)];
+    let goal = [
+        (Coordinate::X, 0.04),
+        (Coordinate::Y, -0.03),
+        (Coordinate::Z, 1.05),
+    ];
     check(
         "mechanisms/3-prrr.json",
         PlatformGoal::Coordinates(goal.to_vec()),
@@ -166,7 +184,11 @@ fn three_rps_reaches_the_height_and_tilts_its_inputs_give() {
         return;
     }
     let (z, rx, ry) = (1.06, 4f64.to_radians(), -3f64.to_radians());
-    let goal = [(Coordinate::Z, z), (Coordinate::Rx, rx), (Coordinate::Ry, ry)];
+    let goal = [
+        (Coordinate::Z, z),
+        (Coordinate::Rx, rx),
+        (Coordinate::Ry, ry),
+    ];
     check(
         "mechanisms/3-rps.json",
         PlatformGoal::Coordinates(goal.to_vec()),
@@ -176,4 +198,75 @@ fn three_rps_reaches_the_height_and_tilts_its_inputs_give() {
             assert!((r.x - rx).abs() < 1e-9 && (r.y - ry).abs() < 1e-9);
         },
     );
+}
+
+#[test]
+fn a_loop_of_sliders_is_closed_by_a_welded_slider() {
+    let file = "crates/kinsyn-cli/tests/mujoco/2-ppp.json";
+    let m = Manipulator::from_json(&std::fs::read_to_string(repo().join(file)).unwrap()).unwrap();
+    // Six sliders in one loop: the tree keeps the three inputs and two passive sliders, and
+    // the last passive slider (leg 2's third, P2.3) closes the loop on a welded extra body.
+    let tree = ExportTree::new(&m);
+    assert_eq!(tree.chords, vec![(5, ChordClosure::Weld)]);
+    if !mujoco_available() {
+        return;
+    }
+    let goal = [
+        (Coordinate::X, 0.04),
+        (Coordinate::Y, -0.03),
+        (Coordinate::Z, 1.05),
+    ];
+    check(file, PlatformGoal::Coordinates(goal.to_vec()), |g| {
+        assert!(g.rotation.angle() < 1e-12);
+        assert!((g.translation.vector - Vector3::new(0.04, -0.03, 1.05)).norm() < 1e-12);
+    });
+}
+
+#[test]
+fn revolute_chords_are_connected_on_their_axes() {
+    // The 6-UPS: 36 joints, 32 bodies, so 5 loops; the six sliders (the inputs) are in the
+    // tree and every loop is closed by a passive revolute, as two connects.
+    let text = std::fs::read_to_string(repo().join("mechanisms/6-ups.json")).unwrap();
+    let m = Manipulator::from_json(&text).unwrap();
+    let tree = ExportTree::new(&m);
+    assert_eq!(tree.chords.len(), 5);
+    for &(j, closure) in &tree.chords {
+        assert_eq!(closure, ChordClosure::Connect);
+        assert!(m.actuators().iter().all(|a| a.joint != j));
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let xml = dir.path().join("6-ups.xml");
+    let o = common::kinsyn(&[
+        "export",
+        "mechanisms/6-ups.json",
+        "--mjcf",
+        xml.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", common::stderr(&o));
+    let text = std::fs::read_to_string(&xml).unwrap();
+    assert_eq!(text.matches("<connect ").count(), 10);
+    assert_eq!(text.matches("<joint ").count(), 31);
+    assert_eq!(text.matches("<position ").count(), 6);
+    assert!(text.contains("gravity=\"0 0 0\""));
+}
+
+#[test]
+fn export_refuses_a_missing_file_and_an_unwritable_output() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("out.xml");
+    let o = common::kinsyn(&["export", "no-such.json", "--mjcf", out.to_str().unwrap()]);
+    common::assert_refused(&o, "missing file", &["no-such.json"]);
+    let o = common::kinsyn(&["export", "mechanisms/3-rps.json"]);
+    common::assert_refused(&o, "no --mjcf", &["--mjcf"]);
+    // An output in a directory that does not exist: an environment error (exit 1), in one line.
+    let bad = dir.path().join("missing-dir/out.xml");
+    let o = common::kinsyn(&[
+        "export",
+        "mechanisms/3-rps.json",
+        "--mjcf",
+        bad.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(1), "{}", common::stderr(&o));
+    assert_eq!(common::stderr(&o).lines().count(), 1);
+    assert!(common::stderr(&o).contains("missing-dir/out.xml"));
 }

@@ -386,10 +386,16 @@ impl<'a> Export<'a> {
     ) {
         let spec = &self.m.mechanism().joints()[joint];
         let axis = frame.rotation.inverse() * (spec.axis * sign);
-        let point = frame.inverse_transform_point(&Point3::from(spec.point)).coords;
+        let point = frame
+            .inverse_transform_point(&Point3::from(spec.point))
+            .coords;
         let l2 = self.scale * self.scale;
         let (kind, damping, armature) = match spec.kind {
-            Primitive::R => ("hinge", JOINT_DAMPING * l2 * LINK_MASS, 0.01 * LINK_MASS * l2),
+            Primitive::R => (
+                "hinge",
+                JOINT_DAMPING * l2 * LINK_MASS,
+                0.01 * LINK_MASS * l2,
+            ),
             Primitive::P => ("slide", JOINT_DAMPING * LINK_MASS, 0.01 * LINK_MASS),
         };
         let _ = writeln!(
