@@ -1,4 +1,5 @@
 //! `kinsyn export`: a manipulator written out for a simulator (docs/export.md).
+#![allow(clippy::doc_markdown, reason = "MuJoCo is a name, not code")]
 
 use super::CliError;
 use std::path::Path;
