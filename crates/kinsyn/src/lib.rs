@@ -29,6 +29,7 @@ mod linalg;
 pub mod lockset;
 pub mod manipulator;
 pub mod mechanism;
+pub mod mjcf;
 pub mod motion;
 pub mod notation;
 pub mod paper;

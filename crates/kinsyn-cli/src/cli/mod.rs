@@ -10,6 +10,7 @@ mod args;
 mod catalogue;
 mod components;
 mod configurable;
+mod export;
 mod files;
 mod hexa_plot;
 mod manipulator;
@@ -302,6 +303,7 @@ fn execute(command: Command) -> Result<String, CliError> {
             heights,
             output,
         } => manipulator::stack_command(&modules, radii, heights, output.as_deref()),
+        Command::Export { file, mjcf } => export::mjcf(&file, &mjcf),
     }
 }
 
