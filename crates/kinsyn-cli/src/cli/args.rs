@@ -335,10 +335,6 @@ pub(super) enum Command {
     /// The mechanism's spanning tree becomes nested bodies with hinge and slide joints, each
     /// loop-closing joint an equality constraint, each input a position servo whose ctrl is
     /// kinsyn's input value; qpos0 is the reference configuration, gravity is off.
-    #[allow(
-        clippy::doc_markdown,
-        reason = "MuJoCo is a name in the help text, not code"
-    )]
     #[command(after_help = "Examples:\n  kinsyn export mechanisms/6-ups.json --mjcf 6-ups.xml")]
     Export {
         /// The manipulator description (kinsyn-manipulator/1 or /2).

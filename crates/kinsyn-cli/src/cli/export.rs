@@ -1,5 +1,4 @@
 //! `kinsyn export`: a manipulator written out for a simulator (docs/export.md).
-#![allow(clippy::doc_markdown, reason = "MuJoCo is a name, not code")]
 
 use super::CliError;
 use std::path::Path;
