@@ -8,7 +8,6 @@
 //! where they put it. Needs python3 with `mujoco` and `numpy`; without them the test prints a
 //! notice and passes, unless the environment variable `CI` is set.
 
-
 mod common;
 
 use kinsyn::manipulator::{Manipulator, PlatformGoal, PositionRequest};

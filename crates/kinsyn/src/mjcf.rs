@@ -28,7 +28,6 @@
 //! [`LINK_MASS`]; servo gains and joint damping are scaled by the characteristic length so that
 //! a description in millimetres moves as the same one in metres.
 
-
 use crate::manipulator::Manipulator;
 use crate::notation::Primitive;
 use crate::spatial::Displacement;
