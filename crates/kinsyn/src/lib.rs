@@ -28,6 +28,7 @@ pub mod homotopy;
 mod linalg;
 pub mod lockset;
 pub mod manipulator;
+pub mod markup;
 pub mod mechanism;
 pub mod mjcf;
 pub mod motion;

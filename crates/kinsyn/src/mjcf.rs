@@ -29,6 +29,7 @@
 //! a description in millimetres moves as the same one in metres.
 
 use crate::manipulator::Manipulator;
+use crate::markup::escape;
 use crate::notation::Primitive;
 use crate::spatial::Displacement;
 use nalgebra::{Point3, UnitQuaternion, Vector3};
@@ -498,21 +499,4 @@ fn join(values: &[f64]) -> String {
         .map(f64::to_string)
         .collect::<Vec<_>>()
         .join(" ")
-}
-
-/// Text safe inside an XML attribute.
-fn escape(text: &str) -> String {
-    let mut out = String::with_capacity(text.len());
-    for c in text.chars() {
-        match c {
-            '&' => out.push_str("&amp;"),
-            '<' => out.push_str("&lt;"),
-            '>' => out.push_str("&gt;"),
-            '"' => out.push_str("&quot;"),
-            '\'' => out.push_str("&apos;"),
-            c if c.is_control() => out.push(' '),
-            c => out.push(c),
-        }
-    }
-    out
 }

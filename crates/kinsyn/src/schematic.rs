@@ -413,22 +413,7 @@ fn sphere_slot(s: &mut String, x: f64, colour: &str, fill: &str) {
     );
 }
 
-/// Text escaped for XML and HTML (element content and quoted attributes).
-#[must_use]
-pub fn escape(text: &str) -> String {
-    let mut out = String::with_capacity(text.len());
-    for c in text.chars() {
-        match c {
-            '&' => out.push_str("&amp;"),
-            '<' => out.push_str("&lt;"),
-            '>' => out.push_str("&gt;"),
-            '"' => out.push_str("&quot;"),
-            '\'' => out.push_str("&#39;"),
-            c => out.push(c),
-        }
-    }
-    out
-}
+pub use crate::markup::escape;
 
 #[cfg(test)]
 mod tests {

@@ -85,6 +85,23 @@ pub struct Verification {
     pub patterns: BTreeMap<PatternName, Vec<LockSet>>,
 }
 
+impl Verification {
+    /// The check in words: the rank at every sample, the gap to a rank drop, the idle joints.
+    #[must_use]
+    pub fn summary(&self) -> String {
+        format!(
+            "rank {} at every sample, smallest kept singular value {:.3e} of the largest{}",
+            self.rank,
+            self.gap,
+            if self.idle_joints.is_empty() {
+                String::new()
+            } else {
+                format!("; idle joints {:?}", self.idle_joints)
+            }
+        )
+    }
+}
+
 /// Rounds to `digits` significant digits, so that files do not carry floating-point noise.
 #[must_use]
 pub fn round_significant(x: f64, digits: i32) -> f64 {

@@ -427,15 +427,9 @@ fn describe(cat: &Catalogue, e: &Entry) -> String {
     if let Some(v) = &e.verification {
         let _ = writeln!(
             s,
-            "verified     {} (rank {} at every sample, smallest kept singular value {:.3e} of the largest{})",
+            "verified     {} ({})",
             if v.is_3t3r { "3T3R" } else { "NOT 3T3R" },
-            v.rank,
-            v.gap,
-            if v.idle_joints.is_empty() {
-                String::new()
-            } else {
-                format!("; idle joints {:?}", v.idle_joints)
-            }
+            v.summary()
         );
         let sv: Vec<String> = v
             .singular_values

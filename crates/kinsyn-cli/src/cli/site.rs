@@ -280,15 +280,9 @@ fn entry_page(e: &Entry) -> Result<String, CliError> {
         fact(
             "verification",
             &format!(
-                "<span class=\"status\">{}</span>: rank {} at every sample, smallest kept singular value {:.3e} of the largest{}",
+                "<span class=\"status\">{}</span>: {}",
                 status(e),
-                v.rank,
-                v.gap,
-                if v.idle_joints.is_empty() {
-                    String::new()
-                } else {
-                    format!("; idle joints {:?}", v.idle_joints)
-                }
+                escape(&v.summary())
             ),
         );
         locks = lock_table(v);
