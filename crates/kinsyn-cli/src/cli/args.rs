@@ -330,6 +330,19 @@ pub(super) enum Command {
         #[arg(long, short)]
         output: Option<PathBuf>,
     },
+    /// Export a manipulator to a simulator: a MuJoCo MJCF model (docs/export.md).
+    ///
+    /// The mechanism's spanning tree becomes nested bodies with hinge and slide joints, each
+    /// loop-closing joint an equality constraint, each input a position servo whose ctrl is
+    /// kinsyn's input value; qpos0 is the reference configuration, gravity is off.
+    #[command(after_help = "Examples:\n  kinsyn export mechanisms/6-ups.json --mjcf 6-ups.xml")]
+    Export {
+        /// The manipulator description (kinsyn-manipulator/1 or /2).
+        file: PathBuf,
+        /// Write the MuJoCo model (MJCF XML) to this file.
+        #[arg(long, required = true)]
+        mjcf: PathBuf,
+    },
 }
 
 /// The geometry and legs of `kinsyn build` (docs/mechanism-format.md).
@@ -462,6 +475,16 @@ pub(super) enum CatalogueCommand {
         /// Print JSON instead of text.
         #[arg(long)]
         json: bool,
+        #[command(flatten)]
+        reading: Reading,
+    },
+    /// Write a static, browsable site of the catalogue: an index with filters (pattern, family,
+    /// lock count: `kinsyn query`'s rows), and a page per entry with its lock table and a
+    /// schematic of its chain. No server or network needed: open DIR/index.html.
+    Site {
+        /// Folder to write into (created if missing; the site's files in it are replaced).
+        #[arg(long)]
+        out: PathBuf,
         #[command(flatten)]
         reading: Reading,
     },

@@ -141,6 +141,7 @@ pub(super) fn catalogue(command: CatalogueCommand) -> Result<String, CliError> {
             json: as_json,
             reading,
         } => list(family.as_deref(), table, &reading, as_json),
+        CatalogueCommand::Site { out, reading } => super::site::site(&out, &reading),
         CatalogueCommand::Rejected { reading } => Ok(reading.catalogue()?.not_3t3r_markdown()),
         CatalogueCommand::Show {
             query,

@@ -10,11 +10,13 @@ mod args;
 mod catalogue;
 mod components;
 mod configurable;
+mod export;
 mod files;
 mod hexa_plot;
 mod manipulator;
 mod notation;
 mod plot;
+mod site;
 mod solve;
 mod terminal;
 
@@ -301,6 +303,7 @@ fn execute(command: Command) -> Result<String, CliError> {
             heights,
             output,
         } => manipulator::stack_command(&modules, radii, heights, output.as_deref()),
+        Command::Export { file, mjcf } => export::mjcf(&file, &mjcf),
     }
 }
 
