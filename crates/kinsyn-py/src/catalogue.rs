@@ -1,7 +1,7 @@
 //! The catalogue of paper 000 §2 (the committed one, as `kinsyn catalogue list`) and its
 //! queries by motion pattern (as `kinsyn query`).
 
-use crate::error::Error;
+use crate::error::{Error, py_err};
 use kinsyn::catalogue::Catalogue;
 use kinsyn::motion::PatternQuery;
 use kinsyn::synthesis::tables;
@@ -19,7 +19,7 @@ fn committed() -> Result<Catalogue, Error> {
 /// Every catalogue entry, as `kinsyn catalogue list --json`.
 #[pyfunction]
 pub fn catalogue_json() -> PyResult<String> {
-    let cat = committed()?;
+    let cat = committed().map_err(py_err)?;
     Ok(serde_json::to_string(&cat.entries).expect("serialisable"))
 }
 
@@ -28,20 +28,23 @@ pub fn catalogue_json() -> PyResult<String> {
 #[pyfunction]
 #[pyo3(signature = (pattern, max_locks = 6, family = None))]
 pub fn query_json(pattern: &str, max_locks: usize, family: Option<&str>) -> PyResult<String> {
-    let q: PatternQuery = pattern.parse().map_err(|e| Error::Input(format!("{e}")))?;
+    let q: PatternQuery = pattern
+        .parse()
+        .map_err(|e| py_err(Error::Input(format!("{e}"))))?;
     if let Some(f) = family
         && !tables::families().contains(&f)
     {
-        return Err(Error::Input(format!(
+        return Err(py_err(Error::Input(format!(
             "unknown family {f:?}; the families are {}",
             tables::families().join(", ")
-        ))
-        .into());
+        ))));
     }
     if max_locks > 6 {
-        return Err(Error::Input(format!("--max-locks {max_locks}: a leg has six joints")).into());
+        return Err(py_err(Error::Input(format!(
+            "--max-locks {max_locks}: a leg has six joints"
+        ))));
     }
-    let cat = committed()?;
+    let cat = committed().map_err(py_err)?;
     let rows: Vec<serde_json::Value> = cat
         .query(&q, max_locks, family)
         .iter()

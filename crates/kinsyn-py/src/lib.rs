@@ -7,9 +7,7 @@
 
 mod catalogue;
 mod error;
-mod input;
 mod manipulator;
-mod report;
 mod solve;
 
 use pyo3::prelude::*;
