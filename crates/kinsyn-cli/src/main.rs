@@ -1,7 +1,5 @@
-//! The `kinsyn` command line. See `kinsyn --help`.
-
-mod cli;
+//! The `kinsyn` command line. See `kinsyn --help`; the command is [`kinsyn_cli::run`].
 
 fn main() {
-    std::process::exit(cli::run());
+    std::process::exit(kinsyn_cli::run());
 }

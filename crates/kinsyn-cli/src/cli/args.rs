@@ -398,10 +398,6 @@ impl From<BuildArgs> for kinsyn::manipulator::build::BuildSpec {
     }
 }
 
-/// The most `--samples` per motion: 64 walks, about 20 times the default cost of a subset,
-/// far more evidence than a group claim needs (two samples 1e-3 apart, docs/verification.md).
-pub(super) const MAX_SAMPLES: i64 = 64;
-
 /// How finite motion is sampled (seeded, reproducible).
 #[derive(Debug, Args)]
 pub(super) struct Sampling {
@@ -411,7 +407,7 @@ pub(super) struct Sampling {
     /// Configurations sampled per motion, 2 to 64: a group is recognised by its twist space
     /// staying the same at samples at least 1e-3 apart; each sample is a random walk, so a
     /// subset's cost grows in proportion.
-    #[arg(long, default_value_t = 3, value_parser = clap::value_parser!(u16).range(2..=MAX_SAMPLES))]
+    #[arg(long, default_value_t = 3, value_parser = clap::value_parser!(u16).range(2..=i64::from(super::manipulator::MAX_SAMPLES)))]
     pub(super) samples: u16,
 }
 

@@ -11,7 +11,11 @@ pub const MAX_FILE_BYTES: u64 = 1 << 20;
 /// The text of `path`. A path that is not a regular file, a file over [`MAX_FILE_BYTES`]
 /// (checked on the metadata and again while reading) or bytes that are not UTF-8 are refused
 /// as `FILE is NOT_WHAT (why)`, e.g. "not a kinsyn manipulator file"; a missing file is
-/// `FILE: No such file or directory`. All are input errors (exit 2).
+/// `FILE: No such file or directory`.
+///
+/// # Errors
+///
+/// Those refusals, as [`CliError::Input`] (exit 2).
 pub fn read_text(path: &Path, not_what: &str) -> Result<String, CliError> {
     let shown = path.display();
     let refuse = |why: String| CliError::Input(format!("{shown} is {not_what} ({why})"));

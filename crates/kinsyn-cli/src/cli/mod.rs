@@ -11,23 +11,30 @@ mod catalogue;
 mod components;
 mod configurable;
 mod export;
-mod files;
+pub mod files;
 mod hexa_plot;
-mod manipulator;
+pub mod manipulator;
 mod notation;
 mod plot;
 mod site;
-mod solve;
-mod terminal;
+pub mod solve;
+pub mod terminal;
+
+/// The error type under its name inside the command's modules.
+use Error as CliError;
 
 use args::{Cli, Command};
 use clap::Parser;
 
-/// A failure the user sees: bad input (exit 2) or an environment problem (exit 1).
+/// A failure the user sees, as one message (printed after `kinsyn: error: `, made one line by
+/// [`terminal::one_line`]): bad input (exit 2) or an environment problem (exit 1).
 #[derive(Debug, thiserror::Error)]
-enum CliError {
+pub enum Error {
+    /// Bad input: arguments, chains, patterns, poses, input values, files that are missing or
+    /// not what they should be, faulty fields, limits (exit 2).
     #[error("{0}")]
     Input(String),
+    /// An output that cannot be written (exit 1).
     #[error("{0}")]
     Io(#[from] std::io::Error),
     /// A fault of the build, not of the input or the environment (exit 1).
@@ -35,7 +42,9 @@ enum CliError {
     Internal(String),
 }
 
-/// Runs the command line and returns the process exit code.
+/// Runs the command line on the process's arguments, printing the result on stdout and errors
+/// on stderr, and returns the process exit code (0, 1 or 2, as above).
+#[must_use]
 pub fn run() -> i32 {
     let cli = match Cli::try_parse() {
         Ok(cli) => cli,

@@ -43,21 +43,27 @@ pub const MAX_RUNS: usize = 64;
 /// The most threads `--threads` takes.
 pub const MAX_THREADS: usize = 256;
 
+/// What a file that is not a Bertini input file is, in refusals.
+const NOT_BERTINI: &str = "not a Bertini input file";
+
 /// Reads a Bertini input file; errors name the file and the line.
 pub fn read_input(path: &Path) -> Result<bertini::BertiniInput, CliError> {
-    const NOT_BERTINI: &str = "not a Bertini input file";
     let text = super::files::read_text(path, NOT_BERTINI)?;
+    parse_input(&text, &path.display().to_string())
+}
+
+/// The system of the Bertini input `text`; errors name `source` and the line.
+fn parse_input(text: &str, source: &str) -> Result<bertini::BertiniInput, CliError> {
     if !text.lines().any(|l| {
         l.split('%')
             .next()
             .is_some_and(|code| code.trim_start().starts_with("INPUT"))
     }) {
         return Err(CliError::Input(format!(
-            "{} is {NOT_BERTINI} (no INPUT section)",
-            path.display()
+            "{source} is {NOT_BERTINI} (no INPUT section)"
         )));
     }
-    bertini::parse(&text).map_err(|e| CliError::Input(format!("{}: {e}", path.display())))
+    bertini::parse(text).map_err(|e| CliError::Input(format!("{source}: {e}")))
 }
 
 /// `n word` or `n words`.
@@ -78,12 +84,11 @@ fn paths_text(n: u128) -> String {
 /// not square, an equation that is a constant (no solution, or no isolated one if zero), a
 /// coefficient that overflowed double precision, or more paths than [`homotopy::MAX_PATHS`].
 fn check_solvable(
-    path: &Path,
+    file: &str,
     input: &bertini::BertiniInput,
     start: StartSystem,
 ) -> Result<(), CliError> {
     let system = &input.system;
-    let file = path.display();
     let (equations, variables) = (system.len(), system.nvars());
     if equations != variables {
         return Err(CliError::Input(format!(
@@ -206,21 +211,55 @@ pub fn solve_with_bar(
 
 /// `kinsyn solve FILE`.
 pub fn solve(path: &Path, options: &SolveOptions, as_json: bool) -> Result<String, CliError> {
+    let text = super::files::read_text(path, NOT_BERTINI)?;
+    let solved = solve_system(&text, &path.display().to_string(), options)?;
+    if options.start == StartSystem::MultiHomogeneous && solved.system.groups().len() < 2 {
+        super::terminal::warning(&format!(
+            "{}: one variable group: the multi-homogeneous start system is the total-degree count",
+            path.display()
+        ));
+    }
+    if as_json {
+        Ok(json(&solved.json()))
+    } else {
+        Ok(text_report(&solved))
+    }
+}
+
+/// A system solved as `kinsyn solve` solves it.
+pub struct Solved {
+    /// The file's name, or what stands for it.
+    source: String,
+    /// The system solved.
+    system: System,
+    /// The options it was solved with.
+    options: SolveOptions,
+    /// The worker threads.
+    threads: usize,
+    /// Every run.
+    runs: RunsReport,
+}
+
+/// Every isolated solution of the polynomial system of the Bertini input `text` (`source`
+/// naming it in messages: the file's path, or `<string>`), by homotopy continuation, run as
+/// `options` say. A progress bar over the paths is drawn on stderr when it is a terminal.
+///
+/// # Errors
+///
+/// [`CliError::Input`]: options out of range (`--runs`, `--threads`), text that is not a
+/// Bertini input, a system that is not square, has a constant equation or overflowing
+/// coefficients or too many paths, or a solve that fails; [`CliError::Internal`] when the
+/// threads cannot be started.
+pub fn solve_system(text: &str, source: &str, options: &SolveOptions) -> Result<Solved, CliError> {
     if options.runs == 0 || options.runs > MAX_RUNS {
         return Err(CliError::Input(format!(
             "--runs {}: give 1 to {MAX_RUNS}",
             options.runs
         )));
     }
-    let input = read_input(path)?;
-    check_solvable(path, &input, options.start)?;
+    let input = parse_input(text, source)?;
+    check_solvable(source, &input, options.start)?;
     let system = input.system;
-    if options.start == StartSystem::MultiHomogeneous && system.groups().len() < 2 {
-        super::terminal::warning(&format!(
-            "{}: one variable group: the multi-homogeneous start system is the total-degree count",
-            path.display()
-        ));
-    }
     let settings = SolveSettings {
         seed: options.seed,
         start: options.start,
@@ -231,13 +270,38 @@ pub fn solve(path: &Path, options: &SolveOptions, as_json: bool) -> Result<Strin
         solve_with_bar(&system, &settings, options.runs)
     })??;
     let threads = options.threads.unwrap_or_else(rayon::current_num_threads);
-    if as_json {
-        Ok(json(&SolveJson::new(
-            path, &system, options, threads, &runs,
-        )))
-    } else {
-        Ok(text(path, &system, options, threads, &runs))
+    Ok(Solved {
+        source: source.to_string(),
+        system,
+        options: options.clone(),
+        threads,
+        runs,
+    })
+}
+
+impl Solved {
+    /// The report of `kinsyn solve --json`.
+    #[must_use]
+    pub fn json(&self) -> impl Serialize + use<'_> {
+        SolveJson::new(
+            &self.source,
+            &self.system,
+            &self.options,
+            self.threads,
+            &self.runs,
+        )
     }
+}
+
+/// The text report of `kinsyn solve`.
+fn text_report(solved: &Solved) -> String {
+    text(
+        &solved.source,
+        &solved.system,
+        &solved.options,
+        solved.threads,
+        &solved.runs,
+    )
 }
 
 /// A complex number as text: `1.2345678901` or `1.2345678901 - 0.5000000000i`.
@@ -284,7 +348,7 @@ pub fn certificate_line(report: &SolveReport) -> String {
 }
 
 fn text(
-    path: &Path,
+    path: &str,
     system: &System,
     options: &SolveOptions,
     threads: usize,
@@ -295,7 +359,7 @@ fn text(
     let _ = writeln!(
         out,
         "{}: {} in {} ({})",
-        path.display(),
+        path,
         count(system.len(), "equation"),
         count(system.nvars(), "variable"),
         system.variables().join(", ")
@@ -438,7 +502,7 @@ struct RunJson {
 
 impl SolveJson {
     fn new(
-        path: &Path,
+        path: &str,
         system: &System,
         options: &SolveOptions,
         threads: usize,
@@ -460,7 +524,7 @@ impl SolveJson {
             paths: s.paths.clone(),
         };
         Self {
-            file: path.display().to_string(),
+            file: path.to_string(),
             variables: system.variables().to_vec(),
             equations: system.len(),
             bezout_number: paths_text(system.bezout_number()),

@@ -8,6 +8,7 @@ use std::io::{self, Write};
 /// other control or bidirectional-formatting character are written as Rust escapes (`\n`,
 /// `\u{1b}`, `\u{202e}`), so that echoed input can neither add lines nor reorder or recolour
 /// the text around it.
+#[must_use]
 pub fn one_line(message: &str) -> String {
     let mut s = String::with_capacity(message.len());
     for c in message.chars() {

@@ -83,6 +83,53 @@ pub fn analyze(
     as_json: bool,
 ) -> Result<String, CliError> {
     let m = load_with_body(path, placement.body, placement.relative_to, None)?;
+    let analyzed = analyse_placed(&m, placement, lock, settings)?;
+    let warnings = leg_warnings(&m);
+    warn(path, &warnings);
+    if as_json {
+        return Ok(json(&analyzed.json(&m, &warnings)));
+    }
+    Ok(analyzed.study_lines.clone() + &analysis_text(&m, &analyzed.analysis, &analyzed.reached))
+}
+
+/// A configuration placed as `kinsyn analyze` places it, and its analysis.
+pub struct Analyzed {
+    /// Mobility, Jacobians, ranks and singularities at the configuration.
+    pub analysis: Analysis,
+    /// How the configuration was reached.
+    reached: Reached,
+    /// The text report's lines on `--study`.
+    study_lines: String,
+    /// The JSON report's `study` entries.
+    study_json: Vec<serde_json::Value>,
+}
+
+impl Analyzed {
+    /// The report of `kinsyn analyze --json` for the manipulator `m` analysed, with the leg
+    /// `warnings` listed in it.
+    #[must_use]
+    pub fn json(&self, m: &Manipulator, warnings: &[String]) -> serde_json::Value {
+        let mut v = analysis_json(m, &self.analysis, &self.reached, warnings);
+        if !self.study_json.is_empty() {
+            v["study"] = serde_json::Value::Array(self.study_json.clone());
+        }
+        v
+    }
+}
+
+/// The configuration of `m` that `placement` asks for, with the inputs of `lock` (`--lock`,
+/// labels) held, reached from the start, and its analysis sampled with `settings`.
+///
+/// # Errors
+///
+/// [`CliError::Input`], naming the option: a malformed lock set, pose, input values or Study
+/// parameters, a configuration that cannot be reached, or one that cannot be analysed.
+pub fn analyse_placed(
+    m: &Manipulator,
+    placement: &Placement<'_>,
+    lock: Option<&str>,
+    settings: &SampleSettings,
+) -> Result<Analyzed, CliError> {
     let locked = match lock {
         Some(text) => m
             .parse_locks(text)
@@ -91,7 +138,7 @@ pub fn analyze(
     };
     let (start, start_text) = match placement.from {
         Some(text) => (
-            configuration_at_pose(&m, "--from", text, &[])?,
+            configuration_at_pose(m, "--from", text, &[])?,
             format!("--from {text}"),
         ),
         None => (m.reference(), "the reference configuration".to_string()),
@@ -170,16 +217,12 @@ pub fn analyze(
     let a = m
         .analyse(&q, &locked, settings)
         .map_err(|e| CliError::Input(e.to_string()))?;
-    let warnings = leg_warnings(&m);
-    warn(path, &warnings);
-    if as_json {
-        let mut v = analysis_json(&m, &a, &reached, &warnings);
-        if !study_json.is_empty() {
-            v["study"] = serde_json::Value::Array(study_json);
-        }
-        return Ok(json(&v));
-    }
-    Ok(study_lines + &analysis_text(&m, &a, &reached))
+    Ok(Analyzed {
+        analysis: a,
+        reached,
+        study_lines,
+        study_json,
+    })
 }
 
 /// The analysed body's instantaneous motion relative to the body of `--relative-to`.

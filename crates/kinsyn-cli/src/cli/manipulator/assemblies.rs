@@ -4,7 +4,7 @@
 use super::{clean, input_texts, inputs_or_reference, leg_warnings, load_with_body, warn};
 use crate::cli::solve::{certificate_line, solve_with_bar};
 use crate::cli::{CliError, json};
-use kinsyn::homotopy::SolveSettings;
+use kinsyn::homotopy::{SolveReport, SolveSettings};
 use kinsyn::manipulator::{LegKind, Manipulator, PositionRequest};
 use kinsyn::mechanism::rotation_log;
 use kinsyn::poly::geometry::Chart;
@@ -35,10 +35,6 @@ pub fn pose_text(m: &Manipulator, g: &Displacement) -> String {
 }
 
 /// `kinsyn analyze FILE [--inputs …] --all-assemblies`.
-#[expect(
-    clippy::too_many_lines,
-    reason = "one report: the solve, then the same facts as JSON or as text"
-)]
 pub fn all_assemblies(
     path: &Path,
     inputs_text: Option<&str>,
@@ -47,7 +43,49 @@ pub fn all_assemblies(
     as_json: bool,
 ) -> Result<String, CliError> {
     let m = load_with_body(path, body, None, None)?;
-    let inputs = inputs_or_reference(&m, inputs_text)?;
+    let all = all_assemblies_of(&m, inputs_text, seed)?;
+    let warnings = leg_warnings(&m);
+    warn(path, &warnings);
+    if as_json {
+        return Ok(json(&all.json(&m, &warnings)));
+    }
+    Ok(all.text(&m, path, seed))
+}
+
+/// Every assembly of a manipulator at given inputs: the solve of its position system and the
+/// real assemblies found.
+pub struct AllAssemblies {
+    /// The inputs, every one (`LABEL = value`, [`input_texts`]).
+    inputs: Vec<(usize, f64)>,
+    /// The seed of the chart and of the solve.
+    seed: u64,
+    /// The variables, equations and degrees of the position system.
+    system: kinsyn::poly::System,
+    /// What each leg contributes to the position system.
+    kinds: Vec<&'static str>,
+    /// The solve.
+    report: SolveReport,
+    /// The real assemblies.
+    assemblies: Vec<Assembly>,
+    /// How many singular endpoints lie on the null cone.
+    null_cone: usize,
+}
+
+/// Every assembly of `m` at the inputs of `inputs_text` (`--inputs`; the inputs not named at
+/// their reference values), by homotopy continuation on the constraint polynomials in the
+/// Study parameters of the platform (a random linear chart and the solve seeded by `seed`). A
+/// progress bar over the paths is drawn on stderr when it is a terminal.
+///
+/// # Errors
+///
+/// [`CliError::Input`]: malformed input values, a manipulator without a position system, or
+/// a system the solver refuses.
+pub fn all_assemblies_of(
+    m: &Manipulator,
+    inputs_text: Option<&str>,
+    seed: u64,
+) -> Result<AllAssemblies, CliError> {
+    let inputs = inputs_or_reference(m, inputs_text)?;
     let ps = m
         .position_system(&inputs, &Chart::random_linear(seed))
         .map_err(|e| CliError::Input(format!("--all-assemblies: {e}")))?;
@@ -55,8 +93,10 @@ pub fn all_assemblies(
         seed,
         ..SolveSettings::default()
     };
-    let runs = solve_with_bar(ps.system(), &settings, 1)?;
-    let report = &runs.runs[0];
+    // One run: its report is the only one.
+    let report = solve_with_bar(ps.system(), &settings, 1)?
+        .runs
+        .swap_remove(0);
     // The assembly Newton continuation reaches from the reference, to mark it.
     let request = PositionRequest {
         inputs: inputs.clone(),
@@ -101,9 +141,7 @@ pub fn all_assemblies(
             !s.regular && delta.norm() <= 1e-8 * size
         })
         .count();
-    let warnings = leg_warnings(&m);
-    warn(path, &warnings);
-    let kinds: Vec<&str> = ps
+    let kinds: Vec<&'static str> = ps
         .legs()
         .iter()
         .map(|l| match l.kind {
@@ -114,31 +152,45 @@ pub fn all_assemblies(
             LegKind::CoplanarDistance => "U–U: distance and coplanar lines",
         })
         .collect();
-    let input_text = input_texts(&m, &inputs);
-    if as_json {
-        let v = serde_json::json!({
+    Ok(AllAssemblies {
+        inputs,
+        seed,
+        system: ps.system().clone(),
+        kinds,
+        report,
+        assemblies,
+        null_cone,
+    })
+}
+
+impl AllAssemblies {
+    /// The report of `kinsyn analyze --all-assemblies --json` for `m`, with the leg `warnings`.
+    #[must_use]
+    pub fn json(&self, m: &Manipulator, warnings: &[String]) -> serde_json::Value {
+        let (report, system) = (&self.report, &self.system);
+        serde_json::json!({
             "manipulator": m.name(),
-            "inputs": input_text,
+            "inputs": input_texts(m, &self.inputs),
             "formulation": {
-                "variables": ps.system().variables(),
-                "equations": ps.system().len(),
-                "degrees": ps.system().degrees(),
-                "bezout_number": ps.system().bezout_number().to_string(),
-                "legs": kinds,
+                "variables": system.variables(),
+                "equations": system.len(),
+                "degrees": system.degrees(),
+                "bezout_number": system.bezout_number().to_string(),
+                "legs": self.kinds,
             },
             "summary": report.summary(),
             "paths": report.paths(),
             "nonsingular": report.nonsingular(),
             "real": report.real(),
             "singular": report.singular(),
-            "singular_on_null_cone": null_cone,
+            "singular_on_null_cone": self.null_cone,
             "at_infinity": report.at_infinity(),
             "certified": report.certified(),
             "certified_real": report.certified_real(),
             "seconds": report.seconds,
-            "seed": seed,
-            "real_assemblies": assemblies.iter().map(|a| serde_json::json!({
-                "pose": pose_text(&m, &a.pose),
+            "seed": self.seed,
+            "real_assemblies": self.assemblies.iter().map(|a| serde_json::json!({
+                "pose": pose_text(m, &a.pose),
                 "position": a.pose.translation.vector.as_slice(),
                 "rotation_vector_rad": rotation_log(&a.pose.rotation).as_slice(),
                 "largest_leg_residual": a.residual,
@@ -149,60 +201,67 @@ pub fn all_assemblies(
                 s.x.iter().map(|c| [c.re, c.im]).collect::<Vec<_>>()
             }).collect::<Vec<_>>(),
             "warnings": warnings,
-        });
-        return Ok(json(&v));
+        })
     }
-    let mut out = String::new();
-    let _ = writeln!(out, "{} at {}", m.name(), input_text.join(", "));
-    let _ = writeln!(
-        out,
-        "formulation: {} equations in the Study parameters x0…y3 of the platform frame (legs: {}; the Study quadric; a random linear chart, seed {seed}), Bézout number {}",
-        ps.system().len(),
-        kinds.join(", "),
-        ps.system().bezout_number()
-    );
-    let _ = writeln!(
-        out,
-        "{}",
-        report.summary().replace("solutions", "assemblies")
-    );
-    let _ = writeln!(out, "{}", certificate_line(report));
-    if null_cone > 0 {
+
+    /// The text report of `kinsyn analyze FILE --all-assemblies` (`path` the file's).
+    fn text(&self, m: &Manipulator, path: &Path, seed: u64) -> String {
+        let (report, assemblies, null_cone) = (&self.report, &self.assemblies, self.null_cone);
+        let input_text = input_texts(m, &self.inputs);
+        let kinds = &self.kinds;
+        let system = &self.system;
+        let mut out = String::new();
+        let _ = writeln!(out, "{} at {}", m.name(), input_text.join(", "));
         let _ = writeln!(
             out,
-            "{null_cone} of the singular endpoints lie on the null cone x0² + x1² + x2² + x3² = 0, which solves the constraints without being a displacement"
+            "formulation: {} equations in the Study parameters x0…y3 of the platform frame (legs: {}; the Study quadric; a random linear chart, seed {seed}), Bézout number {}",
+            system.len(),
+            kinds.join(", "),
+            system.bezout_number()
         );
-    }
-    let _ = writeln!(out, "time: {:.3} s", report.seconds);
-    let unit = m.units();
-    let _ = writeln!(
-        out,
-        "real assemblies ({}), as --pose x,y,z,rx,ry,rz ({}, {}):",
-        assemblies.len(),
-        unit.length,
-        unit.angle.name()
-    );
-    for (k, a) in assemblies.iter().enumerate() {
         let _ = writeln!(
             out,
-            "  {:>3}  {}  [legs within {:.1e}{}{}]",
-            k + 1,
-            pose_text(&m, &a.pose),
-            a.residual,
-            if a.certified { ", certified" } else { "" },
-            if a.current {
-                "; the assembly continued from the reference"
-            } else {
-                ""
-            }
+            "{}",
+            report.summary().replace("solutions", "assemblies")
         );
-    }
-    if !assemblies.is_empty() {
+        let _ = writeln!(out, "{}", certificate_line(report));
+        if null_cone > 0 {
+            let _ = writeln!(
+                out,
+                "{null_cone} of the singular endpoints lie on the null cone x0² + x1² + x2² + x3² = 0, which solves the constraints without being a displacement"
+            );
+        }
+        let _ = writeln!(out, "time: {:.3} s", report.seconds);
+        let unit = m.units();
         let _ = writeln!(
             out,
-            "analyse one with: kinsyn analyze {} --pose=X,Y,Z,RX,RY,RZ",
-            path.display()
+            "real assemblies ({}), as --pose x,y,z,rx,ry,rz ({}, {}):",
+            assemblies.len(),
+            unit.length,
+            unit.angle.name()
         );
+        for (k, a) in assemblies.iter().enumerate() {
+            let _ = writeln!(
+                out,
+                "  {:>3}  {}  [legs within {:.1e}{}{}]",
+                k + 1,
+                pose_text(m, &a.pose),
+                a.residual,
+                if a.certified { ", certified" } else { "" },
+                if a.current {
+                    "; the assembly continued from the reference"
+                } else {
+                    ""
+                }
+            );
+        }
+        if !assemblies.is_empty() {
+            let _ = writeln!(
+                out,
+                "analyse one with: kinsyn analyze {} --pose=X,Y,Z,RX,RY,RZ",
+                path.display()
+            );
+        }
+        out
     }
-    Ok(out)
 }

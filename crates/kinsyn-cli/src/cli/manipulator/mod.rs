@@ -6,12 +6,16 @@ mod analyze;
 mod assemblies;
 mod modes;
 
-pub use analyze::{Placement, analyze};
-pub use assemblies::{all_assemblies, pose_text};
-pub use modes::{DEFAULT_MAX_SUBSETS, MAX_SUBSETS_CEILING, Selection, modes};
+pub use analyze::{Analyzed, Placement, analyse_placed, analyze};
+pub use assemblies::{AllAssemblies, all_assemblies, all_assemblies_of, pose_text};
+pub use modes::{
+    DEFAULT_MAX_SUBSETS, MAX_SAMPLES, MAX_SUBSETS_CEILING, Selection, modes, modes_json,
+    sample_modes,
+};
 
 use super::CliError;
 use kinsyn::manipulator::build::{BuildField, BuildSpec, build};
+use kinsyn::manipulator::file::Description;
 use kinsyn::manipulator::{Manipulator, ManipulatorError, file};
 use std::path::Path;
 
@@ -19,13 +23,23 @@ use std::path::Path;
 /// not a regular file, a file over [`crate::cli::files::MAX_FILE_BYTES`], or text that is not UTF-8 or not a
 /// description is refused as "not a kinsyn manipulator file" before it is parsed further.
 pub fn load(path: &Path) -> Result<Manipulator, CliError> {
-    let shown = path.display();
     let text = crate::cli::files::read_text(path, file::NOT_A_DESCRIPTION)?;
-    Manipulator::from_json(&text).map_err(|e| match &e {
+    parse_description(&text, &path.display().to_string())
+}
+
+/// The manipulator the description `text` describes, `source` naming it in messages (the
+/// file's path, or `<string>`).
+///
+/// # Errors
+///
+/// [`CliError::Input`]: `SOURCE is not a kinsyn manipulator file (why)` when the text is not a
+/// description, `SOURCE: …` naming the faulty field otherwise.
+pub fn parse_description(text: &str, source: &str) -> Result<Manipulator, CliError> {
+    Manipulator::from_json(text).map_err(|e| match &e {
         ManipulatorError::Description(d) if d.is_not_a_description() => {
-            CliError::Input(format!("{shown} is {}", d.message))
+            CliError::Input(format!("{source} is {}", d.message))
         }
-        _ => CliError::Input(format!("{shown}: {e}")),
+        _ => CliError::Input(format!("{source}: {e}")),
     })
 }
 
@@ -94,8 +108,10 @@ fn warn(path: &Path, warnings: &[String]) {
     }
 }
 
-/// The `kinsyn build` option that sets a [`BuildSpec`] field.
-fn build_flag(field: BuildField) -> String {
+/// The `kinsyn build` option that sets a [`BuildSpec`] field (`--legs`, `--chain`, …): the
+/// name refusals of a specification use.
+#[must_use]
+pub fn build_flag(field: BuildField) -> String {
     match field {
         BuildField::Legs => "--legs",
         BuildField::Chain => "--chain",
@@ -109,8 +125,14 @@ fn build_flag(field: BuildField) -> String {
     .to_string()
 }
 
-/// `kinsyn build`: writes a description (to `output`, or returns it for stdout).
-pub fn build_command(spec: &BuildSpec, output: Option<&Path>) -> Result<String, CliError> {
+/// The description `kinsyn build` writes for `spec`, and the manipulator it builds, checked
+/// as the command checks it: the description builds a mechanism, and its legs are generic.
+///
+/// # Errors
+///
+/// [`CliError::Input`]: a faulty specification (naming the option, [`build_flag`]), or a chain
+/// that in this geometry makes no usable manipulator or legs that are not generic.
+pub fn build_checked(spec: &BuildSpec) -> Result<(Description, Manipulator), CliError> {
     let description = build(spec).map_err(|e| CliError::Input(e.describe(build_flag)))?;
     // Check that what is written can be read back and built.
     let m = Manipulator::new(&description).map_err(|e| {
@@ -126,6 +148,12 @@ pub fn build_command(spec: &BuildSpec, output: Option<&Path>) -> Result<String, 
             spec.chain.trim()
         )));
     }
+    Ok((description, m))
+}
+
+/// `kinsyn build`: writes a description (to `output`, or returns it for stdout).
+pub fn build_command(spec: &BuildSpec, output: Option<&Path>) -> Result<String, CliError> {
+    let (description, m) = build_checked(spec)?;
     let text = description.to_json();
     match output {
         Some(path) => {

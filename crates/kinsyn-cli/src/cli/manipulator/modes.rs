@@ -30,6 +30,11 @@ pub const DEFAULT_MAX_SUBSETS: u32 = 4096;
 /// about 4–6 minutes of CPU at 4–5 ms per subset.
 pub const MAX_SUBSETS_CEILING: u32 = 1 << 16;
 
+/// The most samples per motion (`--samples`): 64 walks, about 20 times the default cost of a
+/// subset, far more evidence than a group claim needs (two samples 1e-3 apart,
+/// docs/verification.md).
+pub const MAX_SAMPLES: u16 = 64;
+
 /// The lock sets printed per pattern in text; `--json` lists them all.
 const LOCK_SETS_SHOWN: usize = 6;
 
@@ -49,7 +54,7 @@ fn start_configuration(m: &Manipulator, pose: Option<&str>) -> Result<Vec<f64>, 
 /// The lock subsets a selection asks for, refused when they are more than `max_subsets`
 /// (each is one sampled motion; the refusal says how to ask for fewer).
 fn selected_subsets(
-    path: &Path,
+    source: &str,
     m: &Manipulator,
     selection: &Selection,
     max_subsets: u32,
@@ -81,7 +86,7 @@ fn selected_subsets(
         .unwrap_or(0);
     Err(CliError::Input(format!(
         "{}: {n} inputs give {count} lock subsets {scope}, more than --max-subsets {max_subsets} (each is a sampled motion of about 1–5 ms of CPU, docs/limits.md); use --max-locks {fits} ({} subsets) or --lock SET, or raise --max-subsets (at most {MAX_SUBSETS_CEILING})",
-        path.display(),
+        source,
         m.lock_subset_count(fits)
     )))
 }
@@ -98,27 +103,18 @@ pub fn modes(
     as_json: bool,
 ) -> Result<String, CliError> {
     let m = load_with_body(path, body, relative, legs)?;
-    let subsets = selected_subsets(path, &m, selection, max_subsets)?;
-    let start = start_configuration(&m, pose)?;
-    let modes = if subsets.len() > 1 {
-        let bar = crate::cli::terminal::progress(subsets.len(), "lock subsets", "modes");
-        let modes = m.modes_from(&start, &subsets, settings, &|| bar.inc(1));
-        bar.finish_and_clear();
-        modes
-    } else {
-        m.modes_from(&start, &subsets, settings, &|| {})
-    };
+    let modes = sample_modes(
+        &m,
+        &path.display().to_string(),
+        pose,
+        selection,
+        max_subsets,
+        settings,
+    )?;
     let warnings = leg_warnings(&m);
     warn(path, &warnings);
     if as_json {
-        let mut value = modes_json(&modes, pose, selection, &warnings);
-        if let Some(object) = value.as_object_mut() {
-            object.insert(
-                "end_effector".into(),
-                serde_json::json!(m.bodies()[m.end_effector()].name),
-            );
-        }
-        return Ok(json(&value));
+        return Ok(json(&modes_json(&m, &modes, pose, selection, &warnings)));
     }
     let mut s = modes_header(&m, &modes, pose, selection);
     if let Selection::Lock(_) = selection {
@@ -130,9 +126,42 @@ pub fn modes(
     Ok(s)
 }
 
-/// `modes --json`: every sampled subset and pattern, with the request (start pose, subsets) and
-/// the leg warnings.
-fn modes_json(
+/// The motions of `m` with the lock subsets of `selection` locked (refused beyond
+/// `max_subsets`; `source` names the manipulator in that refusal), the locked inputs held at
+/// their values at the start configuration (the reference, or the assembly at `pose`, every
+/// input free), sampled with `settings`. A progress bar over the subsets is drawn on stderr
+/// when it is a terminal.
+///
+/// # Errors
+///
+/// [`CliError::Input`]: a malformed lock set or pose, a pose that cannot be reached, or more
+/// subsets than `max_subsets`.
+pub fn sample_modes(
+    m: &Manipulator,
+    source: &str,
+    pose: Option<&str>,
+    selection: &Selection,
+    max_subsets: u32,
+    settings: &SampleSettings,
+) -> Result<Modes, CliError> {
+    let subsets = selected_subsets(source, m, selection, max_subsets)?;
+    let start = start_configuration(m, pose)?;
+    Ok(if subsets.len() > 1 {
+        let bar = crate::cli::terminal::progress(subsets.len(), "lock subsets", "modes");
+        let modes = m.modes_from(&start, &subsets, settings, &|| bar.inc(1));
+        bar.finish_and_clear();
+        modes
+    } else {
+        m.modes_from(&start, &subsets, settings, &|| {})
+    })
+}
+
+/// The report of `kinsyn modes --json`: every sampled subset and pattern of `modes` (from
+/// [`sample_modes`]), with the request (start `pose`, `selection`), the leg `warnings` and the
+/// end-effector of `m`.
+#[must_use]
+pub fn modes_json(
+    m: &Manipulator,
     modes: &Modes,
     pose: Option<&str>,
     selection: &Selection,
@@ -156,6 +185,10 @@ fn modes_json(
             }),
         );
         object.insert("warnings".into(), serde_json::json!(warnings));
+        object.insert(
+            "end_effector".into(),
+            serde_json::json!(m.bodies()[m.end_effector()].name),
+        );
     }
     value
 }

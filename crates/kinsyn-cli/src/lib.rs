@@ -1,0 +1,27 @@
+//! The `kinsyn` command line as a library. [`run`] is the whole command (the binary `kinsyn` is
+//! `fn main` calling it); the other items are what the Python package `kinsyn` (crate
+//! `kinsyn-py`) shares with the command, so that both read the same files, compute the same
+//! `--json` reports and refuse bad input with the same one-line messages:
+//!
+//! - files: [`read_text`], [`parse_description`];
+//! - errors: [`Error`], [`one_line`];
+//! - `kinsyn build`: [`build_checked`], [`build_flag`];
+//! - `kinsyn analyze`: [`analyse_placed`] and [`Analyzed::json`];
+//! - `kinsyn modes`: [`sample_modes`] and [`modes_json`];
+//! - `kinsyn analyze --all-assemblies`: [`all_assemblies_of`] and [`AllAssemblies::json`];
+//! - `kinsyn solve`: [`solve_system`] and [`Solved::json`].
+//!
+//! The computations are the crate `kinsyn`'s; this crate turns options into requests and
+//! results into reports.
+
+mod cli;
+
+pub use cli::files::{MAX_FILE_BYTES, read_text};
+pub use cli::manipulator::{
+    AllAssemblies, Analyzed, DEFAULT_MAX_SUBSETS, MAX_SAMPLES, MAX_SUBSETS_CEILING, Placement,
+    Selection, all_assemblies_of, analyse_placed, build_checked, build_flag, modes_json,
+    parse_description, sample_modes,
+};
+pub use cli::solve::{MAX_RUNS, MAX_THREADS, Show, SolveOptions, Solved, solve_system};
+pub use cli::terminal::one_line;
+pub use cli::{Error, run};

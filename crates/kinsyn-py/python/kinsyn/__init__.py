@@ -1,0 +1,538 @@
+"""kinsyn: structural synthesis and kinematics of parallel manipulators, from Python.
+
+The same computations and numbers as the ``kinsyn`` command line (each function names the
+command it mirrors), as pandas DataFrames and numpy arrays:
+
+- :func:`catalogue`, :func:`catalogue_patterns` and :func:`query`: the catalogue of 3T3R legs of
+  paper 000 §2 and the motion patterns their joints give when locked;
+- :class:`Manipulator`: a parallel manipulator from a description file or built from a leg
+  chain; its Jacobians and singularities (:meth:`Manipulator.analyze`), its motion patterns
+  per set of locked inputs (:meth:`Manipulator.modes`) and all its assemblies at given inputs
+  (:meth:`Manipulator.assemblies`);
+- :func:`solve` and :func:`solve_file`: every isolated solution of a polynomial system in
+  Bertini's input format, by homotopy continuation, certified.
+
+Bad input raises :class:`InputError` (a :class:`KinsynError`) whose ``str()`` is the one-line
+message the command prints after ``kinsyn: error:``.
+"""
+
+from __future__ import annotations
+
+import json
+import warnings
+from dataclasses import dataclass, field
+from os import PathLike
+from typing import Any, Dict, List, Mapping, Optional, Sequence, Union
+
+import numpy as np
+import pandas as pd
+
+from . import _native
+from ._native import InputError, KinsynError
+
+__all__ = [
+    "Analysis",
+    "Assemblies",
+    "InputError",
+    "KinsynError",
+    "KinsynWarning",
+    "Manipulator",
+    "Solutions",
+    "catalogue",
+    "catalogue_patterns",
+    "query",
+    "solve",
+    "solve_file",
+]
+
+
+class KinsynWarning(UserWarning):
+    """A leg warning (docs/mechanism-format.md, "Leg checks"), as the command prints it."""
+
+
+Inputs = Union[str, Mapping[str, float], None]
+Pose = Union[str, Sequence[float], None]
+Locks = Union[str, Sequence[str], None]
+
+
+def _inputs_text(inputs: Inputs) -> Optional[str]:
+    """Input values as the command line takes them: ``"R1.1=10,P1.3=0.05"``."""
+    if inputs is None or isinstance(inputs, str):
+        return inputs
+    return ",".join(f"{label}={float(value)!r}" for label, value in inputs.items())
+
+
+def _pose_text(pose: Pose) -> Optional[str]:
+    """A pose as the command line takes it: ``"x,y,z,rx,ry,rz"``."""
+    if pose is None or isinstance(pose, str):
+        return pose
+    return ",".join(repr(float(v)) for v in pose)
+
+
+def _locks_text(lock: Locks) -> Optional[str]:
+    """Locked inputs as the command line takes them: ``"R1.1,R2.1"``."""
+    if lock is None or isinstance(lock, str):
+        return lock
+    return ",".join(lock)
+
+
+def _warn(report: Mapping[str, Any]) -> None:
+    for w in report.get("warnings", []):
+        warnings.warn(w, KinsynWarning, stacklevel=3)
+
+
+def _complex(pairs: Sequence[Sequence[float]]) -> np.ndarray:
+    """``[[re, im], ...]`` as a complex vector."""
+    a = np.asarray(pairs, dtype=float).reshape(-1, 2)
+    return a[:, 0] + 1j * a[:, 1]
+
+
+# --- the catalogue --------------------------------------------------------------------------
+
+_CATALOGUE_COLUMNS = [
+    "id",
+    "notation",
+    "letters",
+    "family",
+    "word",
+    "axes",
+    "table",
+    "row",
+    "variant",
+    "printed_in_row",
+    "printed_in_appendix",
+    "verified",
+    "rank",
+    "gap",
+    "idle_joints",
+    "patterns",
+]
+
+
+def catalogue() -> pd.DataFrame:
+    """The committed catalogue of paper 000 §2, one row per entry (``kinsyn catalogue list``).
+
+    Columns: ``id``, ``notation``, ``letters``, ``family``, ``word``, ``axes``; where the entry
+    was first found in the Appendix (``table``, ``row``, ``variant``) and whether it is printed
+    there (``printed_in_row``, ``printed_in_appendix``); its numerical verification:
+    ``verified`` (the leg is 3T3R), ``rank``, ``gap``, ``idle_joints``; and ``patterns``, a dict
+    from each motion pattern the leg gives with some joints locked to its minimal lock sets
+    (joint positions in the word, ``"-"``: none). For filters on patterns use
+    :func:`catalogue_patterns` (one row per entry, pattern and lock set).
+    """
+    entries = json.loads(_native.catalogue_json())
+    rows = []
+    for e in entries:
+        v = e.get("verification") or {}
+        p = e["provenance"]
+        rows.append(
+            {
+                "id": e["id"],
+                "notation": e["notation"],
+                "letters": e["letters"],
+                "family": e["family"],
+                "word": e["word"],
+                "axes": e["axes"],
+                "table": p["table"],
+                "row": p["row"],
+                "variant": p["variant"],
+                "printed_in_row": e["printed_in_row"],
+                "printed_in_appendix": e["printed_in_appendix"],
+                "verified": v.get("is_3t3r"),
+                "rank": v.get("rank"),
+                "gap": v.get("gap"),
+                "idle_joints": v.get("idle_joints"),
+                "patterns": v.get("patterns", {}),
+            }
+        )
+    return pd.DataFrame(rows, columns=_CATALOGUE_COLUMNS)
+
+
+def catalogue_patterns() -> pd.DataFrame:
+    """The catalogue's patterns in long form: one row per entry, motion pattern and minimal
+    lock set, with ``locks``, the number of joints locked (0 for the leg's own motion ``D``).
+
+    Columns: ``id``, ``notation``, ``family``, ``pattern``, ``lock_set``, ``locks``. For
+    example the legs that give the translations ``T3`` with three joints locked:
+    ``df[(df.pattern == "T3") & (df.locks <= 3)]``.
+    """
+    cat = catalogue()
+    rows = [
+        {
+            "id": r.id,
+            "notation": r.notation,
+            "family": r.family,
+            "pattern": pattern,
+            "lock_set": s,
+            "locks": 0 if s == "-" else len(s),
+        }
+        for r in cat.itertuples()
+        for pattern, sets in r.patterns.items()
+        for s in sets
+    ]
+    return pd.DataFrame(
+        rows, columns=["id", "notation", "family", "pattern", "lock_set", "locks"]
+    )
+
+
+def query(pattern: str, max_locks: int = 6, family: Optional[str] = None) -> pd.DataFrame:
+    """The catalogue entries whose leg gives ``pattern`` with at most ``max_locks`` joints
+    locked (``kinsyn query --pattern PATTERN --max-locks K [--family F] --json``): one row per
+    entry and pattern matched, with the minimal ``lock_sets`` that give it.
+
+    ``pattern`` is a displacement group (``T3``, ``X(z)``, ``G(xy)``, …) or ``nTmR``.
+    Columns: ``id``, ``notation``, ``family``, ``word``, ``axes``, ``pattern``, ``lock_sets``.
+    """
+    rows = json.loads(_native.query_json(pattern, max_locks, family))
+    return pd.DataFrame(
+        rows, columns=["id", "notation", "family", "word", "axes", "pattern", "lock_sets"]
+    )
+
+
+# --- manipulators ---------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class Analysis:
+    """A manipulator at one configuration (``kinsyn analyze --json``): mobility, the
+    Jacobians of paper 000 §4–5, their ranks and the singularities.
+
+    ``J_D`` has one row per wrench (free inputs, locked inputs, constraints: ``rows`` names
+    them), columns ``(v_P; ω)``; ``J_I`` one row per wrench and one column per free input
+    (``inputs``), so that ``J_D [v_P; ω] = J_I q̇``. ``singular_values`` are those of ``J_D``
+    (its rank decision). ``report`` is the whole report, as the command's JSON.
+    """
+
+    report: Dict[str, Any] = field(repr=False)
+    J_D: np.ndarray = field(repr=False)
+    J_I: np.ndarray = field(repr=False)
+    singular_values: np.ndarray
+    mobility: int
+    dof: int
+    jd_rank: int
+    rows: List[str]
+    inputs: List[str]
+    singularities: List[Dict[str, Any]]
+    joint_values: np.ndarray = field(repr=False)
+    platform_position: np.ndarray
+
+    @property
+    def singular(self) -> bool:
+        """Whether the configuration is singular (any singularity reported)."""
+        return bool(self.singularities)
+
+    @classmethod
+    def _from_report(cls, r: Dict[str, Any]) -> "Analysis":
+        free = len(r["inputs"])
+        return cls(
+            report=r,
+            J_D=np.asarray(r["jd_matrix"], dtype=float).reshape(-1, 6),
+            J_I=np.asarray(r["ji_matrix"], dtype=float).reshape(-1, free),
+            singular_values=np.asarray(r["jd_rank"]["singular_values"], dtype=float),
+            mobility=r["mobility"],
+            dof=r["platform_dof"],
+            jd_rank=r["jd_rank"]["rank"],
+            rows=[row["row"] for row in r["rows"]],
+            inputs=list(r["inputs"]),
+            singularities=list(r["singularities"]),
+            joint_values=np.asarray(r["joint_values"], dtype=float),
+            platform_position=np.asarray(r["platform_position"], dtype=float),
+        )
+
+
+@dataclass(frozen=True)
+class Assemblies:
+    """Every assembly of a manipulator at given inputs, from its constraint polynomials in
+    the Study parameters of the platform (``kinsyn analyze --all-assemblies --json``).
+
+    ``real``: one row per real assembly (``pose`` as ``analyze --pose`` takes it, position
+    ``x, y, z``, rotation vector ``rx, ry, rz`` in radians, the largest leg residual, whether it
+    is certified, whether it is the one continued from the reference); ``complex``: the
+    non-real regular solutions, one row of complex Study coordinates each. ``nonsingular`` is
+    the number of regular solutions (real and complex).
+    """
+
+    report: Dict[str, Any] = field(repr=False)
+    real: pd.DataFrame = field(repr=False)
+    complex: np.ndarray = field(repr=False)
+    paths: int
+    nonsingular: int
+    singular: int
+    at_infinity: int
+    certified: int
+    summary: str
+
+    @classmethod
+    def _from_report(cls, r: Dict[str, Any]) -> "Assemblies":
+        real = pd.DataFrame(
+            [
+                {
+                    "pose": a["pose"],
+                    "x": a["position"][0],
+                    "y": a["position"][1],
+                    "z": a["position"][2],
+                    "rx": a["rotation_vector_rad"][0],
+                    "ry": a["rotation_vector_rad"][1],
+                    "rz": a["rotation_vector_rad"][2],
+                    "largest_leg_residual": a["largest_leg_residual"],
+                    "certified": a["certified"],
+                    "continued_from_reference": a["continued_from_reference"],
+                }
+                for a in r["real_assemblies"]
+            ],
+            columns=[
+                "pose", "x", "y", "z", "rx", "ry", "rz",
+                "largest_leg_residual", "certified", "continued_from_reference",
+            ],
+        )
+        nvars = len(r["formulation"]["variables"])
+        complex_ = np.array(
+            [_complex(x) for x in r["complex_assemblies"]], dtype=complex
+        ).reshape(-1, nvars)
+        return cls(
+            report=r,
+            real=real,
+            complex=complex_,
+            paths=r["paths"],
+            nonsingular=r["nonsingular"],
+            singular=r["singular"],
+            at_infinity=r["at_infinity"],
+            certified=r["certified"],
+            summary=r["summary"],
+        )
+
+
+class Manipulator:
+    """A parallel manipulator: a description (a file, JSON text, or legs built from a chain
+    as ``kinsyn build``) and the mechanism it makes."""
+
+    __slots__ = ("_m",)
+
+    def __init__(self, native: "_native.Manipulator") -> None:
+        self._m = native
+
+    @classmethod
+    def from_file(cls, path: Union[str, "PathLike[str]"]) -> "Manipulator":
+        """The manipulator described by the file at ``path`` (as ``kinsyn analyze FILE``)."""
+        return cls(_native.Manipulator.from_file(path))
+
+    @classmethod
+    def from_json(cls, text: str, source: str = "<string>") -> "Manipulator":
+        """The manipulator described by the JSON text ``text``; messages name it ``source``."""
+        return cls(_native.Manipulator.from_json(text, source))
+
+    @classmethod
+    def build(
+        cls,
+        chain: str,
+        legs: int = 3,
+        actuated: Optional[Sequence[int]] = None,
+        axes: Optional[str] = None,
+        base_radius: float = 1.0,
+        platform_radius: float = 0.5,
+        height: float = 1.0,
+        twist: float = 0.0,
+        alternate: bool = False,
+        name: Optional[str] = None,
+    ) -> "Manipulator":
+        """``legs`` identical legs ``chain`` (a catalogue id such as ``"T4-034"`` or a chain in
+        notation, ``!`` marking inputs; or ``actuated``: the 1-based primitive joints driven)
+        between a base circle and a platform circle, as ``kinsyn build``. Refusals name the
+        command's options (``--chain``, ``--actuated``, …)."""
+        return cls(
+            _native.Manipulator.build(
+                chain,
+                legs,
+                None if actuated is None else list(actuated),
+                axes,
+                base_radius,
+                platform_radius,
+                height,
+                twist,
+                alternate,
+                name,
+            )
+        )
+
+    @property
+    def name(self) -> str:
+        """The manipulator's name."""
+        return self._m.name
+
+    @property
+    def inputs(self) -> List[str]:
+        """The inputs' labels (``P1.3``: leg 1, primitive joint 3), in order."""
+        return list(self._m.inputs)
+
+    def to_json(self) -> str:
+        """The description as JSON text (what ``kinsyn build`` writes)."""
+        return self._m.to_json()
+
+    def analyze(
+        self,
+        pose: Pose = None,
+        inputs: Inputs = None,
+        lock: Locks = None,
+        seed: int = 2026,
+    ) -> Analysis:
+        """The configuration with the platform at ``pose`` (``x,y,z,rx,ry,rz``, or six numbers)
+        and/or the ``inputs`` at the values given (``"R1.1=10,P1.3=0.05"`` or a dict; values from
+        the reference, angles in the file's unit), reached by continuation from the reference,
+        with the inputs of ``lock`` held: its mobility, Jacobians and singularities
+        (``kinsyn analyze FILE [--pose] [--inputs] [--lock] --json``)."""
+        r = json.loads(
+            self._m.analyze_json(_pose_text(pose), _inputs_text(inputs), _locks_text(lock), seed)
+        )
+        _warn(r)
+        return Analysis._from_report(r)
+
+    def modes(
+        self,
+        max_locks: Optional[int] = None,
+        lock: Locks = None,
+        pose: Pose = None,
+        max_subsets: int = 4096,
+        seed: int = 2026,
+        samples: int = 3,
+    ) -> pd.DataFrame:
+        """The platform's motion pattern for each subset of locked inputs (all of them, those
+        of at most ``max_locks`` inputs, or the one ``lock``), the locked inputs held at their
+        values at the reference or at ``pose`` (``kinsyn modes FILE … --json``).
+
+        One row per lock subset: ``locked`` (the labels, ``"-"`` for none), ``n_locked``,
+        ``dof``, ``pattern`` (``"?"`` when the motion could not be sampled), ``group`` (one of
+        the 12 displacement groups), ``parameters`` and ``error``. ``df.attrs["report"]`` holds
+        the whole report (the patterns with their minimal lock sets: ``groups``,
+        ``non_groups``)."""
+        r = json.loads(
+            self._m.modes_json(
+                max_locks, _locks_text(lock), _pose_text(pose), max_subsets, seed, samples
+            )
+        )
+        _warn(r)
+        df = pd.DataFrame(
+            [
+                {
+                    "locked": m["lock_text"],
+                    "n_locked": len(m["locked"]),
+                    "dof": m["dof"],
+                    "pattern": m["pattern"],
+                    "group": m["group"],
+                    "parameters": m.get("parameters"),
+                    "error": m.get("error"),
+                }
+                for m in r["modes"]
+            ],
+            columns=["locked", "n_locked", "dof", "pattern", "group", "parameters", "error"],
+        )
+        df.attrs["report"] = r
+        return df
+
+    def assemblies(self, inputs: Inputs = None, seed: int = 2026) -> Assemblies:
+        """Every assembly (real and complex) at the ``inputs`` (the reference values for
+        inputs not named), by homotopy continuation (``kinsyn analyze FILE --inputs …
+        --all-assemblies --seed S --json``)."""
+        r = json.loads(self._m.assemblies_json(_inputs_text(inputs), seed))
+        _warn(r)
+        return Assemblies._from_report(r)
+
+    def __repr__(self) -> str:
+        return repr(self._m)
+
+
+# --- polynomial systems ---------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class Solutions:
+    """The isolated solutions of a polynomial system (``kinsyn solve --json``).
+
+    ``solutions``: every finite endpoint, one row of complex coordinates in the order of
+    ``variables``; ``table``: the same with ``regular``, ``real``, ``reality``,
+    ``multiplicity``, ``residual``, ``certified`` per solution. ``real`` (the real regular
+    solutions, a real array) and the counts as the command reports them.
+    """
+
+    report: Dict[str, Any] = field(repr=False)
+    variables: List[str]
+    solutions: np.ndarray = field(repr=False)
+    table: pd.DataFrame = field(repr=False)
+    paths: int
+    nonsingular: int
+    singular: int
+    at_infinity: int
+    failed: int
+    certified: Optional[int]
+    summary: str
+
+    @property
+    def real(self) -> np.ndarray:
+        """The real regular solutions (real parts), one row each."""
+        keep = (self.table["regular"] & self.table["real"]).to_numpy(dtype=bool)
+        return self.solutions[keep].real
+
+    @classmethod
+    def _from_report(cls, r: Dict[str, Any]) -> "Solutions":
+        n = len(r["variables"])
+        sols = np.array([_complex(s["x"]) for s in r["solutions"]], dtype=complex).reshape(-1, n)
+        table = pd.DataFrame(
+            [
+                {
+                    "regular": s["regular"],
+                    "real": s["real"],
+                    "reality": s["reality"],
+                    "multiplicity": s["multiplicity"],
+                    "residual": s["residual"],
+                    "certified": s["certified"],
+                }
+                for s in r["solutions"]
+            ],
+            columns=["regular", "real", "reality", "multiplicity", "residual", "certified"],
+        )
+        for k, v in enumerate(r["variables"]):
+            table[v] = sols[:, k] if len(sols) else np.array([], dtype=complex)
+        return cls(
+            report=r,
+            variables=list(r["variables"]),
+            solutions=sols,
+            table=table,
+            paths=r["paths"],
+            nonsingular=r["nonsingular"],
+            singular=r["singular"],
+            at_infinity=r["at_infinity"],
+            failed=r["failed"],
+            certified=r["certified"],
+            summary=r["summary"],
+        )
+
+
+def solve(
+    system: str,
+    seed: int = 1,
+    start: str = "total-degree",
+    runs: int = 1,
+    threads: Optional[int] = None,
+    certify: bool = True,
+    source: str = "<string>",
+) -> Solutions:
+    """Every isolated solution of the polynomial system ``system``, Bertini input text as
+    ``kinsyn solve`` reads it, by homotopy continuation from a ``start`` system
+    (``"total-degree"`` or ``"multi-homogeneous"``), certified by the Krawczyk test unless
+    ``certify`` is false. Messages name the text ``source`` where the command names the file."""
+    return Solutions._from_report(
+        json.loads(_native.solve_json(system, source, seed, start, runs, threads, certify))
+    )
+
+
+def solve_file(
+    path: Union[str, "PathLike[str]"],
+    seed: int = 1,
+    start: str = "total-degree",
+    runs: int = 1,
+    threads: Optional[int] = None,
+    certify: bool = True,
+) -> Solutions:
+    """:func:`solve` for the Bertini input file at ``path`` (``kinsyn solve FILE --json``)."""
+    return Solutions._from_report(
+        json.loads(_native.solve_file_json(path, seed, start, runs, threads, certify))
+    )

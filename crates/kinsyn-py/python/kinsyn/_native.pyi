@@ -1,0 +1,69 @@
+"""Type stubs of the extension module kinsyn._native (the reports are JSON text; the package
+``kinsyn`` turns them into DataFrames and arrays)."""
+
+from os import PathLike
+from typing import List, Optional, Union
+
+class KinsynError(Exception): ...
+class InputError(KinsynError): ...
+
+def catalogue_json() -> str: ...
+def query_json(pattern: str, max_locks: int = 6, family: Optional[str] = None) -> str: ...
+def solve_json(
+    text: str,
+    source: str = "<string>",
+    seed: int = 1,
+    start: str = "total-degree",
+    runs: int = 1,
+    threads: Optional[int] = None,
+    certify: bool = True,
+) -> str: ...
+def solve_file_json(
+    path: Union[str, PathLike[str]],
+    seed: int = 1,
+    start: str = "total-degree",
+    runs: int = 1,
+    threads: Optional[int] = None,
+    certify: bool = True,
+) -> str: ...
+
+class Manipulator:
+    @staticmethod
+    def from_file(path: Union[str, PathLike[str]]) -> Manipulator: ...
+    @staticmethod
+    def from_json(text: str, source: str = "<string>") -> Manipulator: ...
+    @staticmethod
+    def build(
+        chain: str,
+        legs: int = 3,
+        actuated: Optional[List[int]] = None,
+        axes: Optional[str] = None,
+        base_radius: float = 1.0,
+        platform_radius: float = 0.5,
+        height: float = 1.0,
+        twist: float = 0.0,
+        alternate: bool = False,
+        name: Optional[str] = None,
+    ) -> Manipulator: ...
+    @property
+    def name(self) -> str: ...
+    @property
+    def inputs(self) -> List[str]: ...
+    def to_json(self) -> str: ...
+    def analyze_json(
+        self,
+        pose: Optional[str] = None,
+        inputs: Optional[str] = None,
+        lock: Optional[str] = None,
+        seed: int = 2026,
+    ) -> str: ...
+    def modes_json(
+        self,
+        max_locks: Optional[int] = None,
+        lock: Optional[str] = None,
+        pose: Optional[str] = None,
+        max_subsets: int = 4096,
+        seed: int = 2026,
+        samples: int = 3,
+    ) -> str: ...
+    def assemblies_json(self, inputs: Optional[str] = None, seed: int = 2026) -> str: ...

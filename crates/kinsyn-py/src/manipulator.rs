@@ -1,0 +1,258 @@
+//! A parallel manipulator from a description file or built from a leg chain (as `kinsyn
+//! build`), and what the command line computes for it: `analyze`, `modes` and
+//! `analyze --all-assemblies`, each by the command's own code (the crate `kinsyn_cli`).
+
+use crate::error::{Error, py_err};
+use kinsyn::manipulator::build::BuildSpec;
+use kinsyn::manipulator::{self as m, file};
+use kinsyn::mechanism::SampleSettings;
+use kinsyn_cli::{
+    DEFAULT_MAX_SUBSETS, MAX_SAMPLES, MAX_SUBSETS_CEILING, Placement, Selection, all_assemblies_of,
+    analyse_placed, build_checked, modes_json, parse_description, read_text, sample_modes,
+};
+use nalgebra::DMatrix;
+use pyo3::prelude::*;
+use std::path::PathBuf;
+
+/// A parallel manipulator: its description and the mechanism built from it.
+#[pyclass(module = "kinsyn._native", frozen)]
+pub struct Manipulator {
+    inner: m::Manipulator,
+    /// The description as JSON text.
+    description: String,
+    /// The file it was read from, as the messages name it (`<string>` for text).
+    source: String,
+}
+
+/// A matrix as a list of its rows.
+fn matrix_rows(m: &DMatrix<f64>) -> Vec<Vec<f64>> {
+    m.row_iter().map(|r| r.iter().copied().collect()).collect()
+}
+
+impl Manipulator {
+    /// The leg warnings, each naming the source (the command's `warning: FILE: …` lines).
+    fn leg_warnings(&self) -> Vec<String> {
+        self.inner
+            .leg_warnings()
+            .iter()
+            .map(|w| format!("{}: {w}", self.source))
+            .collect()
+    }
+
+    /// `analyze --json` at the configuration of `pose` and `inputs` with `lock` held, with the
+    /// matrices `J_D` and `J_I` themselves (`jd_matrix`, `ji_matrix`, row by row) added.
+    fn analysis(
+        &self,
+        pose: Option<&str>,
+        inputs: Option<&str>,
+        lock: Option<&str>,
+        seed: u64,
+    ) -> Result<String, Error> {
+        let placement = Placement {
+            pose,
+            inputs,
+            ..Placement::default()
+        };
+        let settings = SampleSettings {
+            seed,
+            ..SampleSettings::default()
+        };
+        let analyzed = analyse_placed(&self.inner, &placement, lock, &settings)?;
+        let mut v = analyzed.json(&self.inner, &self.leg_warnings());
+        let j = &analyzed.analysis.jacobians;
+        v["jd_matrix"] = serde_json::json!(matrix_rows(&j.jd));
+        v["ji_matrix"] = serde_json::json!(matrix_rows(&j.ji));
+        Ok(v.to_string())
+    }
+
+    /// `modes --json` for the lock subsets asked for.
+    fn modes_report(
+        &self,
+        max_locks: Option<usize>,
+        lock: Option<&str>,
+        pose: Option<&str>,
+        max_subsets: u32,
+        settings: &SampleSettings,
+    ) -> Result<String, Error> {
+        // The command's clap checks these ranges.
+        if max_subsets == 0 || max_subsets > MAX_SUBSETS_CEILING {
+            return Err(Error::Input(format!(
+                "--max-subsets {max_subsets}: give 1 to {MAX_SUBSETS_CEILING}"
+            )));
+        }
+        if !(2..=usize::from(MAX_SAMPLES)).contains(&settings.samples) {
+            return Err(Error::Input(format!(
+                "--samples {}: give 2 to {MAX_SAMPLES}",
+                settings.samples
+            )));
+        }
+        let selection = match (lock, max_locks) {
+            (Some(set), _) => Selection::Lock(set.to_string()),
+            (None, Some(k)) => Selection::MaxLocks(k),
+            (None, None) => Selection::All,
+        };
+        let modes = sample_modes(
+            &self.inner,
+            &self.source,
+            pose,
+            &selection,
+            max_subsets,
+            settings,
+        )?;
+        Ok(modes_json(&self.inner, &modes, pose, &selection, &self.leg_warnings()).to_string())
+    }
+
+    /// `analyze --all-assemblies --json`: every assembly at the inputs, by homotopy
+    /// continuation on the constraint polynomials in the Study parameters of the platform.
+    fn assemblies_report(&self, inputs: Option<&str>, seed: u64) -> Result<String, Error> {
+        let all = all_assemblies_of(&self.inner, inputs, seed)?;
+        Ok(all.json(&self.inner, &self.leg_warnings()).to_string())
+    }
+}
+
+#[pymethods]
+impl Manipulator {
+    /// The manipulator described by the file at `path` (a kinsyn description, as `kinsyn
+    /// analyze FILE` reads it).
+    #[staticmethod]
+    #[expect(
+        clippy::needless_pass_by_value,
+        reason = "PyO3 converts a Python path (str or os.PathLike) to an owned PathBuf"
+    )]
+    fn from_file(path: PathBuf) -> PyResult<Self> {
+        let description = read_text(&path, file::NOT_A_DESCRIPTION).map_err(py_err)?;
+        let source = path.display().to_string();
+        let inner = parse_description(&description, &source).map_err(py_err)?;
+        Ok(Self {
+            inner,
+            description,
+            source,
+        })
+    }
+
+    /// The manipulator described by the JSON text `text`; messages name it `source`.
+    #[staticmethod]
+    #[pyo3(signature = (text, source = "<string>"))]
+    fn from_json(text: &str, source: &str) -> PyResult<Self> {
+        let inner = parse_description(text, source).map_err(py_err)?;
+        Ok(Self {
+            inner,
+            description: text.to_string(),
+            source: source.to_string(),
+        })
+    }
+
+    /// A manipulator of `legs` identical legs `chain` (a catalogue id or a chain in notation,
+    /// `!` marking inputs) between a base and a platform circle, as `kinsyn build`.
+    #[staticmethod]
+    #[pyo3(signature = (chain, legs = 3, actuated = None, axes = None, base_radius = 1.0,
+        platform_radius = 0.5, height = 1.0, twist = 0.0, alternate = false, name = None))]
+    #[expect(
+        clippy::too_many_arguments,
+        reason = "the options of `kinsyn build`, as Python keyword arguments"
+    )]
+    fn build(
+        chain: String,
+        legs: usize,
+        actuated: Option<Vec<usize>>,
+        axes: Option<String>,
+        base_radius: f64,
+        platform_radius: f64,
+        height: f64,
+        twist: f64,
+        alternate: bool,
+        name: Option<String>,
+    ) -> PyResult<Self> {
+        let spec = BuildSpec {
+            legs,
+            chain,
+            axes,
+            actuated,
+            base_radius,
+            platform_radius,
+            height,
+            twist,
+            alternate,
+            name,
+        };
+        let (description, inner) = build_checked(&spec).map_err(py_err)?;
+        Ok(Self {
+            inner,
+            description: description.to_json(),
+            source: "<built>".into(),
+        })
+    }
+
+    /// The manipulator's name.
+    #[getter]
+    fn name(&self) -> String {
+        self.inner.name().to_string()
+    }
+
+    /// The inputs' labels (`P1.3`: leg 1, primitive joint 3), in order.
+    #[getter]
+    fn inputs(&self) -> Vec<String> {
+        self.inner
+            .actuators()
+            .iter()
+            .map(m::Actuator::label)
+            .collect()
+    }
+
+    /// The description as JSON text (what `kinsyn build` writes).
+    fn to_json(&self) -> String {
+        self.description.clone()
+    }
+
+    /// `kinsyn analyze FILE [--pose P] [--inputs I] [--lock L] --seed S --json`, as JSON text.
+    #[pyo3(signature = (pose = None, inputs = None, lock = None, seed = 2026))]
+    fn analyze_json(
+        &self,
+        py: Python<'_>,
+        pose: Option<&str>,
+        inputs: Option<&str>,
+        lock: Option<&str>,
+        seed: u64,
+    ) -> PyResult<String> {
+        py.detach(|| self.analysis(pose, inputs, lock, seed))
+            .map_err(py_err)
+    }
+
+    /// `kinsyn modes FILE [--max-locks K | --lock L] [--pose P] --json`, as JSON text.
+    #[pyo3(signature = (max_locks = None, lock = None, pose = None,
+        max_subsets = DEFAULT_MAX_SUBSETS, seed = 2026, samples = 3))]
+    #[expect(clippy::too_many_arguments, reason = "the options of `kinsyn modes`")]
+    fn modes_json(
+        &self,
+        py: Python<'_>,
+        max_locks: Option<usize>,
+        lock: Option<&str>,
+        pose: Option<&str>,
+        max_subsets: u32,
+        seed: u64,
+        samples: usize,
+    ) -> PyResult<String> {
+        let settings = SampleSettings {
+            seed,
+            samples,
+            ..SampleSettings::default()
+        };
+        py.detach(|| self.modes_report(max_locks, lock, pose, max_subsets, &settings))
+            .map_err(py_err)
+    }
+
+    /// `kinsyn analyze FILE [--inputs I] --all-assemblies --seed S --json`, as JSON text.
+    #[pyo3(signature = (inputs = None, seed = 2026))]
+    fn assemblies_json(&self, py: Python<'_>, inputs: Option<&str>, seed: u64) -> PyResult<String> {
+        py.detach(|| self.assemblies_report(inputs, seed))
+            .map_err(py_err)
+    }
+
+    fn __repr__(&self) -> String {
+        format!(
+            "Manipulator({:?}, inputs {})",
+            self.inner.name(),
+            self.inputs().join(" ")
+        )
+    }
+}

@@ -1,0 +1,84 @@
+//! `kinsyn solve`: every isolated solution of a polynomial system in Bertini's input format,
+//! by homotopy continuation, certified; the report of `kinsyn solve --json`, computed by the
+//! command's own code ([`kinsyn_cli::solve_system`]).
+
+use crate::error::{Error, py_err};
+use kinsyn::homotopy::StartSystem;
+use kinsyn_cli::{Show, SolveOptions, read_text, solve_system};
+use pyo3::prelude::*;
+use std::path::PathBuf;
+
+/// The start system named `text` (as `kinsyn solve --start`).
+fn start_system(text: &str) -> Result<StartSystem, Error> {
+    match text {
+        "total-degree" => Ok(StartSystem::TotalDegree),
+        "multi-homogeneous" => Ok(StartSystem::MultiHomogeneous),
+        _ => Err(Error::Input(format!(
+            "--start {text:?}: give total-degree or multi-homogeneous"
+        ))),
+    }
+}
+
+/// `kinsyn solve --json` for the system of `text` (named `source` in messages), with the GIL
+/// released while it runs.
+fn solve_report(
+    py: Python<'_>,
+    text: &str,
+    source: &str,
+    (seed, start, runs, threads, certify): (u64, &str, usize, Option<usize>, bool),
+) -> PyResult<String> {
+    let options = SolveOptions {
+        start: start_system(start).map_err(py_err)?,
+        seed,
+        runs,
+        threads,
+        certify,
+        show: Show::None,
+    };
+    let solved = py
+        .detach(|| solve_system(text, source, &options))
+        .map_err(py_err)?;
+    serde_json::to_string(&solved.json())
+        .map_err(|e| py_err(Error::Internal(format!("the solve report: {e}"))))
+}
+
+/// Every isolated solution of the Bertini input `text` (named `source` in messages), as
+/// `kinsyn solve FILE --json`, as JSON text.
+#[pyfunction]
+#[pyo3(signature = (text, source = "<string>", seed = 1, start = "total-degree", runs = 1,
+    threads = None, certify = true))]
+#[expect(clippy::too_many_arguments, reason = "the options of `kinsyn solve`")]
+pub fn solve_json(
+    py: Python<'_>,
+    text: &str,
+    source: &str,
+    seed: u64,
+    start: &str,
+    runs: usize,
+    threads: Option<usize>,
+    certify: bool,
+) -> PyResult<String> {
+    solve_report(py, text, source, (seed, start, runs, threads, certify))
+}
+
+/// [`solve_json`] for the Bertini input file at `path` (messages name the file).
+#[pyfunction]
+#[pyo3(signature = (path, seed = 1, start = "total-degree", runs = 1, threads = None,
+    certify = true))]
+#[expect(
+    clippy::needless_pass_by_value,
+    reason = "PyO3 converts a Python path (str or os.PathLike) to an owned PathBuf"
+)]
+pub fn solve_file_json(
+    py: Python<'_>,
+    path: PathBuf,
+    seed: u64,
+    start: &str,
+    runs: usize,
+    threads: Option<usize>,
+    certify: bool,
+) -> PyResult<String> {
+    let text = read_text(&path, "not a Bertini input file").map_err(py_err)?;
+    let source = path.display().to_string();
+    solve_report(py, &text, &source, (seed, start, runs, threads, certify))
+}
