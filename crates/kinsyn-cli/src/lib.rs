@@ -9,18 +9,27 @@
 //! - `kinsyn analyze`: [`analyse_placed`] and [`Analyzed::json`];
 //! - `kinsyn modes`: [`sample_modes`] and [`modes_json`];
 //! - `kinsyn analyze --all-assemblies`: [`all_assemblies_of`] and [`AllAssemblies::json`];
-//! - `kinsyn solve`: [`solve_system`] and [`Solved::json`].
+//! - `--body`, `--relative-to`, `--legs`: [`select_body`], [`parse_description_legs`];
+//! - `kinsyn solve`: [`solve_system`] and [`Solved::json`];
+//! - `kinsyn configurable inverse|forward|velocity`: [`configurable_inverse`],
+//!   [`configurable_forward`], [`configurable_velocity`] (their `--json` reports as text);
+//! - `kinsyn components`: [`components`] with [`ComponentsOptions`] (its `--json` report).
 //!
 //! The computations are the crate `kinsyn`'s; this crate turns options into requests and
 //! results into reports.
 
 mod cli;
 
+pub use cli::components::{ComponentsOptions, components};
+pub use cli::configurable::{
+    forward as configurable_forward, inverse as configurable_inverse,
+    velocity as configurable_velocity,
+};
 pub use cli::files::{MAX_FILE_BYTES, read_text};
 pub use cli::manipulator::{
     AllAssemblies, Analyzed, DEFAULT_MAX_SUBSETS, MAX_SAMPLES, MAX_SUBSETS_CEILING, Placement,
     Selection, all_assemblies_of, analyse_placed, build_checked, build_flag, modes_json,
-    parse_description, sample_modes,
+    parse_description, parse_description_legs, sample_modes, select_body,
 };
 pub use cli::solve::{MAX_RUNS, MAX_THREADS, Show, SolveOptions, Solved, solve_system};
 pub use cli::terminal::one_line;

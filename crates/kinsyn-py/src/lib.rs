@@ -1,5 +1,6 @@
-//! The Python module `kinsyn._native`: kinsyn's catalogue, manipulators and homotopy solver for
-//! the pure-Python package `kinsyn`, which turns the reports into pandas and numpy objects.
+//! The Python module `kinsyn._native`: kinsyn's catalogue, manipulators, homotopy solver and the
+//! commands of single papers (paper 003's configurable 4-RRR, `components`) for the pure-Python
+//! package `kinsyn`, which turns the reports into pandas and numpy objects.
 //!
 //! Each function gives the report the `kinsyn` command gives with `--json`, as JSON text, and
 //! refuses bad input with the command's one-line message (without its `kinsyn: error: `
@@ -8,6 +9,7 @@
 mod catalogue;
 mod error;
 mod manipulator;
+mod papers;
 mod solve;
 
 use pyo3::prelude::*;
@@ -23,6 +25,10 @@ fn kinsyn_native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(catalogue::query_json, m)?)?;
     m.add_function(wrap_pyfunction!(solve::solve_json, m)?)?;
     m.add_function(wrap_pyfunction!(solve::solve_file_json, m)?)?;
+    m.add_function(wrap_pyfunction!(papers::configurable_inverse_json, m)?)?;
+    m.add_function(wrap_pyfunction!(papers::configurable_forward_json, m)?)?;
+    m.add_function(wrap_pyfunction!(papers::configurable_velocity_json, m)?)?;
+    m.add_function(wrap_pyfunction!(papers::components_json, m)?)?;
     m.add_class::<manipulator::Manipulator>()?;
     Ok(())
 }

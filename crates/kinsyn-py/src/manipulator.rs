@@ -8,10 +8,12 @@ use kinsyn::manipulator::{self as m, file};
 use kinsyn::mechanism::SampleSettings;
 use kinsyn_cli::{
     DEFAULT_MAX_SUBSETS, MAX_SAMPLES, MAX_SUBSETS_CEILING, Placement, Selection, all_assemblies_of,
-    analyse_placed, build_checked, modes_json, parse_description, read_text, sample_modes,
+    analyse_placed, build_checked, modes_json, parse_description, parse_description_legs,
+    read_text, sample_modes, select_body,
 };
 use nalgebra::DMatrix;
 use pyo3::prelude::*;
+use std::borrow::Cow;
 use std::path::PathBuf;
 
 /// A parallel manipulator: its description and the mechanism built from it.
@@ -29,45 +31,75 @@ fn matrix_rows(m: &DMatrix<f64>) -> Vec<Vec<f64>> {
     m.row_iter().map(|r| r.iter().copied().collect()).collect()
 }
 
+/// Which bodies and legs a computation takes: the command's `--body`, `--relative-to` and
+/// `--legs`.
+#[derive(Debug, Default, Clone, Copy)]
+struct Bodies<'a> {
+    /// `--body`: the moving body analysed instead of the description's end-effector.
+    body: Option<&'a str>,
+    /// `--relative-to`: the moving body its motion is taken relative to.
+    relative_to: Option<&'a str>,
+    /// `--legs`: the legs kept (`1-4,29`).
+    legs: Option<&'a str>,
+}
+
 impl Manipulator {
-    /// The leg warnings, each naming the source (the command's `warning: FILE: …` lines).
-    fn leg_warnings(&self) -> Vec<String> {
-        self.inner
-            .leg_warnings()
+    /// The leg warnings of `m` (this manipulator or one of its [`Bodies`] selections), each
+    /// naming the source (the command's `warning: FILE: …` lines).
+    fn leg_warnings(&self, m: &m::Manipulator) -> Vec<String> {
+        m.leg_warnings()
             .iter()
             .map(|w| format!("{}: {w}", self.source))
             .collect()
+    }
+
+    /// The manipulator as the command loads it with `--body`, `--relative-to` and `--legs`.
+    fn selected(&self, bodies: Bodies<'_>) -> Result<Cow<'_, m::Manipulator>, Error> {
+        let Bodies {
+            body,
+            relative_to,
+            legs,
+        } = bodies;
+        if body.is_none() && relative_to.is_none() && legs.is_none() {
+            return Ok(Cow::Borrowed(&self.inner));
+        }
+        let base = match legs {
+            Some(list) => parse_description_legs(&self.description, &self.source, list, body)?,
+            None => self.inner.clone(),
+        };
+        Ok(Cow::Owned(select_body(base, body, relative_to)?))
     }
 
     /// `analyze --json` at the configuration of `pose` and `inputs` with `lock` held, with the
     /// matrices `J_D` and `J_I` themselves (`jd_matrix`, `ji_matrix`, row by row) added.
     fn analysis(
         &self,
-        pose: Option<&str>,
-        inputs: Option<&str>,
+        placement: &Placement<'_>,
         lock: Option<&str>,
         seed: u64,
     ) -> Result<String, Error> {
-        let placement = Placement {
-            pose,
-            inputs,
-            ..Placement::default()
-        };
+        let selected = self.selected(Bodies {
+            body: placement.body,
+            relative_to: placement.relative_to,
+            legs: None,
+        })?;
+        let m = selected.as_ref();
         let settings = SampleSettings {
             seed,
             ..SampleSettings::default()
         };
-        let analyzed = analyse_placed(&self.inner, &placement, lock, &settings)?;
-        let mut v = analyzed.json(&self.inner, &self.leg_warnings());
+        let analyzed = analyse_placed(m, placement, lock, &settings)?;
+        let mut v = analyzed.json(m, &self.leg_warnings(m));
         let j = &analyzed.analysis.jacobians;
         v["jd_matrix"] = serde_json::json!(matrix_rows(&j.jd));
         v["ji_matrix"] = serde_json::json!(matrix_rows(&j.ji));
         Ok(v.to_string())
     }
 
-    /// `modes --json` for the lock subsets asked for.
+    /// `modes --json` for the lock subsets asked for, of the bodies and legs of `bodies`.
     fn modes_report(
         &self,
+        bodies: Bodies<'_>,
         max_locks: Option<usize>,
         lock: Option<&str>,
         pose: Option<&str>,
@@ -91,22 +123,19 @@ impl Manipulator {
             (None, Some(k)) => Selection::MaxLocks(k),
             (None, None) => Selection::All,
         };
-        let modes = sample_modes(
-            &self.inner,
-            &self.source,
-            pose,
-            &selection,
-            max_subsets,
-            settings,
-        )?;
-        Ok(modes_json(&self.inner, &modes, pose, &selection, &self.leg_warnings()).to_string())
+        let selected = self.selected(bodies)?;
+        let m = selected.as_ref();
+        let modes = sample_modes(m, &self.source, pose, &selection, max_subsets, settings)?;
+        Ok(modes_json(m, &modes, pose, &selection, &self.leg_warnings(m)).to_string())
     }
 
     /// `analyze --all-assemblies --json`: every assembly at the inputs, by homotopy
     /// continuation on the constraint polynomials in the Study parameters of the platform.
     fn assemblies_report(&self, inputs: Option<&str>, seed: u64) -> Result<String, Error> {
         let all = all_assemblies_of(&self.inner, inputs, seed)?;
-        Ok(all.json(&self.inner, &self.leg_warnings()).to_string())
+        Ok(all
+            .json(&self.inner, &self.leg_warnings(&self.inner))
+            .to_string())
     }
 }
 
@@ -204,8 +233,16 @@ impl Manipulator {
         self.description.clone()
     }
 
-    /// `kinsyn analyze FILE [--pose P] [--inputs I] [--lock L] --seed S --json`, as JSON text.
-    #[pyo3(signature = (pose = None, inputs = None, lock = None, seed = 2026))]
+    /// `kinsyn analyze FILE [--pose P] [--inputs I] [--lock L] [--body B] [--relative-to R]
+    /// [--study S …] --seed S --json`, as JSON text (`study`: one text `x0:…:y3` per moving
+    /// body, in series order from the ground).
+    #[pyo3(signature = (pose = None, inputs = None, lock = None, seed = 2026, body = None,
+        relative_to = None, study = Vec::new()))]
+    #[expect(clippy::too_many_arguments, reason = "the options of `kinsyn analyze`")]
+    #[expect(
+        clippy::needless_pass_by_value,
+        reason = "PyO3 converts a Python list of str to an owned Vec"
+    )]
     fn analyze_json(
         &self,
         py: Python<'_>,
@@ -213,14 +250,27 @@ impl Manipulator {
         inputs: Option<&str>,
         lock: Option<&str>,
         seed: u64,
+        body: Option<&str>,
+        relative_to: Option<&str>,
+        study: Vec<String>,
     ) -> PyResult<String> {
-        py.detach(|| self.analysis(pose, inputs, lock, seed))
+        let placement = Placement {
+            pose,
+            inputs,
+            body,
+            relative_to,
+            study: &study,
+            ..Placement::default()
+        };
+        py.detach(|| self.analysis(&placement, lock, seed))
             .map_err(py_err)
     }
 
-    /// `kinsyn modes FILE [--max-locks K | --lock L] [--pose P] --json`, as JSON text.
+    /// `kinsyn modes FILE [--max-locks K | --lock L] [--pose P] [--body B] [--relative-to R]
+    /// [--legs LIST] --json`, as JSON text.
     #[pyo3(signature = (max_locks = None, lock = None, pose = None,
-        max_subsets = DEFAULT_MAX_SUBSETS, seed = 2026, samples = 3))]
+        max_subsets = DEFAULT_MAX_SUBSETS, seed = 2026, samples = 3, body = None,
+        relative_to = None, legs = None))]
     #[expect(clippy::too_many_arguments, reason = "the options of `kinsyn modes`")]
     fn modes_json(
         &self,
@@ -231,13 +281,21 @@ impl Manipulator {
         max_subsets: u32,
         seed: u64,
         samples: usize,
+        body: Option<&str>,
+        relative_to: Option<&str>,
+        legs: Option<&str>,
     ) -> PyResult<String> {
+        let bodies = Bodies {
+            body,
+            relative_to,
+            legs,
+        };
         let settings = SampleSettings {
             seed,
             samples,
             ..SampleSettings::default()
         };
-        py.detach(|| self.modes_report(max_locks, lock, pose, max_subsets, &settings))
+        py.detach(|| self.modes_report(bodies, max_locks, lock, pose, max_subsets, &settings))
             .map_err(py_err)
     }
 

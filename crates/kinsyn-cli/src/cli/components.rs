@@ -30,7 +30,14 @@ pub struct ComponentsOptions {
     pub free_inputs: bool,
 }
 
-/// `kinsyn components FILE`: a Bertini input file or a manipulator file.
+/// `kinsyn components FILE`: a Bertini input file or a manipulator file, as text or as the
+/// `--json` report.
+///
+/// # Errors
+///
+/// [`CliError::Input`]: a file that cannot be read or is neither kind, `--inputs` or
+/// `--free-inputs` for a polynomial system, malformed input values, a manipulator whose legs
+/// have no polynomial form, or a decomposition that fails.
 pub fn components(
     path: &Path,
     options: &ComponentsOptions,

@@ -10,6 +10,10 @@ use nalgebra::{Vector2, Vector4};
 use std::fmt::Write as _;
 
 /// Reads `n` comma-separated finite numbers for `option`.
+///
+/// # Errors
+///
+/// [`CliError::Input`], `OPTION "TEXT": …` when the text is not `n` finite numbers.
 pub fn numbers(option: &str, text: &str, n: usize) -> Result<Vec<f64>, CliError> {
     let values: Vec<f64> = text
         .split(',')
@@ -44,7 +48,13 @@ fn point(v: Vector2<f64>) -> String {
     format!("({:.3}, {:.3})", v.x, v.y)
 }
 
-/// `kinsyn configurable inverse`: the up to 16 input sets of a platform pose (§3.2).
+/// `kinsyn configurable inverse`: the up to 16 input sets of a platform pose (§3.2), as text
+/// or as the `--json` report.
+///
+/// # Errors
+///
+/// [`CliError::Input`], naming the option: malformed numbers, neither or both of `--centre`
+/// and `--c4`, or a pose the legs cannot reach.
 pub fn inverse(
     centre: Option<&str>,
     corner: Option<&str>,
@@ -129,7 +139,13 @@ pub fn inverse(
     Ok(out)
 }
 
-/// `kinsyn configurable forward`: every assembly at the inputs by one of §3.2's methods.
+/// `kinsyn configurable forward`: every assembly at the inputs `q_text` (degrees) by §3.2's
+/// method 1 or 2, as text or as the `--json` report.
+///
+/// # Errors
+///
+/// [`CliError::Input`], naming the option: malformed numbers, a method other than 1 and 2,
+/// or a homotopy that fails.
 pub fn forward(q_text: &str, method: u8, as_json: bool) -> Result<String, CliError> {
     let m = Configurable::paper003();
     let q = inputs(q_text)?;
@@ -205,7 +221,12 @@ pub fn forward(q_text: &str, method: u8, as_json: bool) -> Result<String, CliErr
 }
 
 /// `kinsyn configurable velocity`: the corner velocities by screw theory (§4) at the assembly
-/// nearest a given pose (default Table 1's).
+/// nearest a given pose (default Table 1's), as text or as the `--json` report.
+///
+/// # Errors
+///
+/// [`CliError::Input`], naming the option: malformed numbers, no assembly near the pose, or
+/// a singular configuration.
 pub fn velocity(
     q_text: &str,
     qdot_text: &str,

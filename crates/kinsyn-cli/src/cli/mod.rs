@@ -8,8 +8,8 @@
 
 mod args;
 mod catalogue;
-mod components;
-mod configurable;
+pub mod components;
+pub mod configurable;
 mod export;
 pub mod files;
 mod hexa_plot;

@@ -10,7 +10,11 @@ command it mirrors), as pandas DataFrames and numpy arrays:
   per set of locked inputs (:meth:`Manipulator.modes`) and all its assemblies at given inputs
   (:meth:`Manipulator.assemblies`);
 - :func:`solve` and :func:`solve_file`: every isolated solution of a polynomial system in
-  Bertini's input format, by homotopy continuation, certified.
+  Bertini's input format, by homotopy continuation, certified;
+- :func:`components`: the irreducible components (assemblies, self-motions, operation modes)
+  of a manipulator's constraint variety or of a polynomial system (paper 004);
+- :mod:`kinsyn.configurable`: paper 003's planar 4-RRR with a configurable platform (inverse
+  and forward position, velocities by screw theory).
 
 Bad input raises :class:`InputError` (a :class:`KinsynError`) whose ``str()`` is the one-line
 message the command prints after ``kinsyn: error:``.
@@ -40,6 +44,8 @@ __all__ = [
     "Solutions",
     "catalogue",
     "catalogue_patterns",
+    "components",
+    "configurable",
     "query",
     "solve",
     "solve_file",
@@ -74,6 +80,17 @@ def _locks_text(lock: Locks) -> Optional[str]:
     if lock is None or isinstance(lock, str):
         return lock
     return ",".join(lock)
+
+
+Study = Optional[Sequence[Union[str, Sequence[float]]]]
+
+
+def _study_texts(study: Study) -> List[str]:
+    """Study parameters as the command line takes them: one ``"x0:x1:x2:x3:y0:y1:y2:y3"`` per
+    moving body."""
+    if study is None:
+        return []
+    return [s if isinstance(s, str) else ":".join(repr(float(v)) for v in s) for s in study]
 
 
 def _warn(report: Mapping[str, Any]) -> None:
@@ -374,14 +391,31 @@ class Manipulator:
         inputs: Inputs = None,
         lock: Locks = None,
         seed: int = 2026,
+        body: Optional[str] = None,
+        relative_to: Optional[str] = None,
+        study: Study = None,
     ) -> Analysis:
         """The configuration with the platform at ``pose`` (``x,y,z,rx,ry,rz``, or six numbers)
         and/or the ``inputs`` at the values given (``"R1.1=10,P1.3=0.05"`` or a dict; values from
         the reference, angles in the file's unit), reached by continuation from the reference,
         with the inputs of ``lock`` held: its mobility, Jacobians and singularities
-        (``kinsyn analyze FILE [--pose] [--inputs] [--lock] --json``)."""
+        (``kinsyn analyze FILE [--pose] [--inputs] [--lock] --json``).
+
+        With several moving bodies: ``body`` (``--body``) is the one analysed instead of the
+        end-effector, ``relative_to`` (``--relative-to``) a body whose point of view is also
+        reported (``report["relative_motion"]``), and ``study`` (``--study``, one set per moving
+        body in series order from the ground: ``"1:0:0:0:0:0:0:0.75"`` or eight numbers) places
+        every body by its Study parameters (paper 002's Table 1)."""
         r = json.loads(
-            self._m.analyze_json(_pose_text(pose), _inputs_text(inputs), _locks_text(lock), seed)
+            self._m.analyze_json(
+                _pose_text(pose),
+                _inputs_text(inputs),
+                _locks_text(lock),
+                seed,
+                body,
+                relative_to,
+                _study_texts(study),
+            )
         )
         _warn(r)
         return Analysis._from_report(r)
@@ -394,10 +428,17 @@ class Manipulator:
         max_subsets: int = 4096,
         seed: int = 2026,
         samples: int = 3,
+        body: Optional[str] = None,
+        relative_to: Optional[str] = None,
+        legs: Union[str, Sequence[int], None] = None,
     ) -> pd.DataFrame:
         """The platform's motion pattern for each subset of locked inputs (all of them, those
         of at most ``max_locks`` inputs, or the one ``lock``), the locked inputs held at their
-        values at the reference or at ``pose`` (``kinsyn modes FILE … --json``).
+        values at the reference or at ``pose`` (``kinsyn modes FILE … --json``). ``body``
+        (``--body``): the moving body whose motion is classified instead of the end-effector;
+        ``relative_to`` (``--relative-to``): the moving body it is seen from; ``legs``
+        (``--legs``, ``"1-4,29"`` or a list of 1-based leg numbers): only those legs and the
+        bodies they still join to the ground.
 
         One row per lock subset: ``locked`` (the labels, ``"-"`` for none), ``n_locked``,
         ``dof``, ``pattern`` (``"?"`` when the motion could not be sampled), ``group`` (one of
@@ -406,7 +447,15 @@ class Manipulator:
         ``non_groups``)."""
         r = json.loads(
             self._m.modes_json(
-                max_locks, _locks_text(lock), _pose_text(pose), max_subsets, seed, samples
+                max_locks,
+                _locks_text(lock),
+                _pose_text(pose),
+                max_subsets,
+                seed,
+                samples,
+                body,
+                relative_to,
+                legs if legs is None or isinstance(legs, str) else ",".join(str(int(k)) for k in legs),
             )
         )
         _warn(r)
@@ -536,3 +585,49 @@ def solve_file(
     return Solutions._from_report(
         json.loads(_native.solve_file_json(path, seed, start, runs, threads, certify))
     )
+
+
+# --- the components of a constraint variety (paper 004) ---------------------------------------
+
+
+def components(
+    path: Union[str, "PathLike[str]"],
+    inputs: Inputs = None,
+    free_inputs: bool = False,
+    method: str = "by-dimension",
+    seed: int = 1,
+) -> pd.DataFrame:
+    """The irreducible components of the solution set of a manipulator file's constraint
+    equations in the Study parameters of its platform (at the ``inputs``, the reference values
+    for inputs not named; or with every input an unknown when ``free_inputs``) or of a Bertini
+    input file's system, by numerical irreducible decomposition (``kinsyn components FILE
+    [--inputs] [--free-inputs] [--method] --seed S --json``; ``method``: ``"by-dimension"`` or
+    ``"regeneration"``).
+
+    One row per component: ``dimension`` (0: isolated solutions, the assemblies; above 0: a
+    self-motion, or with ``free_inputs`` an operation mode of that many dof), ``degree``,
+    ``real_points``, ``trace_test_passed`` and ``motion`` (for a manipulator's real assemblies,
+    the operation mode: dof and pattern with the inputs released). ``df.attrs["report"]`` is
+    the whole report (paths, junk points, unresolved points, seconds).
+    """
+    r = json.loads(
+        _native.components_json(path, _inputs_text(inputs), free_inputs, method, seed)
+    )
+    df = pd.DataFrame(
+        [
+            {
+                "dimension": c["dimension"],
+                "degree": c["degree"],
+                "real_points": c["real_points"],
+                "trace_test_passed": c["trace_test_passed"],
+                "motion": c.get("motion"),
+            }
+            for c in r["components"]
+        ],
+        columns=["dimension", "degree", "real_points", "trace_test_passed", "motion"],
+    )
+    df.attrs["report"] = r
+    return df
+
+
+from . import configurable  # noqa: E402  (the submodule uses the helpers above)

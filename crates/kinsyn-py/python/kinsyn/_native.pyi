@@ -27,6 +27,19 @@ def solve_file_json(
     certify: bool = True,
 ) -> str: ...
 
+def configurable_inverse_json(
+    theta: float, phi: float, centre: Optional[str] = None, c4: Optional[str] = None
+) -> str: ...
+def configurable_forward_json(q: str, method: int = 2) -> str: ...
+def configurable_velocity_json(q: str, qdot: str, near: Optional[str] = None) -> str: ...
+def components_json(
+    path: Union[str, PathLike[str]],
+    inputs: Optional[str] = None,
+    free_inputs: bool = False,
+    method: str = "by-dimension",
+    seed: int = 1,
+) -> str: ...
+
 class Manipulator:
     @staticmethod
     def from_file(path: Union[str, PathLike[str]]) -> Manipulator: ...
@@ -56,6 +69,9 @@ class Manipulator:
         inputs: Optional[str] = None,
         lock: Optional[str] = None,
         seed: int = 2026,
+        body: Optional[str] = None,
+        relative_to: Optional[str] = None,
+        study: List[str] = ...,
     ) -> str: ...
     def modes_json(
         self,
@@ -65,5 +81,8 @@ class Manipulator:
         max_subsets: int = 4096,
         seed: int = 2026,
         samples: int = 3,
+        body: Optional[str] = None,
+        relative_to: Optional[str] = None,
+        legs: Optional[str] = None,
     ) -> str: ...
     def assemblies_json(self, inputs: Optional[str] = None, seed: int = 2026) -> str: ...

@@ -46,21 +46,37 @@ pub fn parse_description(text: &str, source: &str) -> Result<Manipulator, CliErr
 /// The description a file holds, as the description of several bodies (a `/1` file as its `/2`
 /// form), without building the mechanism.
 pub fn load_description(path: &Path) -> Result<file::MultibodyDescription, CliError> {
-    let shown = path.display();
     let text = crate::cli::files::read_text(path, file::NOT_A_DESCRIPTION)?;
-    file::MultibodyDescription::from_json(&text).map_err(|e| {
+    parse_multibody(&text, &path.display().to_string())
+}
+
+/// The description `text` as the description of several bodies (a `/1` description as its `/2`
+/// form), `source` naming it in messages, without building the mechanism.
+fn parse_multibody(text: &str, source: &str) -> Result<file::MultibodyDescription, CliError> {
+    file::MultibodyDescription::from_json(text).map_err(|e| {
         if e.is_not_a_description() {
-            CliError::Input(format!("{shown} is {}", e.message))
+            CliError::Input(format!("{source} is {}", e.message))
         } else {
-            CliError::Input(format!("{shown}: {e}"))
+            CliError::Input(format!("{source}: {e}"))
         }
     })
 }
 
-/// [`load`] cut down to the legs of `legs` (`--legs 1-4,29`) and the bodies they still join to
-/// the ground, when given: the sub-mechanism, its end-effector `body` when given.
-fn load_legs(path: &Path, legs: &str, body: Option<&str>) -> Result<Manipulator, CliError> {
-    let d = load_description(path)?;
+/// The manipulator the description `text` describes (`source` naming it in messages) cut down
+/// to the legs of `legs` (`--legs 1-4,29`) and the bodies they still join to the ground: the
+/// sub-mechanism, its end-effector `body` when given.
+///
+/// # Errors
+///
+/// [`CliError::Input`]: what [`parse_description`] refuses, or `--legs "…": …` for a malformed
+/// leg list or one that leaves no mechanism.
+pub fn parse_description_legs(
+    text: &str,
+    source: &str,
+    legs: &str,
+    body: Option<&str>,
+) -> Result<Manipulator, CliError> {
+    let d = parse_multibody(text, source)?;
     let refuse = |e: &dyn std::fmt::Display| CliError::Input(format!("--legs {legs:?}: {e}"));
     let kept = kinsyn::manipulator::parse_leg_list(legs, d.legs.len())
         .and_then(|list| d.with_legs(&list, body))
@@ -68,19 +84,18 @@ fn load_legs(path: &Path, legs: &str, body: Option<&str>) -> Result<Manipulator,
     Manipulator::from_bodies(&kept).map_err(|e| refuse(&e))
 }
 
-/// [`load`], with the moving body `body` (`--body NAME`) as the end-effector when given, and its
-/// motion taken relative to the moving body `relative` (`--relative-to NAME`) when given; cut
-/// down to the legs `legs` (`--legs`) when given ([`load_legs`]).
-fn load_with_body(
-    path: &Path,
+/// `m` with the moving body `body` (`--body NAME`) as the end-effector when given, and its
+/// motion taken relative to the moving body `relative` (`--relative-to NAME`) when given.
+///
+/// # Errors
+///
+/// [`CliError::Input`]: `--body "…": …` or `--relative-to "…": …` for a body the manipulator
+/// does not have.
+pub fn select_body(
+    m: Manipulator,
     body: Option<&str>,
     relative: Option<&str>,
-    legs: Option<&str>,
 ) -> Result<Manipulator, CliError> {
-    let m = match legs {
-        Some(list) => load_legs(path, list, body)?,
-        None => load(path)?,
-    };
     let m = match body {
         None => m,
         Some(name) => m
@@ -93,6 +108,24 @@ fn load_with_body(
             .relative_to(name)
             .map_err(|e| CliError::Input(format!("--relative-to {name:?}: {e}"))),
     }
+}
+
+/// [`load`], cut down to the legs `legs` (`--legs`, [`parse_description_legs`]) when given,
+/// with the end-effector and reference body of [`select_body`].
+fn load_with_body(
+    path: &Path,
+    body: Option<&str>,
+    relative: Option<&str>,
+    legs: Option<&str>,
+) -> Result<Manipulator, CliError> {
+    let m = match legs {
+        Some(list) => {
+            let text = crate::cli::files::read_text(path, file::NOT_A_DESCRIPTION)?;
+            parse_description_legs(&text, &path.display().to_string(), list, body)?
+        }
+        None => load(path)?,
+    };
+    select_body(m, body, relative)
 }
 
 /// The leg warnings of `m` (docs/mechanism-format.md, "Leg checks").

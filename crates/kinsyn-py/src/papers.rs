@@ -1,0 +1,90 @@
+//! The commands of single papers: `kinsyn configurable inverse|forward|velocity` (paper 003's
+//! planar 4-RRR with a configurable platform) and `kinsyn components` (the irreducible
+//! components of a manipulator's constraint variety or of a polynomial system; paper 004's
+//! operation modes), each by the command's own code (the crate `kinsyn_cli`).
+
+use crate::error::{Error, py_err};
+use kinsyn::manipulator::DecompositionMethod;
+use kinsyn_cli::{
+    ComponentsOptions, components, configurable_forward, configurable_inverse,
+    configurable_velocity,
+};
+use pyo3::prelude::*;
+use std::path::PathBuf;
+
+/// `kinsyn configurable inverse (--centre X,Y | --c4 X,Y) --theta T --phi P --json`, as JSON
+/// text: the input sets that put paper 003's platform at a pose (lengths in mm, angles in
+/// degrees).
+#[pyfunction]
+#[pyo3(signature = (theta, phi, centre = None, c4 = None))]
+pub fn configurable_inverse_json(
+    py: Python<'_>,
+    theta: f64,
+    phi: f64,
+    centre: Option<&str>,
+    c4: Option<&str>,
+) -> PyResult<String> {
+    py.detach(|| configurable_inverse(centre, c4, theta, phi, true))
+        .map_err(py_err)
+}
+
+/// `kinsyn configurable forward --q Q --method M --json`, as JSON text: every assembly of paper
+/// 003's 4-RRR at the inputs `q` (degrees, comma-separated) by §3.2's method 1 or 2.
+#[pyfunction]
+#[pyo3(signature = (q, method = 2))]
+pub fn configurable_forward_json(py: Python<'_>, q: &str, method: u8) -> PyResult<String> {
+    py.detach(|| configurable_forward(q, method, true))
+        .map_err(py_err)
+}
+
+/// `kinsyn configurable velocity --q Q --qdot QDOT [--near N] --json`, as JSON text: the corner
+/// velocities by screw theory (§4) at the assembly nearest `near` (C4x,C4y,θ,φ; default Table
+/// 1's pose).
+#[pyfunction]
+#[pyo3(signature = (q, qdot, near = None))]
+pub fn configurable_velocity_json(
+    py: Python<'_>,
+    q: &str,
+    qdot: &str,
+    near: Option<&str>,
+) -> PyResult<String> {
+    py.detach(|| configurable_velocity(q, qdot, near, true))
+        .map_err(py_err)
+}
+
+/// `kinsyn components FILE [--inputs I] [--free-inputs] [--method M] --seed S --json`, as JSON
+/// text: the irreducible components of a manipulator file's constraint variety or of a Bertini
+/// input file's system. `method` is `by-dimension` (the default) or `regeneration`.
+#[pyfunction]
+#[pyo3(signature = (path, inputs = None, free_inputs = false, method = "by-dimension", seed = 1))]
+#[expect(
+    clippy::needless_pass_by_value,
+    reason = "PyO3 converts a Python path (str or os.PathLike) to an owned PathBuf"
+)]
+pub fn components_json(
+    py: Python<'_>,
+    path: PathBuf,
+    inputs: Option<String>,
+    free_inputs: bool,
+    method: &str,
+    seed: u64,
+) -> PyResult<String> {
+    // The command's clap parses these names.
+    let method = match method {
+        "by-dimension" => DecompositionMethod::ByDimension,
+        "regeneration" => DecompositionMethod::Regeneration,
+        other => {
+            return Err(py_err(Error::Input(format!(
+                "--method {other:?}: give by-dimension or regeneration"
+            ))));
+        }
+    };
+    let options = ComponentsOptions {
+        seed,
+        method,
+        inputs,
+        free_inputs,
+    };
+    py.detach(|| components(&path, &options, true))
+        .map_err(py_err)
+}
