@@ -584,18 +584,8 @@ pub(super) enum PlotCommand {
         after_help = "Examples:\n  kinsyn plot workspace mechanisms/6-ruu-hexa.json --out figures\n  kinsyn plot workspace mechanisms/6-ruu-hexa.json --phi1 45 --phi2 -45 --step 20 --json"
     )]
     Workspace {
-        /// The HEXA's description, mechanisms/6-ruu-hexa.json or another written by
-        /// `Hexa::description` (its dimensions are read from it; docs/hexa.md).
-        file: PathBuf,
-        /// The folder for the figures (created if missing).
-        #[arg(long, default_value = ".")]
-        out: PathBuf,
-        /// φ1, end-effector 1's turn about z, in degrees (-180 to 180).
-        #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
-        phi1: f64,
-        /// φ2, end-effector 2's turn about z, in degrees (-180 to 180).
-        #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
-        phi2: f64,
+        #[command(flatten)]
+        hexa: HexaPlot,
         /// The grid step in mm.
         #[arg(long, default_value_t = 10.0, allow_hyphen_values = true)]
         step: f64,
@@ -610,18 +600,8 @@ pub(super) enum PlotCommand {
         after_help = "Examples:\n  kinsyn plot indices mechanisms/6-ruu-hexa.json --out figures\n  kinsyn plot indices mechanisms/6-ruu-hexa.json --phi1 45 --phi2 -45 --json"
     )]
     Indices {
-        /// The HEXA's description, mechanisms/6-ruu-hexa.json or another written by
-        /// `Hexa::description` (its dimensions are read from it; docs/hexa.md).
-        file: PathBuf,
-        /// The folder for the figures (created if missing).
-        #[arg(long, default_value = ".")]
-        out: PathBuf,
-        /// φ1 in degrees (-180 to 180).
-        #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
-        phi1: f64,
-        /// φ2 in degrees (-180 to 180).
-        #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
-        phi2: f64,
+        #[command(flatten)]
+        hexa: HexaPlot,
         /// The height of the map in mm (default: the middle of the regular workspace).
         #[arg(long, allow_hyphen_values = true)]
         z: Option<f64>,
@@ -710,4 +690,21 @@ pub(super) enum ConfigurableCommand {
         #[arg(long)]
         json: bool,
     },
+}
+
+/// What both paper 001 figures take: the HEXA's file, the output folder, the orientations.
+#[derive(Debug, Args)]
+pub struct HexaPlot {
+    /// The HEXA's description, mechanisms/6-ruu-hexa.json or another written by
+    /// `Hexa::description` (its dimensions are read from it; docs/hexa.md).
+    pub file: PathBuf,
+    /// The folder for the figures (created if missing).
+    #[arg(long, default_value = ".")]
+    pub out: PathBuf,
+    /// φ1, end-effector 1's turn about z, in degrees (-180 to 180).
+    #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
+    pub phi1: f64,
+    /// φ2, end-effector 2's turn about z, in degrees (-180 to 180).
+    #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
+    pub phi2: f64,
 }

@@ -1,6 +1,7 @@
 //! `kinsyn plot workspace` and `kinsyn plot indices`: paper 001's Figs. 3 and 4 (the HEXA with
 //! reconfigurable platforms) drawn by kinsyn, as SVG and PNG.
 
+use super::plot::draw_error;
 use super::{CliError, json, terminal};
 use kinsyn::hexa::{
     Cylinder, Hexa, IndexMap, IndexMapSettings, Indices, Workspace, WorkspaceError,
@@ -8,6 +9,7 @@ use kinsyn::hexa::{
 };
 use nalgebra::Vector3;
 use plotters::coord::Shift;
+use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
 use std::fmt::Write as _;
 use std::path::Path;
@@ -33,10 +35,7 @@ pub fn register_font() {
     });
 }
 
-fn draw_error(e: impl std::fmt::Display) -> CliError {
-    CliError::Io(std::io::Error::other(e.to_string()))
-}
-
+/// A refusal of the workspace search as bad input.
 fn input_error(e: &WorkspaceError) -> CliError {
     CliError::Input(e.to_string())
 }
@@ -392,14 +391,7 @@ fn draw_workspace<DB: DrawingBackend>(
                 });
         }
         if p == 0 {
-            chart
-                .configure_series_labels()
-                .position(SeriesLabelPosition::UpperLeft)
-                .label_font(("sans-serif", 13))
-                .background_style(WHITE.mix(0.85))
-                .border_style(BLACK)
-                .draw()
-                .map_err(draw_error)?;
+            legend(&mut chart, SeriesLabelPosition::UpperLeft)?;
         }
     }
     Ok(())
@@ -495,15 +487,23 @@ fn draw_four_bar<DB: DrawingBackend>(
         .map_err(draw_error)?
         .label("P1")
         .legend(|(x, y)| Circle::new((x + 6, y), 4, GREEN_CELL.filled()));
+    legend(&mut chart, SeriesLabelPosition::LowerMiddle)?;
+    Ok(())
+}
+
+/// The figures' legend box, at `position`.
+fn legend<'a, DB: DrawingBackend + 'a>(
+    chart: &mut ChartContext<'a, DB, Cartesian2d<RangedCoordf64, RangedCoordf64>>,
+    position: SeriesLabelPosition,
+) -> Result<(), CliError> {
     chart
         .configure_series_labels()
-        .position(SeriesLabelPosition::LowerMiddle)
+        .position(position)
         .label_font(("sans-serif", 13))
         .background_style(WHITE.mix(0.85))
         .border_style(BLACK)
         .draw()
-        .map_err(draw_error)?;
-    Ok(())
+        .map_err(draw_error)
 }
 
 /// The index maps' settings from the command line.

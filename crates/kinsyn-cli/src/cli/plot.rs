@@ -22,7 +22,8 @@ fn table1() -> CornerPose {
     }
 }
 
-fn draw_error(e: impl std::fmt::Display) -> CliError {
+/// A figure that could not be drawn or written, as an I/O failure.
+pub(super) fn draw_error(e: impl std::fmt::Display) -> CliError {
     CliError::Io(std::io::Error::other(e.to_string()))
 }
 
