@@ -123,17 +123,7 @@ impl Hexa {
     /// ([`Configuration::four_bar`]).
     #[must_use]
     pub fn end_effector2_jacobian(&self, conf: &Configuration) -> Option<Matrix2<f64>> {
-        let p2_rate = self.coupler_rate(conf)?;
-        let p2 = conf.pose.p2();
-        let row = |k: usize| {
-            let w = conf.limbs[k].w;
-            [
-                w.dot(&p2_rate),
-                w.dot(&Vector3::z().cross(&(conf.joints[k] - p2))),
-            ]
-        };
-        let (r4, r5) = (row(3), row(4));
-        Some(Matrix2::new(r4[0], r4[1], r5[0], r5[1]))
+        Some(end_effector2_rows(conf, &self.coupler_rate(conf)?))
     }
 
     /// `ξ_4`, `ξ_5` (eq. 17 as defined in the module documentation): the cosine of the pressure
@@ -141,16 +131,14 @@ impl Hexa {
     /// end-effector 1 held. `[0, 0]` when `P2` is off the four-bar.
     #[must_use]
     pub fn end_effector2_indices(&self, conf: &Configuration) -> [f64; 2] {
-        let (Some(m), Some(p2_rate)) = (self.end_effector2_jacobian(conf), self.coupler_rate(conf))
-        else {
+        let Some(p2_rate) = self.coupler_rate(conf) else {
             return [0.0, 0.0];
         };
-        let p2 = conf.pose.p2();
+        let m = end_effector2_rows(conf, &p2_rate);
         [(3usize, 1usize), (4, 0)].map(|(k, other)| {
             // The motion the other limb allows: orthogonal to its row.
-            let (a, b) = (m[(other, 1)], -m[(other, 0)]);
-            let velocity = p2_rate * a + Vector3::z().cross(&(conf.joints[k] - p2)) * b;
-            transmission_cosine(&conf.limbs[k], &velocity)
+            let motion = (m[(other, 1)], -m[(other, 0)]);
+            transmission_cosine(&conf.limbs[k], &joint_velocity(conf, &p2_rate, k, motion))
         })
     }
 
@@ -164,6 +152,33 @@ impl Hexa {
             xi: self.end_effector2_indices(conf),
         }
     }
+}
+
+/// The velocity of the platform joint `C_k` of end-effector 2 (end-effector 1 held) when the
+/// four-bar moves at `four_bar` units of `p2_rate` and end-effector 2 turns at `φ̇2` about `k`.
+fn joint_velocity(
+    conf: &Configuration,
+    p2_rate: &Vector3<f64>,
+    k: usize,
+    (four_bar, phi2_rate): (f64, f64),
+) -> Vector3<f64> {
+    p2_rate * four_bar + Vector3::z().cross(&(conf.joints[k] - conf.pose.p2())) * phi2_rate
+}
+
+/// End-effector 2's Jacobian: rows limbs 4 and 5 (`w_k · ċ_k`), columns the four-bar's motion
+/// and `φ̇2`.
+fn end_effector2_rows(conf: &Configuration, p2_rate: &Vector3<f64>) -> Matrix2<f64> {
+    let entry = |k: usize, motion| {
+        conf.limbs[k]
+            .w
+            .dot(&joint_velocity(conf, p2_rate, k, motion))
+    };
+    Matrix2::new(
+        entry(3, (1.0, 0.0)),
+        entry(3, (0.0, 1.0)),
+        entry(4, (1.0, 0.0)),
+        entry(4, (0.0, 1.0)),
+    )
 }
 
 /// `|w · v| / (|w| |v|)`: the share of the limb's force that does work on the velocity `v` of its
