@@ -40,5 +40,6 @@ pub mod schematic;
 pub mod screw;
 pub mod series;
 pub mod spatial;
+pub mod sweep;
 pub mod synthesis;
 pub mod verification;

@@ -25,10 +25,10 @@ use nalgebra::{DMatrix, DVector, Vector3};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use rand_distr::StandardNormal;
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 /// How a finite motion is sampled.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct SampleSettings {
     /// Configurations sampled (each the end of its own random walk from the start).
     pub samples: usize,
