@@ -344,6 +344,95 @@ pub fn nullspace_scaled(
     (d.v.columns(rank.rank, cols - rank.rank).into_owned(), rank)
 }
 
+/// A wide matrix `A` (m × n, m ≤ n) whose full row rank is certified without an SVD, factored
+/// as `Aᵀ = Q₁ R` (Householder QR, `R` m × m upper triangular) with `Q = [Q₁ Q₂]` orthogonal:
+/// `Q₁` spans the row space of `A`, `Q₂` its null space (the rates that keep its equations).
+///
+/// **The certificate.** The decision is the SVD's: rank m when `σ_m > tolerance · σ_1`. The
+/// factors bound both values, `σ_1 ≤ ‖A‖_F` and `σ_m = 1/‖R⁻¹‖₂ ≥ 1/‖R⁻¹‖_F`, so
+/// `1/‖R⁻¹‖_F > tolerance · ‖A‖_F` proves the rank m; the bounds lose at most a factor √m
+/// each, so a matrix whose smallest singular value is within that factor of the cut, or
+/// below it, is not certified and the caller takes the SVD ([`full_row_rank`] returns `None`).
+/// Householder QR is backward stable, so the round-off in these bounds is of the order of
+/// `ε ‖A‖`, far below any tolerance used here (1e-9 and up).
+#[derive(Debug, Clone)]
+pub struct FullRowRank {
+    /// The orthogonal factor, n × n: the first m columns span the row space, the others the
+    /// null space.
+    q: DMatrix<f64>,
+    /// The rows m of the matrix.
+    rows: usize,
+}
+
+/// The certified factorisation of `a` when its rank is its number of rows at relative tolerance
+/// `tolerance` (relative to its largest singular value), `None` when that cannot be certified
+/// (more rows than columns, a rank below the rows, or a smallest singular value too near the
+/// cut for the bounds of [`FullRowRank`]): then ask [`svd`].
+#[must_use]
+pub fn full_row_rank(a: &DMatrix<f64>, tolerance: f64) -> Option<FullRowRank> {
+    let (m, n) = a.shape();
+    if m > n || m == 0 {
+        return None;
+    }
+    let norm = a.norm();
+    if !norm.is_finite() || norm == 0.0 {
+        return None;
+    }
+    let qr = a.transpose().qr();
+    let r = qr.r();
+    // ‖R⁻¹‖_F from the triangular inverse (columns of R⁻¹ solve R x = e_k).
+    let mut inverse = DMatrix::<f64>::identity(m, m);
+    if !r.solve_upper_triangular_mut(&mut inverse) {
+        return None;
+    }
+    let inverse_norm = inverse.norm();
+    if !inverse_norm.is_finite() || inverse_norm * tolerance * norm >= 1.0 {
+        return None;
+    }
+    let mut qt = DMatrix::<f64>::identity(n, n);
+    qr.q_tr_mul(&mut qt);
+    Some(FullRowRank {
+        q: qt.transpose(),
+        rows: m,
+    })
+}
+
+impl FullRowRank {
+    /// The rows m of the matrix factored (its rank).
+    #[must_use]
+    pub fn rank(&self) -> usize {
+        self.rows
+    }
+
+    /// An orthonormal basis (columns) of the null space of the matrix: n − m vectors.
+    #[must_use]
+    pub fn null_basis(&self) -> DMatrix<f64> {
+        let m = self.rank();
+        self.q.columns(m, self.q.ncols() - m).into_owned()
+    }
+}
+
+/// The Gauss–Newton step of least norm for the equations `a x = b` (m ≤ n unknowns): `x = aᵀ
+/// (a aᵀ)⁻¹ b`, from the Householder QR `aᵀ = Q₁ R` as `x = aᵀ R⁻¹ R⁻ᵀ b`; `None` when a
+/// diagonal entry of `R` is below `tolerance` times the largest (equations dependent or
+/// nearly so: take the damped steps of an SVD instead). No rank is decided here: the caller
+/// keeps the step only if it reduces the residual.
+#[must_use]
+pub fn min_norm_step(a: &DMatrix<f64>, b: &DVector<f64>, tolerance: f64) -> Option<DVector<f64>> {
+    let (m, n) = a.shape();
+    if m > n || m == 0 || b.len() != m {
+        return None;
+    }
+    let r = a.transpose().qr().unpack_r();
+    let largest = r.diagonal().amax();
+    if !largest.is_finite() || r.diagonal().iter().any(|d| d.abs() <= tolerance * largest) {
+        return None;
+    }
+    let y = r.tr_solve_upper_triangular(b)?;
+    let z = r.solve_upper_triangular(&y)?;
+    Some(a.tr_mul(&z))
+}
+
 /// The truncated least-squares solution of `a x ≈ b` ([`least_squares`]).
 #[derive(Debug, Clone, PartialEq)]
 pub struct LeastSquares {

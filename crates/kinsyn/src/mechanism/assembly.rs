@@ -57,6 +57,20 @@ impl Default for AssemblySettings {
 /// A residual at the round-off of dimensionless coordinates of order one: no step can improve it.
 const ROUND_OFF: f64 = 1e-14;
 
+/// The smallest diagonal entry of the QR factor, relative to the largest, with which the
+/// undamped Newton step by QR is tried ([`linalg::min_norm_step`]); nearer dependent equations
+/// take the damped steps by SVD.
+const NEWTON_RANK_TOLERANCE: f64 = 1e-8;
+
+/// Limits a dimensionless Newton step so that no joint turns by more than half a radian (or
+/// slides by half the length scale).
+fn clamp_step(step: &mut DVector<f64>) {
+    let largest = step.amax();
+    if largest > 0.5 {
+        *step *= 0.5 / largest;
+    }
+}
+
 /// A coordinate of a frame's pose: its origin's position components, or its rotation vector's.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Coordinate {
@@ -257,7 +271,7 @@ impl Mechanism {
         let (mut rows, mut residual) = self.equations(&q, goal);
         let mut norm = residual.norm();
         // Damping relative to the largest squared singular value of the step's matrix.
-        let mut damping = 1e-12;
+        let mut damping: f64 = 1e-12;
         // Once the tolerance is met, a few more steps polish the solution to round-off (each
         // is kept only if it helps): derivatives by finite differences of assemblies need it.
         let mut polish = 0;
@@ -270,6 +284,22 @@ impl Mechanism {
                 }
             }
             let af = DMatrix::from_fn(rows.nrows(), free.len(), |r, k| rows[(r, free[k])]);
+            // The Gauss–Newton step of least norm, by a certified QR when the equations are
+            // independent; kept when it reduces the residual, as the least-damped step below
+            // would be. Otherwise (dependent equations, or no decrease) the damped steps by SVD.
+            if let Some(mut step) = linalg::min_norm_step(&af, &residual, NEWTON_RANK_TOLERANCE) {
+                clamp_step(&mut step);
+                let trial = self.stepped(&q, &free, &step);
+                if trial.iter().all(|x| x.is_finite()) {
+                    let (trial_rows, trial_residual) = self.equations(&trial, goal);
+                    let trial_norm = trial_residual.norm();
+                    if trial_norm < norm {
+                        (q, rows, residual, norm) = (trial, trial_rows, trial_residual, trial_norm);
+                        damping = (damping / 10.0).max(1e-20);
+                        continue;
+                    }
+                }
+            }
             let d = linalg::svd(&af);
             let top = d.singular_values.first().copied().unwrap_or(0.0);
             if top == 0.0 {
@@ -285,15 +315,8 @@ impl Mechanism {
                         step += d.v.column(k) * (s / (s * s + lambda) * projected[k]);
                     }
                 }
-                // No joint turns by more than half a radian in one step.
-                let largest = step.amax();
-                if largest > 0.5 {
-                    step *= 0.5 / largest;
-                }
-                let mut trial = q.clone();
-                for (k, &j) in free.iter().enumerate() {
-                    trial[j] -= step[k] * self.unit(j);
-                }
+                clamp_step(&mut step);
+                let trial = self.stepped(&q, &free, &step);
                 if !trial.iter().all(|x| x.is_finite()) {
                     damping *= 10.0;
                     continue;
@@ -329,6 +352,16 @@ impl Mechanism {
             residual: residual.amax(),
             iterations: settings.max_steps,
         })
+    }
+
+    /// The joint values `q` moved by the dimensionless Newton `step` of the `free` joints (the
+    /// step is subtracted: it is the change that cancels the residual's linear part).
+    fn stepped(&self, q: &[f64], free: &[usize], step: &DVector<f64>) -> Vec<f64> {
+        let mut trial = q.to_vec();
+        for (k, &j) in free.iter().enumerate() {
+            trial[j] -= step[k] * self.unit(j);
+        }
+        trial
     }
 
     /// The dimensionless equations at `q`: loop closure (6 rows per loop), then the goal's;

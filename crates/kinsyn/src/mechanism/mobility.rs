@@ -69,6 +69,23 @@ impl Mechanism {
         linalg::nullspace(&cf, MOBILITY_TOLERANCE)
     }
 
+    /// An orthonormal basis of the dimensionless rates of the `free` joints that keep every loop
+    /// closed: the null space of [`Mechanism::unitless_rates`], found by a certified QR when
+    /// the closure equations are independent (the rank decision is then the SVD's, see
+    /// [`linalg::FullRowRank`]) and by the SVD otherwise. Only the span is asked for here,
+    /// not the singular values: the hot path of sampled motions.
+    pub(super) fn unitless_rate_basis(&self, screws: &[Twist], free: &[usize]) -> DMatrix<f64> {
+        let c = self.dimensionless(&self.closure_jacobian(screws));
+        let cf = DMatrix::from_fn(c.nrows(), free.len(), |r, k| c[(r, free[k])]);
+        if cf.nrows() == 0 {
+            return DMatrix::identity(free.len(), free.len());
+        }
+        match linalg::full_row_rank(&cf, MOBILITY_TOLERANCE) {
+            Some(f) => f.null_basis(),
+            None => linalg::nullspace(&cf, MOBILITY_TOLERANCE).0,
+        }
+    }
+
     /// The twist space of `body` at `q` with the `locked` joints held: a basis (columns) of the
     /// spatial twists `(ω; v)` it can have, and the local degrees of freedom (its dimension).
     #[must_use]
@@ -103,7 +120,7 @@ impl Mechanism {
         locked: &[bool],
     ) -> (DMatrix<f64>, linalg::Rank) {
         let free = self.free(locked);
-        let (rates, _) = self.unitless_rates(screws, &free);
+        let rates = self.unitless_rate_basis(screws, &free);
         let j = self.dimensionless(jacobian);
         let jf = DMatrix::from_fn(6, free.len(), |r, k| j[(r, free[k])]);
         let norm = jf.norm();

@@ -102,16 +102,14 @@ impl Mechanism {
     ) -> Result<Vec<f64>, MechanismError> {
         let mut q = start.to_vec();
         for _ in 0..settings.steps {
-            let m = self.mobility(&q, locked);
-            if m.dof == 0 {
+            let rates = self.unitless_rate_basis(&self.joint_screws(&q), free);
+            if rates.ncols() == 0 {
                 break;
             }
             // An isotropic direction in the dimensionless compatible rates.
-            let coefficients = DVector::from_fn(m.dof, |_, _| rng.sample::<f64, _>(StandardNormal));
-            let mut direction = &m.rates * coefficients;
-            for (k, &j) in free.iter().enumerate() {
-                direction[k] /= self.unit(j);
-            }
+            let coefficients =
+                DVector::from_fn(rates.ncols(), |_, _| rng.sample::<f64, _>(StandardNormal));
+            let mut direction = &rates * coefficients;
             let norm = direction.norm();
             if norm < 1e-15 {
                 break;
