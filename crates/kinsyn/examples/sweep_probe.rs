@@ -9,7 +9,9 @@ fn main() {
         .unwrap_or(20);
     let cat = Catalogue::committed().unwrap();
     let mut s = SweepSettings::default();
-    if let Some(seed) = std::env::args().nth(3).and_then(|a| a.parse().ok()) { s.sampling.seed = seed; }
+    if let Some(seed) = std::env::args().nth(3).and_then(|a| a.parse().ok()) {
+        s.sampling.seed = seed;
+    }
     let all = designs(&cat, &s);
     let picked: Vec<_> = all.iter().step_by(every).collect();
     let t = std::time::Instant::now();

@@ -371,30 +371,97 @@ pub struct FullRowRank {
 #[must_use]
 pub fn full_row_rank(a: &DMatrix<f64>, tolerance: f64) -> Option<FullRowRank> {
     let (m, n) = a.shape();
-    if m > n || m == 0 {
-        return None;
-    }
-    let norm = a.norm();
-    if !norm.is_finite() || norm == 0.0 {
-        return None;
-    }
-    let qr = a.transpose().qr();
-    let r = qr.r();
-    // ‖R⁻¹‖_F from the triangular inverse (columns of R⁻¹ solve R x = e_k).
-    let mut inverse = DMatrix::<f64>::identity(m, m);
-    if !r.solve_upper_triangular_mut(&mut inverse) {
-        return None;
-    }
-    let inverse_norm = inverse.norm();
-    if !inverse_norm.is_finite() || inverse_norm * tolerance * norm >= 1.0 {
-        return None;
-    }
+    let qr = certified_independent_columns(&a.transpose(), tolerance)?;
     let mut qt = DMatrix::<f64>::identity(n, n);
     qr.q_tr_mul(&mut qt);
     Some(FullRowRank {
         q: qt.transpose(),
         rows: m,
     })
+}
+
+/// The Householder QR of `m` when its columns are certified independent at relative tolerance
+/// `tolerance` (every singular value above `tolerance ×` the largest, by the bounds of
+/// [`FullRowRank`]); `None` when that cannot be certified.
+fn certified_independent_columns(
+    m: &DMatrix<f64>,
+    tolerance: f64,
+) -> Option<nalgebra::linalg::QR<f64, nalgebra::Dyn, nalgebra::Dyn>> {
+    let (rows, cols) = m.shape();
+    if cols > rows || cols == 0 {
+        return None;
+    }
+    let norm = m.norm();
+    if !norm.is_finite() || norm == 0.0 {
+        return None;
+    }
+    let qr = m.clone().qr();
+    // ‖R⁻¹‖_F from the triangular inverse (columns of R⁻¹ solve R x = e_k).
+    let mut inverse = DMatrix::<f64>::identity(cols, cols);
+    if !qr.r().solve_upper_triangular_mut(&mut inverse) {
+        return None;
+    }
+    let inverse_norm = inverse.norm();
+    (inverse_norm.is_finite() && inverse_norm * tolerance * norm < 1.0).then_some(qr)
+}
+
+/// The rank of `m` as [`Svd::rank`] decides it (singular values above `tolerance ×` the scale:
+/// `scale`, or the largest singular value when `None`), certified from a QR with column
+/// pivoting `m P = Q [R₁₁ R₁₂; 0 R₂₂]` (`R₁₁` r × r) where it can be, by the SVD otherwise.
+///
+/// **The certificate** holds for any pivoting: removing rows or columns does not raise singular
+/// values, so `σ_r(m) ≥ σ_min(R₁₁) ≥ 1/‖R₁₁⁻¹‖_F`; and `[R₁₁ R₁₂; 0 0]` has rank r, so
+/// `σ_(r+1)(m) ≤ ‖R₂₂‖₂ ≤ ‖R₂₂‖_F` (Eckart–Young). With the largest singular value between
+/// `‖m‖_F/√k` and `‖m‖_F` (k columns), the rank is r for certain when the first bound is above
+/// the cut and the second below it. The r tried is the number of diagonal entries of `R` above
+/// the cut; where the bounds leave it open, the singular values are computed.
+#[must_use]
+pub fn rank_quick(m: &DMatrix<f64>, tolerance: f64, scale: Option<f64>) -> usize {
+    let (rows, cols) = m.shape();
+    let norm = m.norm();
+    if rows == 0 || cols == 0 || norm == 0.0 {
+        return 0;
+    }
+    if !norm.is_finite() {
+        return svd(m).rank(tolerance, scale).rank;
+    }
+    // The cut, for certain above (keep) and for certain below (drop).
+    let (keep_above, drop_below) = match scale {
+        Some(s) => (tolerance * s, tolerance * s),
+        #[expect(clippy::cast_precision_loss, reason = "a column count")]
+        None => (tolerance * norm, tolerance * norm / (cols as f64).sqrt()),
+    };
+    let qr = m.clone().col_piv_qr();
+    let r_full = qr.r();
+    let k = rows.min(cols);
+    let r = (0..k)
+        .filter(|&i| r_full[(i, i)].abs() > keep_above)
+        .count();
+    let lower_ok = r == 0 || {
+        let mut inverse = DMatrix::<f64>::identity(r, r);
+        let r11 = r_full.view((0, 0), (r, r)).into_owned();
+        r11.solve_upper_triangular_mut(&mut inverse) && inverse.norm() * keep_above < 1.0
+    };
+    let upper_ok = r_full.view((r, r), (k - r, cols - r)).norm() <= drop_below;
+    if lower_ok && upper_ok {
+        return r;
+    }
+    svd(m).rank(tolerance, scale).rank
+}
+
+/// An orthonormal basis of the span of the columns of `m` and its dimension, the rank decided
+/// as [`span_basis`] decides it (relative tolerance `tolerance` of the largest singular value):
+/// by a certified QR when the columns are independent ([`FullRowRank`]'s bounds), by the SVD
+/// otherwise. For deciding patterns, where the singular values themselves are not reported.
+#[must_use]
+pub fn span_basis_quick(m: &DMatrix<f64>, tolerance: f64) -> (DMatrix<f64>, usize) {
+    match certified_independent_columns(m, tolerance) {
+        Some(qr) => (qr.q(), m.ncols()),
+        None => {
+            let (basis, rank) = span_basis(m, tolerance);
+            (basis, rank.rank)
+        }
+    }
 }
 
 impl FullRowRank {

@@ -753,10 +753,12 @@ pub fn classify_subalgebra(basis: &DMatrix<f64>, tolerance: f64) -> Option<Group
     let k = basis.ncols();
     let omega = basis.rows(0, 3).into_owned();
     // The basis is orthonormal, so the blocks are judged against 1, not their own largest value.
-    let (rot_basis, rot_rank) = linalg::span_basis_scaled(&omega, tolerance, Some(1.0));
-    let r = rot_rank.rank;
+    // One SVD gives the rotations' span (left vectors) and the pure translations (right).
+    let d = linalg::svd(&omega);
+    let r = d.rank(tolerance, Some(1.0)).rank;
+    let rot_basis = d.u.columns(0, r);
     // Pure translations in the span: combinations x with ω-part zero.
-    let (null, _) = linalg::nullspace_scaled(&omega, tolerance, Some(1.0));
+    let null = d.v.columns(r, k - r);
     let translations = basis * &null; // 6 × (k − r)
     let t_dirs = translations.rows(3, 3).into_owned();
     let group = |kind,
@@ -883,16 +885,56 @@ pub fn classify(samples: &[DMatrix<f64>], min_separation: f64, tolerance: f64) -
         .iter()
         .map(|m| linalg::span_basis(m, linalg::DEFAULT_RANK_TOLERANCE))
         .collect();
-    let dof = spans.iter().map(|(_, r)| r.rank).max().unwrap_or(0);
+    let bases: Vec<(DMatrix<f64>, usize)> =
+        spans.iter().map(|(b, r)| (b.clone(), r.rank)).collect();
+    classify_spans(
+        &bases,
+        (samples.len() >= 2).then_some(min_separation),
+        tolerance,
+        gap_over(spans.iter().map(|(_, r)| r)),
+    )
+}
+
+/// [`classify`] deciding each sample's rank by a certified QR where its twists are
+/// independent, and by the SVD only where they are not (the same decisions,
+/// [`linalg::span_basis_quick`]): for callers that want the pattern, not the singular values
+/// behind it. The classification's `rank_gap` is `rank_gap` as given.
+#[must_use]
+pub fn classify_quick(
+    samples: &[DMatrix<f64>],
+    min_separation: f64,
+    tolerance: f64,
+    rank_gap: RankGap,
+) -> Classification {
+    let spans: Vec<(DMatrix<f64>, usize)> = samples
+        .iter()
+        .map(|m| linalg::span_basis_quick(m, linalg::DEFAULT_RANK_TOLERANCE))
+        .collect();
+    classify_spans(
+        &spans,
+        (samples.len() >= 2).then_some(min_separation),
+        tolerance,
+        rank_gap,
+    )
+}
+
+/// The classification of the motion whose twist spaces at the samples are the orthonormal
+/// bases `spans` (each with its dimension), the samples at least `min_separation` apart (`None`
+/// with fewer than two), the rank decisions' gap `rank_gap` (see [`classify`]).
+fn classify_spans(
+    spans: &[(DMatrix<f64>, usize)],
+    min_separation: Option<f64>,
+    tolerance: f64,
+    rank_gap: RankGap,
+) -> Classification {
+    let dof = spans.iter().map(|(_, r)| *r).max().unwrap_or(0);
     let generic: Vec<&DMatrix<f64>> = spans
         .iter()
-        .filter(|(_, r)| r.rank == dof)
+        .filter(|(_, r)| *r == dof)
         .map(|(b, _)| b)
         .collect();
-    let same = spans.iter().all(|(_, r)| r.rank == dof)
+    let same = spans.iter().all(|(_, r)| *r == dof)
         && generic.windows(2).all(|w| same_span(w[0], w[1], tolerance));
-    let min_separation = (samples.len() >= 2).then_some(min_separation);
-    let rank_gap = gap_over(spans.iter().map(|(_, r)| r));
     let evidence = dof == 0 || min_separation.is_some_and(|d| d >= MIN_SEPARATION);
     if let Some(first) = generic.first()
         && same
@@ -910,11 +952,8 @@ pub fn classify(samples: &[DMatrix<f64>], min_separation: f64, tolerance: f64) -
     }
     let rotations = generic
         .iter()
-        .map(|b| {
-            linalg::span_basis_scaled(&b.rows(0, 3).into_owned(), tolerance, Some(1.0))
-                .1
-                .rank
-        })
+        // The rank of the rotation rows of an orthonormal basis, judged against 1.
+        .map(|b| linalg::rank_quick(&b.rows(0, 3).into_owned(), tolerance, Some(1.0)))
         .max()
         .unwrap_or(0);
     Classification {

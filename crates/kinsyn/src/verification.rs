@@ -135,6 +135,42 @@ pub fn locked_motion(
     configurations: &[Vec<f64>],
     settings: &Settings,
 ) -> Classification {
+    let (samples, separation) = locked_samples(chain, mask, configurations);
+    motion::classify(&samples, separation, settings.subspace_tolerance)
+}
+
+/// The pattern of [`locked_motion`], its ranks decided by certified QR where the free joints'
+/// twists are independent ([`motion::classify_quick`]): the same decisions without the
+/// singular values, for the 2^n subsets of [`verify`].
+fn locked_pattern(
+    chain: &SerialChain,
+    mask: u32,
+    configurations: &[Vec<f64>],
+    settings: &Settings,
+) -> PatternName {
+    let (samples, separation) = locked_samples(chain, mask, configurations);
+    let unreported = motion::RankGap {
+        smallest_kept: None,
+        largest_dropped: 0.0,
+    };
+    motion::classify_quick(
+        &samples,
+        separation,
+        settings.subspace_tolerance,
+        unreported,
+    )
+    .pattern
+    .name()
+}
+
+/// The twists of the free joints at each configuration (locked joints at their reference
+/// values) and the smallest distance between two configurations over the free joints (radians;
+/// the offsets are of unit size): the evidence of [`locked_motion`].
+fn locked_samples(
+    chain: &SerialChain,
+    mask: u32,
+    configurations: &[Vec<f64>],
+) -> (Vec<DMatrix<f64>>, f64) {
     let n = chain.len();
     let free: Vec<usize> = (0..n).filter(|i| mask & (1 << i) == 0).collect();
     let samples: Vec<DMatrix<f64>> = configurations
@@ -147,8 +183,6 @@ pub fn locked_motion(
             DMatrix::from_fn(6, free.len(), |r, c| j[(r, free[c])])
         })
         .collect();
-    // The evidence is the smallest distance between two samples over the free joints (radians;
-    // the offsets are of unit size).
     let mut separation = f64::INFINITY;
     for (a, qa) in configurations.iter().enumerate() {
         for qb in &configurations[a + 1..] {
@@ -160,7 +194,7 @@ pub fn locked_motion(
             separation = separation.min(d);
         }
     }
-    motion::classify(&samples, separation, settings.subspace_tolerance)
+    (samples, separation)
 }
 
 /// How far apart two values of joint `i` are: radians for a revolute (the shorter way round),
@@ -251,8 +285,8 @@ pub fn verify(chain: &SerialChain, settings: &Settings, seed: u64) -> Verificati
     // Every lock subset, then the minimal lock sets of each pattern.
     let mut by_pattern: BTreeMap<PatternName, Vec<u32>> = BTreeMap::new();
     for mask in 0u32..(1 << n) {
-        let c = locked_motion(chain, mask, &configurations, settings);
-        by_pattern.entry(c.pattern.name()).or_default().push(mask);
+        let pattern = locked_pattern(chain, mask, &configurations, settings);
+        by_pattern.entry(pattern).or_default().push(mask);
     }
     let patterns = by_pattern
         .into_iter()

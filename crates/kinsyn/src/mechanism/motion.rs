@@ -256,9 +256,13 @@ impl Mechanism {
     /// pitch in the mechanism's length unit, the point of an axis the one nearest the origin.
     pub(super) fn classify_motion(&self, motion: &SampledMotion) -> Classification {
         let spans: Vec<DMatrix<f64>> = motion.samples.iter().map(|s| s.twists.clone()).collect();
-        let mut c = motion::classify(&spans, motion.min_separation, motion::SUBSPACE_TOLERANCE);
         // The rank decisions were made on the body's twists, not on these orthonormal bases.
-        c.rank_gap = motion::gap_over(motion.samples.iter().map(|s| &s.rank));
+        let mut c = motion::classify_quick(
+            &spans,
+            motion.min_separation,
+            motion::SUBSPACE_TOLERANCE,
+            motion::gap_over(motion.samples.iter().map(|s| &s.rank)),
+        );
         if let Pattern::Group(g) = &mut c.pattern {
             // From the dimensionless form (about the centre, over the length scale) to the
             // mechanism's units, the axis point taken nearest the ground origin.
