@@ -44,7 +44,11 @@ pub(super) struct Request<'a> {
 ///
 /// # Errors
 /// [`CliError::Input`] naming the option out of range.
-pub fn sweep_settings(legs: usize, actuated: &[usize], seed: u64) -> Result<SweepSettings, CliError> {
+pub fn sweep_settings(
+    legs: usize,
+    actuated: &[usize],
+    seed: u64,
+) -> Result<SweepSettings, CliError> {
     if !(3..=6).contains(&legs) {
         return Err(CliError::Input(format!(
             "--legs {legs}: give 3 to 6 (as kinsyn build)"
@@ -54,7 +58,9 @@ pub fn sweep_settings(legs: usize, actuated: &[usize], seed: u64) -> Result<Swee
     per_leg.sort_unstable();
     per_leg.dedup();
     if per_leg.is_empty() {
-        return Err(CliError::Input("--actuated: give at least one count, e.g. 1,2".into()));
+        return Err(CliError::Input(
+            "--actuated: give at least one count, e.g. 1,2".into(),
+        ));
     }
     for &k in &per_leg {
         if !(1..=6).contains(&k) {
@@ -86,10 +92,18 @@ fn catalogue() -> Result<Catalogue, CliError> {
 }
 
 /// `kinsyn sweep --out DIR …`: runs (or resumes) the sweep and reports it.
-pub(super) fn command(out: &Path, request: &Request, bench: bool, as_json: bool) -> Result<String, CliError> {
+pub(super) fn command(
+    out: &Path,
+    request: &Request,
+    bench: bool,
+    as_json: bool,
+) -> Result<String, CliError> {
     let settings = sweep_settings(request.legs, request.actuated, request.seed)?;
     let shard = request.shard.map(Shard::parse).transpose()?;
-    if request.threads.is_some_and(|t| t == 0 || t > crate::cli::solve::MAX_THREADS) {
+    if request
+        .threads
+        .is_some_and(|t| t == 0 || t > crate::cli::solve::MAX_THREADS)
+    {
         return Err(CliError::Input(format!(
             "--threads {}: give 1 to {}",
             request.threads.unwrap_or(0),
@@ -110,7 +124,10 @@ pub(super) fn command(out: &Path, request: &Request, bench: bool, as_json: bool)
     if as_json {
         let mut value = serde_json::to_value(&outcome).unwrap_or_default();
         if let Some(o) = value.as_object_mut() {
-            o.insert("designs_per_second".into(), outcome.designs_per_second().into());
+            o.insert(
+                "designs_per_second".into(),
+                outcome.designs_per_second().into(),
+            );
             o.insert(
                 "subsets_per_core_second".into(),
                 outcome.subsets_per_core_second().into(),
@@ -140,7 +157,10 @@ fn summary(o: &SweepOutcome, bench: bool) -> String {
         m.settings.sampling.seed,
     );
     if o.already_complete {
-        return format!("{}: already complete with {what}; nothing rewritten\n", o.out);
+        return format!(
+            "{}: already complete with {what}; nothing rewritten\n",
+            o.out
+        );
     }
     let mut s = format!(
         "{}: {what}: {} evaluated, resumed {} rows, {} errors; ",
@@ -161,7 +181,11 @@ fn summary(o: &SweepOutcome, bench: bool) -> String {
         let _ = writeln!(s, "lock subsets sampled   {}", o.lock_subsets);
         let _ = writeln!(s, "wall seconds           {:.3}", o.seconds);
         let _ = writeln!(s, "designs/s              {:.2}", o.designs_per_second());
-        let _ = writeln!(s, "subsets per core-s     {:.1}", o.subsets_per_core_second());
+        let _ = writeln!(
+            s,
+            "subsets per core-s     {:.1}",
+            o.subsets_per_core_second()
+        );
         let _ = writeln!(s, "threads                {}", o.threads);
         let _ = writeln!(s, "writing ms             {:.1}", o.write_ms);
     }
@@ -169,7 +193,11 @@ fn summary(o: &SweepOutcome, bench: bool) -> String {
 }
 
 /// `kinsyn sweep merge DIR… --out OUT`.
-pub(super) fn merge_command(dirs: &[PathBuf], out: &Path, as_json: bool) -> Result<String, CliError> {
+pub(super) fn merge_command(
+    dirs: &[PathBuf],
+    out: &Path,
+    as_json: bool,
+) -> Result<String, CliError> {
     let manifest = merge(dirs, out)?;
     if as_json {
         return Ok(json(&manifest));

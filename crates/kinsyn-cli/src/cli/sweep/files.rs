@@ -136,7 +136,8 @@ pub fn row_line(row: &DesignRow) -> String {
 /// # Errors
 /// [`CliError::Input`] when a complete line is not a row (a damaged file).
 pub fn read_rows(path: &Path) -> Result<(Vec<DesignRow>, u64), CliError> {
-    let bytes = std::fs::read(path).map_err(|e| CliError::Input(format!("{}: {e}", path.display())))?;
+    let bytes =
+        std::fs::read(path).map_err(|e| CliError::Input(format!("{}: {e}", path.display())))?;
     let end = bytes.iter().rposition(|&b| b == b'\n').map_or(0, |i| i + 1);
     let text = std::str::from_utf8(&bytes[..end])
         .map_err(|e| CliError::Input(format!("{}: not UTF-8: {e}", path.display())))?;
@@ -145,7 +146,11 @@ pub fn read_rows(path: &Path) -> Result<(Vec<DesignRow>, u64), CliError> {
         .enumerate()
         .map(|(i, line)| {
             serde_json::from_str(line).map_err(|e| {
-                CliError::Input(format!("{} line {}: not a design row: {e}", path.display(), i + 1))
+                CliError::Input(format!(
+                    "{} line {}: not a design row: {e}",
+                    path.display(),
+                    i + 1
+                ))
             })
         })
         .collect::<Result<Vec<DesignRow>, _>>()?;
@@ -190,7 +195,10 @@ impl Checkpoint {
 
 /// An I/O failure on `path` (exit 1).
 pub(super) fn io_error(path: &Path, e: &std::io::Error) -> CliError {
-    CliError::Io(std::io::Error::new(e.kind(), format!("{}: {e}", path.display())))
+    CliError::Io(std::io::Error::new(
+        e.kind(),
+        format!("{}: {e}", path.display()),
+    ))
 }
 
 /// Writes `bytes` to `dir/name` through a temporary file renamed into place, so that the

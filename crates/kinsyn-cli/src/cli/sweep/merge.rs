@@ -38,7 +38,8 @@ pub fn merge(dirs: &[PathBuf], out: &Path) -> Result<Manifest, CliError> {
             )));
         }
         if let Some((first_dir, first)) = shards.first() {
-            let as_whole = |m: &Manifest| Manifest::new(&m.settings, &m.selection, None, m.sweep_designs);
+            let as_whole =
+                |m: &Manifest| Manifest::new(&m.settings, &m.selection, None, m.sweep_designs);
             if as_whole(first) != as_whole(&manifest) || first.kinsyn != manifest.kinsyn {
                 return Err(CliError::Input(format!(
                     "{} and {} are shards of different sweeps (settings, selection or kinsyn version differ)",
@@ -65,11 +66,17 @@ pub fn merge(dirs: &[PathBuf], out: &Path) -> Result<Manifest, CliError> {
         shards.push((dir, manifest));
     }
     let Some((_, first)) = shards.first() else {
-        return Err(CliError::Input("kinsyn sweep merge needs shard directories".into()));
+        return Err(CliError::Input(
+            "kinsyn sweep merge needs shard directories".into(),
+        ));
     };
     let count = first.shard.map_or(0, |s| s.count);
     let missing: Vec<String> = (1..=count)
-        .filter(|k| !shards.iter().any(|(_, m)| m.shard.is_some_and(|s| s.index == *k)))
+        .filter(|k| {
+            !shards
+                .iter()
+                .any(|(_, m)| m.shard.is_some_and(|s| s.index == *k))
+        })
         .map(|k| format!("{k}/{count}"))
         .collect();
     if !missing.is_empty() {

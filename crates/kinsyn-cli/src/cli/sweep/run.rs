@@ -87,7 +87,11 @@ fn difference(found: &Manifest, wanted: &Manifest) -> Option<String> {
     } else if found.selection != wanted.selection {
         format!("another selection ({})", found.selection)
     } else if found.shard != wanted.shard {
-        format!("shard {} (asked: {})", shard(found.shard), shard(wanted.shard))
+        format!(
+            "shard {} (asked: {})",
+            shard(found.shard),
+            shard(wanted.shard)
+        )
     } else {
         "another list of designs (a different catalogue?)".to_string()
     })
@@ -157,7 +161,10 @@ pub fn sweep(
         files::write_atomic(dir, files::MANIFEST, manifest.text().as_bytes())?;
     }
     outcome.resumed = done.len();
-    let pending: Vec<&Design> = mine.iter().filter(|d| !done.contains_key(&d.index)).collect();
+    let pending: Vec<&Design> = mine
+        .iter()
+        .filter(|d| !done.contains_key(&d.index))
+        .collect();
     let checkpoint = Checkpoint::open(dir, keep)?;
     progress.set_length(pending.len() as u64);
 

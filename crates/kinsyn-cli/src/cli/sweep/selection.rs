@@ -3,8 +3,8 @@
 
 use crate::cli::CliError;
 use kinsyn::catalogue::Catalogue;
-use kinsyn::synthesis::tables;
 use kinsyn::sweep::{Design, SweepSettings, designs};
+use kinsyn::synthesis::tables;
 use serde::{Deserialize, Serialize};
 use std::fmt;
 
@@ -139,8 +139,14 @@ impl Shard {
             ))
         };
         let (k, n) = text.split_once('/').ok_or_else(|| bad("no '/'"))?;
-        let k: usize = k.trim().parse().map_err(|_| bad("K is not a whole number"))?;
-        let n: usize = n.trim().parse().map_err(|_| bad("N is not a whole number"))?;
+        let k: usize = k
+            .trim()
+            .parse()
+            .map_err(|_| bad("K is not a whole number"))?;
+        let n: usize = n
+            .trim()
+            .parse()
+            .map_err(|_| bad("N is not a whole number"))?;
         if n == 0 {
             return Err(bad("N is 0"));
         }

@@ -23,7 +23,9 @@ fn u32_of(v: usize) -> u32 {
 
 /// A column of counts taken from each row.
 fn counts(rows: &[&DesignRow], f: impl Fn(&DesignRow) -> usize) -> ArrayRef {
-    Arc::new(UInt32Array::from_iter_values(rows.iter().map(|r| u32_of(f(r)))))
+    Arc::new(UInt32Array::from_iter_values(
+        rows.iter().map(|r| u32_of(f(r))),
+    ))
 }
 
 /// A column of text taken from each row.
