@@ -269,9 +269,8 @@ fn three_shards_merged_are_one_run() {
 
 /// The checkpoint's complete lines.
 fn checkpoint_lines(dir: &Path) -> usize {
-    std::fs::read(dir.join("checkpoint.jsonl"))
-        .map(|b| b.iter().filter(|&&c| c == b'\n').count())
-        .unwrap_or(0)
+    std::fs::read_to_string(dir.join("checkpoint.jsonl"))
+        .map_or(0, |text| text.matches('\n').count())
 }
 
 fn resumed(json: &str) -> (u64, u64, bool) {
@@ -354,7 +353,7 @@ fn a_killed_run_resumes_to_the_same_files() {
     let json = sweep(&killed, &[&args[..], &["--json"]].concat());
     let (resumed_rows, evaluated, complete) = resumed(&json);
     assert!(complete);
-    assert_eq!(resumed_rows as usize, done);
+    assert_eq!(usize::try_from(resumed_rows).unwrap(), done);
     assert_eq!(resumed_rows + evaluated, 63, "3 chains × 21 actuated sets");
     let whole = dir.path().join("whole");
     sweep(&whole, &args);

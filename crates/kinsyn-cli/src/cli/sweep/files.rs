@@ -123,6 +123,9 @@ pub fn read_manifest(dir: &Path) -> Result<Option<Manifest>, CliError> {
 }
 
 /// One row as its line of `designs.jsonl` and of the checkpoint (with the newline).
+///
+/// # Panics
+/// Never: a row is plain data (text, counts, lists), which always serialises.
 #[must_use]
 pub fn row_line(row: &DesignRow) -> String {
     let mut s = serde_json::to_string(row).expect("a row serialises");

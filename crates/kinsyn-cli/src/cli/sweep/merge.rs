@@ -2,21 +2,15 @@
 //! the whole sweep writes.
 
 use super::files::{self, Manifest, read_manifest, read_rows, write_results};
+use super::selection::Shard;
 use crate::cli::CliError;
 use kinsyn::sweep::DesignRow;
 use std::path::{Path, PathBuf};
 
-/// Merges the shard directories `dirs` of one sweep (the same settings and selection, shards
-/// 1 to N each once, each complete) into `out`: the same `designs.jsonl`, `designs.parquet`
-/// and `sweep.json` as one run of the whole sweep. Returns the merged manifest.
-///
-/// # Errors
-/// [`CliError::Input`] for a directory that is not a sweep or not a shard, an incomplete
-/// shard, shards of different sweeps, a missing or repeated shard, rows that do not match
-/// their manifest, or an `out` holding another sweep; [`CliError::Io`] when `out` cannot be
-/// written.
-pub fn merge(dirs: &[PathBuf], out: &Path) -> Result<Manifest, CliError> {
-    let mut shards: Vec<(&Path, Manifest)> = Vec::new();
+/// The manifests of `dirs`, each a complete shard of the same sweep, each shard once, with
+/// its shard.
+fn shard_manifests(dirs: &[PathBuf]) -> Result<Vec<(&Path, Manifest, Shard)>, CliError> {
+    let mut shards: Vec<(&Path, Manifest, Shard)> = Vec::new();
     for dir in dirs {
         let manifest = read_manifest(dir)?.ok_or_else(|| {
             CliError::Input(format!(
@@ -37,7 +31,7 @@ pub fn merge(dirs: &[PathBuf], out: &Path) -> Result<Manifest, CliError> {
                 dir.display()
             )));
         }
-        if let Some((first_dir, first)) = shards.first() {
+        if let Some((first_dir, first, _)) = shards.first() {
             let as_whole =
                 |m: &Manifest| Manifest::new(&m.settings, &m.selection, None, m.sweep_designs);
             if as_whole(first) != as_whole(&manifest) || first.kinsyn != manifest.kinsyn {
@@ -56,27 +50,37 @@ pub fn merge(dirs: &[PathBuf], out: &Path) -> Result<Manifest, CliError> {
                 )));
             }
         }
-        if let Some((other, _)) = shards.iter().find(|(_, m)| m.shard == Some(shard)) {
+        if let Some((other, _, _)) = shards.iter().find(|(_, _, s)| *s == shard) {
             return Err(CliError::Input(format!(
                 "shard {shard} given twice: {} and {}",
                 other.display(),
                 dir.display()
             )));
         }
-        shards.push((dir, manifest));
+        shards.push((dir, manifest, shard));
     }
-    let Some((_, first)) = shards.first() else {
+    Ok(shards)
+}
+
+/// Merges the shard directories `dirs` of one sweep (the same settings and selection, shards
+/// 1 to N each once, each complete) into `out`: the same `designs.jsonl`, `designs.parquet`
+/// and `sweep.json` as one run of the whole sweep. Returns the merged manifest.
+///
+/// # Errors
+/// [`CliError::Input`] for a directory that is not a sweep or not a shard, an incomplete
+/// shard, shards of different sweeps, a missing or repeated shard, rows that do not match
+/// their manifest, or an `out` holding another sweep; [`CliError::Io`] when `out` cannot be
+/// written.
+pub fn merge(dirs: &[PathBuf], out: &Path) -> Result<Manifest, CliError> {
+    let shards = shard_manifests(dirs)?;
+    let Some((_, first, first_shard)) = shards.first() else {
         return Err(CliError::Input(
             "kinsyn sweep merge needs shard directories".into(),
         ));
     };
-    let count = first.shard.map_or(0, |s| s.count);
+    let count = first_shard.count;
     let missing: Vec<String> = (1..=count)
-        .filter(|k| {
-            !shards
-                .iter()
-                .any(|(_, m)| m.shard.is_some_and(|s| s.index == *k))
-        })
+        .filter(|k| !shards.iter().any(|(_, _, s)| s.index == *k))
         .map(|k| format!("{k}/{count}"))
         .collect();
     if !missing.is_empty() {
@@ -87,10 +91,9 @@ pub fn merge(dirs: &[PathBuf], out: &Path) -> Result<Manifest, CliError> {
     }
     let whole = Manifest::new(&first.settings, &first.selection, None, first.sweep_designs);
     let mut rows: Vec<DesignRow> = Vec::with_capacity(whole.designs);
-    for (dir, manifest) in &shards {
+    for (dir, manifest, shard) in &shards {
         let path = dir.join(files::JSONL);
         let (part, _) = read_rows(&path)?;
-        let shard = manifest.shard.expect("checked above");
         if part.len() != manifest.designs || part.iter().any(|r| !shard.contains(r.design)) {
             return Err(CliError::Input(format!(
                 "{}: its rows are not those of shard {shard} ({} designs); the directory is damaged",

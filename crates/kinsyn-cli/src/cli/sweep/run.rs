@@ -169,9 +169,41 @@ pub fn sweep(
     progress.set_length(pending.len() as u64);
 
     let start = Instant::now();
+    let (new_rows, threads) = evaluate(&pending, options, checkpoint, progress)?;
+    outcome.seconds = start.elapsed().as_secs_f64();
+    outcome.threads = threads;
+    outcome.evaluated = new_rows.len();
+    outcome.lock_subsets = new_rows
+        .iter()
+        .filter(|r| r.error.is_none())
+        .map(|r| 1u64 << r.inputs)
+        .sum();
+    let mut rows: Vec<DesignRow> = done.into_values().collect();
+    rows.extend(new_rows);
+    outcome.errors = rows.iter().filter(|r| r.error.is_some()).count();
+    if rows.len() < mine.len() {
+        return Ok(outcome);
+    }
+    let written = Instant::now();
+    write_results(dir, &manifest, &rows)?;
+    outcome.write_ms = written.elapsed().as_secs_f64() * 1e3;
+    outcome.complete = true;
+    outcome.manifest.complete = true;
+    Ok(outcome)
+}
+
+/// The rows of `pending`, evaluated in parallel on `options.threads` workers, each appended to
+/// `checkpoint` as soon as it is done (and `progress` advanced), until all are done or
+/// `options.stop_after` rows are; with the number of workers.
+fn evaluate(
+    pending: &[&Design],
+    options: &SweepOptions,
+    checkpoint: Checkpoint,
+    progress: &indicatif::ProgressBar,
+) -> Result<(Vec<DesignRow>, usize), CliError> {
     let state = Mutex::new((checkpoint, Vec::<DesignRow>::new(), None::<CliError>));
     let stop = AtomicBool::new(false);
-    let evaluate = |d: &&Design| {
+    let one = |d: &&Design| {
         if stop.load(Ordering::SeqCst) {
             return;
         }
@@ -193,34 +225,15 @@ pub fn sweep(
         progress.inc(1);
     };
     let threads = crate::cli::solve::with_threads(options.threads, || {
-        pending.par_iter().for_each(evaluate);
+        pending.par_iter().for_each(one);
         rayon::current_num_threads()
     })?;
     progress.finish_and_clear();
-    outcome.seconds = start.elapsed().as_secs_f64();
-    outcome.threads = threads;
-    let (_, new_rows, failure) = state.into_inner().unwrap_or_else(PoisonError::into_inner);
-    if let Some(e) = failure {
-        return Err(e);
+    let (_, rows, failure) = state.into_inner().unwrap_or_else(PoisonError::into_inner);
+    match failure {
+        Some(e) => Err(e),
+        None => Ok((rows, threads)),
     }
-    outcome.evaluated = new_rows.len();
-    outcome.lock_subsets = new_rows
-        .iter()
-        .filter(|r| r.error.is_none())
-        .map(|r| 1u64 << r.inputs)
-        .sum();
-    let mut rows: Vec<DesignRow> = done.into_values().collect();
-    rows.extend(new_rows);
-    outcome.errors = rows.iter().filter(|r| r.error.is_some()).count();
-    if rows.len() < mine.len() {
-        return Ok(outcome);
-    }
-    let written = Instant::now();
-    write_results(dir, &manifest, &rows)?;
-    outcome.write_ms = written.elapsed().as_secs_f64() * 1e3;
-    outcome.complete = true;
-    outcome.manifest.complete = true;
-    Ok(outcome)
 }
 
 /// The rows of an interrupted run's checkpoint, by design index (the complete lines, each

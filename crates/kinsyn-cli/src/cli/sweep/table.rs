@@ -81,9 +81,11 @@ pub fn parquet_bytes(manifest: &Manifest, rows: &[&DesignRow]) -> Result<Vec<u8>
     let non_groups: ArrayRef = Arc::new(StringArray::from_iter_values(
         rows.iter().map(|r| json_of(&r.non_groups)),
     ));
-    let error: ArrayRef = Arc::new(StringArray::from_iter(
-        rows.iter().map(|r| r.error.as_deref()),
-    ));
+    let error: ArrayRef = Arc::new(
+        rows.iter()
+            .map(|r| r.error.as_deref())
+            .collect::<StringArray>(),
+    );
     let batch = RecordBatch::try_from_iter_with_nullable([
         ("design", counts(rows, |r| r.design), false),
         ("chain", texts(rows, |r| &r.chain), false),
