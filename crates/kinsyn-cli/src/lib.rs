@@ -13,7 +13,9 @@
 //! - `kinsyn solve`: [`solve_system`] and [`Solved::json`];
 //! - `kinsyn configurable inverse|forward|velocity`: [`configurable_inverse`],
 //!   [`configurable_forward`], [`configurable_velocity`] (their `--json` reports as text);
-//! - `kinsyn components`: [`components`] with [`ComponentsOptions`] (its `--json` report).
+//! - `kinsyn components`: [`components`] with [`ComponentsOptions`] (its `--json` report);
+//! - `kinsyn sweep` and `kinsyn sweep merge`: the module [`sweep`] ([`sweep::sweep`],
+//!   [`sweep::merge`], the files' readers and writers).
 //!
 //! The computations are the crate `kinsyn`'s; this crate turns options into requests and
 //! results into reports.
@@ -32,5 +34,6 @@ pub use cli::manipulator::{
     parse_description, parse_description_legs, sample_modes, select_body,
 };
 pub use cli::solve::{MAX_RUNS, MAX_THREADS, Show, SolveOptions, Solved, solve_system};
+pub use cli::sweep;
 pub use cli::terminal::one_line;
 pub use cli::{Error, run};

@@ -330,6 +330,26 @@ pub(super) enum Command {
         #[arg(long, short)]
         output: Option<PathBuf>,
     },
+    /// The catalogue-wide multioperation sweep as files (docs/sweep.md): every verified chain
+    /// as the legs of a symmetric manipulator, every choice of actuated joints per leg, every
+    /// lock subset of the inputs sampled, one row per design.
+    ///
+    /// DIR gets designs.jsonl and designs.parquet (one row per design, by design index) and
+    /// sweep.json (the settings, selection and shard). Each finished row is appended at once to
+    /// DIR/checkpoint.jsonl, so an interrupted run resumes where it stopped when run again with
+    /// the same options. --shard K/N evaluates every N-th design; `kinsyn sweep merge` joins
+    /// the N shard directories into the files of one run.
+    #[command(
+        args_conflicts_with_subcommands = true,
+        subcommand_negates_reqs = true,
+        after_help = "Examples:\n  kinsyn sweep --out sweep\n  kinsyn sweep --out small --chains T1-001,T4-034 --actuated 1 --bench\n  kinsyn sweep --out part1 --shard 1/2   # and --out part2 --shard 2/2 elsewhere\n  kinsyn sweep merge part1 part2 --out sweep"
+    )]
+    Sweep {
+        #[command(flatten)]
+        run: SweepArgs,
+        #[command(subcommand)]
+        command: Option<SweepCommand>,
+    },
     /// Export a manipulator to a simulator: a MuJoCo MJCF model (docs/export.md).
     ///
     /// The mechanism's spanning tree becomes nested bodies with hinge and slide joints, each
@@ -707,4 +727,64 @@ pub struct HexaPlot {
     /// φ2, end-effector 2's turn about z, in degrees (-180 to 180).
     #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
     pub phi2: f64,
+}
+
+/// The options of `kinsyn sweep` (docs/sweep.md).
+#[derive(Debug, Args)]
+pub(super) struct SweepArgs {
+    /// The directory of the results (created if missing; an interrupted run of the same sweep
+    /// there is resumed).
+    #[arg(long, value_name = "DIR", required = true)]
+    pub(super) out: Option<PathBuf>,
+    /// Legs of every manipulator, 3 to 6.
+    #[arg(long, default_value_t = 3)]
+    pub(super) legs: usize,
+    /// The numbers of actuated joints per leg tried, e.g. 1,2 (each set of that many of the 6
+    /// joints is a design).
+    #[arg(long, value_delimiter = ',', default_value = "1,2")]
+    pub(super) actuated: Vec<usize>,
+    /// Seed of the sampled motions (each lock subset's walk derives its own from it).
+    #[arg(long, default_value_t = kinsyn::mechanism::SampleSettings::default().seed)]
+    pub(super) seed: u64,
+    /// Only these catalogue chains, by id, e.g. T1-001,T4-034.
+    #[arg(long, value_name = "LIST")]
+    pub(super) chains: Option<String>,
+    /// Only chains of this family: PPPRRR, PPRRRR, PRRRRR or RRRRRR.
+    #[arg(long)]
+    pub(super) family: Option<String>,
+    /// Only shard K of N (1-based): the designs i with (i mod N) + 1 = K.
+    #[arg(long, value_name = "K/N")]
+    pub(super) shard: Option<String>,
+    /// Worker threads (default: one per core).
+    #[arg(long)]
+    pub(super) threads: Option<usize>,
+    /// After the run, print its figures: designs, lock subsets, wall seconds, designs/s,
+    /// subsets per core-second, threads, writing time.
+    #[arg(long)]
+    pub(super) bench: bool,
+    /// Print a JSON summary instead of text.
+    #[arg(long)]
+    pub(super) json: bool,
+    /// Stop as an interruption would once this many rows are checkpointed (for tests).
+    #[arg(long, hide = true, value_name = "N")]
+    pub(super) stop_after: Option<usize>,
+}
+
+/// `kinsyn sweep …`.
+#[derive(Debug, Subcommand)]
+pub(super) enum SweepCommand {
+    /// Join the shard directories of one sweep (same options, shards 1/N to N/N each once,
+    /// each complete) into OUT: the same files as one run of the whole sweep.
+    #[command(after_help = "Example:\n  kinsyn sweep merge part1 part2 part3 --out sweep")]
+    Merge {
+        /// The shard directories.
+        #[arg(required = true, value_name = "DIR")]
+        dirs: Vec<PathBuf>,
+        /// The directory of the merged results.
+        #[arg(long, value_name = "OUT")]
+        out: PathBuf,
+        /// Print the merged manifest as JSON instead of text.
+        #[arg(long)]
+        json: bool,
+    },
 }

@@ -18,6 +18,7 @@ mod notation;
 mod plot;
 mod site;
 pub mod solve;
+pub mod sweep;
 pub mod terminal;
 
 /// The error type under its name inside the command's modules.
@@ -307,6 +308,30 @@ fn execute(command: Command) -> Result<String, CliError> {
             output,
         } => manipulator::stack_command(&modules, radii, heights, output.as_deref()),
         Command::Export { file, mjcf } => export::mjcf(&file, &mjcf),
+        Command::Sweep {
+            command: Some(args::SweepCommand::Merge { dirs, out, json }),
+            ..
+        } => sweep::merge_command(&dirs, &out, json),
+        Command::Sweep { run, command: None } => {
+            let out = run
+                .out
+                .ok_or_else(|| CliError::Input("kinsyn sweep needs --out DIR".into()))?;
+            sweep::command(
+                &out,
+                &sweep::Request {
+                    legs: run.legs,
+                    actuated: &run.actuated,
+                    seed: run.seed,
+                    chains: run.chains.as_deref(),
+                    family: run.family.as_deref(),
+                    shard: run.shard.as_deref(),
+                    threads: run.threads,
+                    stop_after: run.stop_after,
+                },
+                run.bench,
+                run.json,
+            )
+        }
     }
 }
 

@@ -1,0 +1,212 @@
+//! `kinsyn sweep`: the catalogue-wide multioperation sweep ([`kinsyn::sweep`]) written as files
+//! in a directory (docs/sweep.md) — resumable, split into shards and merged again — and
+//! `kinsyn sweep merge`.
+
+mod files;
+mod merge;
+mod run;
+mod selection;
+mod table;
+
+pub use files::{
+    CHECKPOINT, Checkpoint, FORMAT, JSONL, MANIFEST, Manifest, PARQUET, read_manifest, read_rows,
+    row_line, write_results,
+};
+pub use merge::merge;
+pub use run::{SweepOptions, SweepOutcome, sweep};
+pub use selection::{Shard, SweepSelection};
+pub use table::parquet_bytes;
+
+use crate::cli::{CliError, json};
+use kinsyn::catalogue::Catalogue;
+use kinsyn::manipulator::MAX_INPUTS;
+use kinsyn::mechanism::SampleSettings;
+use kinsyn::sweep::SweepSettings;
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+
+/// The options of `kinsyn sweep` as given on the command line.
+#[derive(Debug, Clone)]
+pub(super) struct Request<'a> {
+    pub(super) legs: usize,
+    pub(super) actuated: &'a [usize],
+    pub(super) seed: u64,
+    pub(super) chains: Option<&'a str>,
+    pub(super) family: Option<&'a str>,
+    pub(super) shard: Option<&'a str>,
+    pub(super) threads: Option<usize>,
+    pub(super) stop_after: Option<usize>,
+}
+
+/// The settings of `--legs`, `--actuated` and `--seed`, checked: 3 to 6 legs (as
+/// `kinsyn build`), 1 to 6 actuated joints per leg (the catalogue's legs have 6) and at most
+/// [`MAX_INPUTS`] inputs per manipulator.
+///
+/// # Errors
+/// [`CliError::Input`] naming the option out of range.
+pub fn sweep_settings(
+    legs: usize,
+    actuated: &[usize],
+    seed: u64,
+) -> Result<SweepSettings, CliError> {
+    if !(3..=6).contains(&legs) {
+        return Err(CliError::Input(format!(
+            "--legs {legs}: give 3 to 6 (as kinsyn build)"
+        )));
+    }
+    let mut per_leg = actuated.to_vec();
+    per_leg.sort_unstable();
+    per_leg.dedup();
+    if per_leg.is_empty() {
+        return Err(CliError::Input(
+            "--actuated: give at least one count, e.g. 1,2".into(),
+        ));
+    }
+    for &k in &per_leg {
+        if !(1..=6).contains(&k) {
+            return Err(CliError::Input(format!(
+                "--actuated {k}: each count of actuated joints per leg is 1 to 6"
+            )));
+        }
+        if legs * k > MAX_INPUTS {
+            return Err(CliError::Input(format!(
+                "--actuated {k} with --legs {legs}: {} inputs, more than {MAX_INPUTS} (2^inputs lock subsets per design)",
+                legs * k
+            )));
+        }
+    }
+    Ok(SweepSettings {
+        legs,
+        actuated_per_leg: per_leg,
+        sampling: SampleSettings {
+            seed,
+            ..SampleSettings::default()
+        },
+    })
+}
+
+/// The committed catalogue, read once.
+fn catalogue() -> Result<Catalogue, CliError> {
+    Catalogue::committed()
+        .map_err(|e| CliError::Internal(format!("the compiled-in catalogue does not read: {e}")))
+}
+
+/// `kinsyn sweep --out DIR …`: runs (or resumes) the sweep and reports it.
+pub(super) fn command(
+    out: &Path,
+    request: &Request,
+    bench: bool,
+    as_json: bool,
+) -> Result<String, CliError> {
+    let settings = sweep_settings(request.legs, request.actuated, request.seed)?;
+    let shard = request.shard.map(Shard::parse).transpose()?;
+    if request
+        .threads
+        .is_some_and(|t| t == 0 || t > crate::cli::solve::MAX_THREADS)
+    {
+        return Err(CliError::Input(format!(
+            "--threads {}: give 1 to {}",
+            request.threads.unwrap_or(0),
+            crate::cli::solve::MAX_THREADS
+        )));
+    }
+    let catalogue = catalogue()?;
+    let selection = SweepSelection::new(&catalogue, request.chains, request.family)?;
+    let options = SweepOptions {
+        settings,
+        selection,
+        shard,
+        threads: request.threads,
+        stop_after: request.stop_after,
+    };
+    let bar = crate::cli::terminal::progress(0, "designs", "sweep");
+    let outcome = sweep(&catalogue, out, &options, &bar)?;
+    if as_json {
+        let mut value = serde_json::to_value(&outcome).unwrap_or_default();
+        if let Some(o) = value.as_object_mut() {
+            o.insert(
+                "designs_per_second".into(),
+                outcome.designs_per_second().into(),
+            );
+            o.insert(
+                "subsets_per_core_second".into(),
+                outcome.subsets_per_core_second().into(),
+            );
+        }
+        return Ok(json(&value));
+    }
+    Ok(summary(&outcome, bench))
+}
+
+/// The text report of a run, with `--bench`'s figures.
+fn summary(o: &SweepOutcome, bench: bool) -> String {
+    let m = &o.manifest;
+    let shard = m.shard.map_or_else(String::new, |s| format!(", shard {s}"));
+    let what = format!(
+        "{} designs of {} ({}; {} legs, {} actuated per leg, seed {}{shard})",
+        m.designs,
+        m.sweep_designs,
+        m.selection,
+        m.settings.legs,
+        m.settings
+            .actuated_per_leg
+            .iter()
+            .map(ToString::to_string)
+            .collect::<Vec<_>>()
+            .join(" or "),
+        m.settings.sampling.seed,
+    );
+    if o.already_complete {
+        return format!(
+            "{}: already complete with {what}; nothing rewritten\n",
+            o.out
+        );
+    }
+    let mut s = format!(
+        "{}: {what}: {} evaluated, resumed {} rows, {} errors; ",
+        o.out, o.evaluated, o.resumed, o.errors
+    );
+    if o.complete {
+        let _ = writeln!(s, "complete: {JSONL}, {PARQUET}, {MANIFEST}");
+    } else {
+        let _ = writeln!(
+            s,
+            "stopped with {} of {} rows in {CHECKPOINT}; run the same command again to resume",
+            o.resumed + o.evaluated,
+            m.designs
+        );
+    }
+    if bench {
+        let _ = writeln!(s, "designs evaluated      {}", o.evaluated);
+        let _ = writeln!(s, "lock subsets sampled   {}", o.lock_subsets);
+        let _ = writeln!(s, "wall seconds           {:.3}", o.seconds);
+        let _ = writeln!(s, "designs/s              {:.2}", o.designs_per_second());
+        let _ = writeln!(
+            s,
+            "subsets per core-s     {:.1}",
+            o.subsets_per_core_second()
+        );
+        let _ = writeln!(s, "threads                {}", o.threads);
+        let _ = writeln!(s, "writing ms             {:.1}", o.write_ms);
+    }
+    s
+}
+
+/// `kinsyn sweep merge DIR… --out OUT`.
+pub(super) fn merge_command(
+    dirs: &[PathBuf],
+    out: &Path,
+    as_json: bool,
+) -> Result<String, CliError> {
+    let manifest = merge(dirs, out)?;
+    if as_json {
+        return Ok(json(&manifest));
+    }
+    Ok(format!(
+        "{}: merged {} shards: {} designs ({}); {JSONL}, {PARQUET}, {MANIFEST}\n",
+        out.display(),
+        dirs.len(),
+        manifest.designs,
+        manifest.selection
+    ))
+}

@@ -1,0 +1,118 @@
+//! `designs.parquet`: the rows of a sweep as one flat table (docs/sweep.md lists the columns),
+//! with the sweep's manifest in the file's key-value metadata.
+
+use super::files::Manifest;
+use crate::cli::CliError;
+use arrow_array::builder::{ListBuilder, StringBuilder, UInt32Builder};
+use arrow_array::{ArrayRef, RecordBatch, StringArray, UInt32Array};
+use kinsyn::sweep::DesignRow;
+use parquet::arrow::ArrowWriter;
+use parquet::basic::Compression;
+use parquet::file::metadata::KeyValue;
+use parquet::file::properties::WriterProperties;
+use std::sync::Arc;
+
+/// Rows per row group: the whole committed sweep (9261 designs) is one group, and the groups
+/// of a file depend on its rows only.
+const ROW_GROUP: usize = 16_384;
+
+/// A count as a `u32` column value (counts and indices of a sweep are far below 2^32).
+fn u32_of(v: usize) -> u32 {
+    u32::try_from(v).unwrap_or(u32::MAX)
+}
+
+/// A column of counts taken from each row.
+fn counts(rows: &[&DesignRow], f: impl Fn(&DesignRow) -> usize) -> ArrayRef {
+    Arc::new(UInt32Array::from_iter_values(
+        rows.iter().map(|r| u32_of(f(r))),
+    ))
+}
+
+/// A column of text taken from each row.
+fn texts<'a>(rows: &[&'a DesignRow], f: impl Fn(&'a DesignRow) -> &'a str) -> ArrayRef {
+    Arc::new(StringArray::from_iter_values(rows.iter().map(|r| f(r))))
+}
+
+/// A value as compact JSON.
+fn compact<T: serde::Serialize>(value: &T) -> String {
+    serde_json::to_string(value).expect("serialisable")
+}
+
+/// The file's key-value metadata: the manifest's fields that say what the rows are.
+fn metadata(manifest: &Manifest) -> Vec<KeyValue> {
+    vec![
+        KeyValue::new("kinsyn.format".into(), manifest.format.clone()),
+        KeyValue::new("kinsyn.version".into(), manifest.kinsyn.clone()),
+        KeyValue::new("kinsyn.settings".into(), compact(&manifest.settings)),
+        KeyValue::new("kinsyn.selection".into(), compact(&manifest.selection)),
+        KeyValue::new(
+            "kinsyn.shard".into(),
+            manifest
+                .shard
+                .map_or_else(|| "none".to_string(), |s| s.to_string()),
+        ),
+        KeyValue::new("kinsyn.designs".into(), manifest.designs.to_string()),
+    ]
+}
+
+/// `rows` (sorted by design) as the bytes of `designs.parquet`: snappy pages, the same bytes
+/// for the same rows and manifest.
+///
+/// # Errors
+/// [`CliError::Internal`] when the Arrow or Parquet writer fails (a fault of the build).
+pub fn parquet_bytes(manifest: &Manifest, rows: &[&DesignRow]) -> Result<Vec<u8>, CliError> {
+    let internal = |e: &dyn std::fmt::Display| CliError::Internal(format!("designs.parquet: {e}"));
+    let mut actuated = ListBuilder::new(UInt32Builder::new());
+    let mut kinds = ListBuilder::new(StringBuilder::new());
+    for r in rows {
+        for &j in &r.actuated {
+            actuated.values().append_value(u32_of(j));
+        }
+        actuated.append(true);
+        for k in &r.group_kinds {
+            kinds.values().append_value(k);
+        }
+        kinds.append(true);
+    }
+    let json_of = |v: &[kinsyn::sweep::Reached]| compact(&v);
+    let groups: ArrayRef = Arc::new(StringArray::from_iter_values(
+        rows.iter().map(|r| json_of(&r.groups)),
+    ));
+    let non_groups: ArrayRef = Arc::new(StringArray::from_iter_values(
+        rows.iter().map(|r| json_of(&r.non_groups)),
+    ));
+    let error: ArrayRef = Arc::new(
+        rows.iter()
+            .map(|r| r.error.as_deref())
+            .collect::<StringArray>(),
+    );
+    let batch = RecordBatch::try_from_iter_with_nullable([
+        ("design", counts(rows, |r| r.design), false),
+        ("chain", texts(rows, |r| &r.chain), false),
+        ("notation", texts(rows, |r| &r.notation), false),
+        ("family", texts(rows, |r| &r.family), false),
+        ("legs", counts(rows, |r| r.legs), false),
+        ("actuated", Arc::new(actuated.finish()) as ArrayRef, false),
+        ("inputs", counts(rows, |r| r.inputs), false),
+        ("dof", counts(rows, |r| r.dof), false),
+        ("subgroups", counts(rows, |r| r.subgroups), false),
+        ("kinds", counts(rows, |r| r.kinds), false),
+        ("group_kinds", Arc::new(kinds.finish()) as ArrayRef, false),
+        ("groups", groups, false),
+        ("non_groups", non_groups, false),
+        ("unsampled", counts(rows, |r| r.unsampled), false),
+        ("error", error, true),
+    ])
+    .map_err(|e| internal(&e))?;
+    let properties = WriterProperties::builder()
+        .set_compression(Compression::SNAPPY)
+        .set_max_row_group_row_count(Some(ROW_GROUP))
+        .set_key_value_metadata(Some(metadata(manifest)))
+        .build();
+    let mut bytes = Vec::new();
+    let mut writer = ArrowWriter::try_new(&mut bytes, batch.schema(), Some(properties))
+        .map_err(|e| internal(&e))?;
+    writer.write(&batch).map_err(|e| internal(&e))?;
+    writer.close().map_err(|e| internal(&e))?;
+    Ok(bytes)
+}
