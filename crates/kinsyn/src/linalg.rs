@@ -480,24 +480,56 @@ impl FullRowRank {
 }
 
 /// The Gauss–Newton step of least norm for the equations `a x = b` (m ≤ n unknowns): `x = aᵀ
-/// (a aᵀ)⁻¹ b`, from the Householder QR `aᵀ = Q₁ R` as `x = aᵀ R⁻¹ R⁻ᵀ b`; `None` when a
-/// diagonal entry of `R` is below `tolerance` times the largest (equations dependent or
-/// nearly so: take the damped steps of an SVD instead). No rank is decided here: the caller
-/// keeps the step only if it reduces the residual.
+/// (a aᵀ)⁻¹ b`, by the Cholesky factor of the Gram matrix `a aᵀ`; `None` when that matrix is
+/// not numerically positive definite (equations dependent or nearly so: take the damped steps
+/// of an SVD instead). No rank is decided here: the caller keeps the step only if it reduces
+/// the residual.
 #[must_use]
-pub fn min_norm_step(a: &DMatrix<f64>, b: &DVector<f64>, tolerance: f64) -> Option<DVector<f64>> {
+pub fn min_norm_step(a: &DMatrix<f64>, b: &DVector<f64>) -> Option<DVector<f64>> {
     let (m, n) = a.shape();
     if m > n || m == 0 || b.len() != m {
         return None;
     }
-    let r = a.transpose().qr().unpack_r();
-    let largest = r.diagonal().amax();
-    if !largest.is_finite() || r.diagonal().iter().any(|d| d.abs() <= tolerance * largest) {
+    let z = (a * a.transpose()).cholesky()?.solve(b);
+    z.iter().all(|x| x.is_finite()).then(|| a.tr_mul(&z))
+}
+
+/// A random direction, isotropic in the null space of the wide matrix `a` (the rates that keep
+/// its equations): `g` minus its projection on the row space, `g − aᵀ (a aᵀ)⁻¹ a g`, for `g`
+/// drawn by `draw` with one entry per column. `None` unless the rows of `a` are certified
+/// independent at relative tolerance `tolerance` (the SVD's decision, `σ_m > tolerance ·
+/// σ_1`): the Gram matrix's Cholesky factor `L` bounds `σ_m² ≥ 1/‖L⁻¹‖_F²`, which must clear
+/// the cut and the round-off of forming `a aᵀ` (`m ε ‖a‖_F²`, with a factor 100 to spare).
+/// With the certificate, the null space has dimension n − m.
+#[must_use]
+pub fn null_direction(
+    a: &DMatrix<f64>,
+    tolerance: f64,
+    draw: impl FnMut(usize, usize) -> f64,
+) -> Option<DVector<f64>> {
+    let (m, n) = a.shape();
+    if m > n || m == 0 {
         return None;
     }
-    let y = r.tr_solve_upper_triangular(b)?;
-    let z = r.solve_upper_triangular(&y)?;
-    Some(a.tr_mul(&z))
+    let norm2 = a.norm_squared();
+    if !norm2.is_finite() || norm2 == 0.0 {
+        return None;
+    }
+    let cholesky = (a * a.transpose()).cholesky()?;
+    let mut inverse = DMatrix::<f64>::identity(m, m);
+    if !cholesky.l_dirty().solve_lower_triangular_mut(&mut inverse) {
+        return None;
+    }
+    // Only the lower triangle of `l_dirty` is the factor; the solve reads only that.
+    #[expect(clippy::cast_precision_loss, reason = "a row count")]
+    let round_off = 100.0 * m as f64 * f64::EPSILON;
+    let lower = 1.0 / inverse.norm_squared();
+    if !(lower > (tolerance * tolerance + round_off) * norm2) {
+        return None;
+    }
+    let g = DVector::from_fn(n, draw);
+    let z = cholesky.solve(&(a * &g));
+    Some(g - a.tr_mul(&z))
 }
 
 /// The truncated least-squares solution of `a x ≈ b` ([`least_squares`]).

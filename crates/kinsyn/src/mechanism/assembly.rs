@@ -57,11 +57,6 @@ impl Default for AssemblySettings {
 /// A residual at the round-off of dimensionless coordinates of order one: no step can improve it.
 const ROUND_OFF: f64 = 1e-14;
 
-/// The smallest diagonal entry of the QR factor, relative to the largest, with which the
-/// undamped Newton step by QR is tried ([`linalg::min_norm_step`]); nearer dependent equations
-/// take the damped steps by SVD.
-const NEWTON_RANK_TOLERANCE: f64 = 1e-8;
-
 /// Limits a dimensionless Newton step so that no joint turns by more than half a radian (or
 /// slides by half the length scale).
 fn clamp_step(step: &mut DVector<f64>) {
@@ -284,10 +279,11 @@ impl Mechanism {
                 }
             }
             let af = DMatrix::from_fn(rows.nrows(), free.len(), |r, k| rows[(r, free[k])]);
-            // The Gauss–Newton step of least norm, by a certified QR when the equations are
-            // independent; kept when it reduces the residual, as the least-damped step below
-            // would be. Otherwise (dependent equations, or no decrease) the damped steps by SVD.
-            if let Some(mut step) = linalg::min_norm_step(&af, &residual, NEWTON_RANK_TOLERANCE) {
+            // The Gauss–Newton step of least norm, by the Cholesky factor of the Gram matrix
+            // when the equations are independent; kept when it reduces the residual, as the
+            // least-damped step below would be. Otherwise (dependent equations, or no
+            // decrease) the damped steps by SVD.
+            if let Some(mut step) = linalg::min_norm_step(&af, &residual) {
                 clamp_step(&mut step);
                 let trial = self.stepped(&q, &free, &step);
                 if trial.iter().all(|x| x.is_finite()) {

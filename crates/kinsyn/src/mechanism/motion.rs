@@ -18,8 +18,9 @@
 //! least two samples are that far apart, so that the samples could have shown otherwise
 //! (`docs/verification.md`).
 
-use super::{Mechanism, MechanismError, compose, inverse, log};
+use super::{MOBILITY_TOLERANCE, Mechanism, MechanismError, compose, inverse, log};
 use crate::chain::Displacement;
+use crate::linalg;
 use crate::motion::{self, Classification, MIN_SEPARATION, Pattern};
 use nalgebra::{DMatrix, DVector, Vector3};
 use rand::{Rng, SeedableRng};
@@ -102,14 +103,9 @@ impl Mechanism {
     ) -> Result<Vec<f64>, MechanismError> {
         let mut q = start.to_vec();
         for _ in 0..settings.steps {
-            let rates = self.unitless_rate_basis(&self.joint_screws(&q), free);
-            if rates.ncols() == 0 {
+            let Some(mut direction) = self.random_rates(&q, free, rng) else {
                 break;
-            }
-            // An isotropic direction in the dimensionless compatible rates.
-            let coefficients =
-                DVector::from_fn(rates.ncols(), |_, _| rng.sample::<f64, _>(StandardNormal));
-            let mut direction = &rates * coefficients;
+            };
             let norm = direction.norm();
             if norm < 1e-15 {
                 break;
@@ -135,6 +131,37 @@ impl Mechanism {
             q = attempt?;
         }
         Ok(q)
+    }
+
+    /// A random direction of the dimensionless rates of the `free` joints that keep every loop
+    /// closed at `q`, isotropic in that space; `None` when there is none (no degree of
+    /// freedom). The projection of a normal draw on the null space of the closure equations
+    /// when their independence is certified ([`linalg::null_direction`]), otherwise normal
+    /// coefficients of the SVD's basis of it: either way an isotropic normal direction.
+    fn random_rates(
+        &self,
+        q: &[f64],
+        free: &[usize],
+        rng: &mut ChaCha8Rng,
+    ) -> Option<DVector<f64>> {
+        let screws = self.joint_screws(q);
+        let c = self.dimensionless(&self.closure_jacobian(&screws));
+        let cf = DMatrix::from_fn(c.nrows(), free.len(), |r, k| c[(r, free[k])]);
+        if cf.nrows() > 0
+            && cf.nrows() < free.len()
+            && let Some(direction) = linalg::null_direction(&cf, MOBILITY_TOLERANCE, |_, _| {
+                rng.sample::<f64, _>(StandardNormal)
+            })
+        {
+            return Some(direction);
+        }
+        let rates = self.unitless_rate_basis(&screws, free);
+        if rates.ncols() == 0 {
+            return None;
+        }
+        let coefficients =
+            DVector::from_fn(rates.ncols(), |_, _| rng.sample::<f64, _>(StandardNormal));
+        Some(&rates * coefficients)
     }
 
     /// Samples the finite motion of `body` from the assembled configuration `start` with the
