@@ -54,7 +54,7 @@ pub struct Design {
     pub chain: String,
     /// The chain's notation (`PPRCR`).
     pub notation: String,
-    /// The chain's family: its primitive joints in order (`PPRRPR`).
+    /// The chain's family: its prismatic then revolute joints (`PRRRRR` for the UPS).
     pub family: String,
     /// The actuated primitive joints of each leg, 1-based, increasing.
     pub actuated: Vec<usize>,
