@@ -1,4 +1,5 @@
-//! Looks into one lock subset's sampled motion: twist-space deviation against distance.
+//! Looks into one lock subset's sampled motion: the platform's twist singular values at each
+//! sample (over the scale they are judged against) and the closure's conditioning.
 use kinsyn::manipulator::Manipulator;
 use kinsyn::mechanism::SampleSettings;
 fn main() {
@@ -7,32 +8,18 @@ fn main() {
     let locked = m.parse_locks(&a[2]).unwrap();
     let mask = m.lock_mask(&locked);
     let mech = m.mechanism();
-    for step in [0.001, 0.003, 0.01, 0.03, 0.1, 0.3] {
-        let s = SampleSettings {
-            seed: 5,
-            samples: 2,
-            steps: 3,
-            step,
-        };
-        let motion = mech
-            .sample_motion(m.platform(), &m.reference(), &mask, &s)
-            .unwrap();
-        let b0 = &motion.samples[0].twists;
-        let smp = &motion.samples[1];
-        let p = b0 * b0.transpose();
-        let d = (&smp.twists - &p * &smp.twists).norm();
-        let mob = mech.mobility(&smp.q, &mask);
-        println!(
-            "step {step}: sep {:.3e} dev {d:.3e} closure sv {:?} dof {}",
-            motion.min_separation,
-            mob.closure_rank
-                .singular_values
-                .iter()
-                .map(|x| format!("{x:.2e}"))
-                .collect::<Vec<_>>(),
-            mob.dof
-        );
+    for seed in [2026u64, 7, 11, 13] {
+        let s = SampleSettings { seed, ..SampleSettings::default() };
+        let mode = m.mode(&locked, &s);
+        let motion = mech.sample_motion(m.platform(), &m.reference(), &mask, &s).unwrap();
+        println!("seed {seed}: {} sep {:.2e}", mode.pattern_text(), motion.min_separation);
+        for smp in &motion.samples {
+            let r = &smp.rank;
+            let c = mech.mobility(&smp.q, &mask).closure_rank;
+            let top = c.singular_values.first().copied().unwrap_or(1.0);
+            println!("   twist sv/scale {:?} rank {}; closure gap {:.1e} dof {}", r.singular_values.iter().map(|x| format!("{:.1e}", x / r.scale)).collect::<Vec<_>>(), r.rank, c.smallest_kept()/top, mech.mobility(&smp.q, &mask).dof);
+            let t = &smp.twists;
+            println!("   twist basis rot rows norm {:.2e}, trans rows norm {:.2e}", t.rows(0,3).norm(), t.rows(3,3).norm());
+        }
     }
 }
-#[allow(dead_code)]
-fn unused() {}
