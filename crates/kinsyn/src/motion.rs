@@ -860,6 +860,25 @@ pub struct Classification {
     pub min_separation: Option<f64>,
     /// The gap of the rank decisions behind `dof`, over the samples.
     pub rank_gap: RankGap,
+    /// When the motion was sampled from a configuration where the mechanism has more degrees
+    /// of freedom than anywhere along the sampled motion: a singular start, whose motion is not
+    /// one pattern (see [`SingularStart`]). `None` for a regular start, and for classifications
+    /// of twist spaces alone.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub singular_start: Option<SingularStart>,
+}
+
+/// A start configuration at which the (locked) mechanism is singular: its loop-closure
+/// equations leave more joint rates free there than at the configurations its motion reaches
+/// (the start is a bifurcation of operation modes, or a singular point of the motion). Random
+/// walks from it then end on different branches from seed to seed, and the pattern sampled
+/// from it is not one answer: it is reported, not counted as a pattern reached.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+pub struct SingularStart {
+    /// The mechanism's degrees of freedom (closure nullity over the free joints) at the start.
+    pub start_dof: usize,
+    /// The smallest over the sampled configurations.
+    pub motion_dof: usize,
 }
 
 /// The worst gap over several rank decisions, each singular value relative to the scale its
@@ -948,6 +967,7 @@ fn classify_spans(
             same_span: true,
             min_separation,
             rank_gap,
+            singular_start: None,
         };
     }
     let rotations = generic
@@ -965,6 +985,7 @@ fn classify_spans(
         same_span: same,
         min_separation,
         rank_gap,
+        singular_start: None,
     }
 }
 

@@ -143,6 +143,14 @@ pub struct DesignRow {
     pub non_groups: Vec<Reached>,
     /// Lock subsets whose motion could not be sampled (left out of the patterns).
     pub unsampled: usize,
+    /// Lock subsets whose start (the reference) is a singular configuration of the locked
+    /// manipulator ([`crate::motion::SingularStart`]): left out of the patterns, because the
+    /// motion sampled from a bifurcation depends on the branch the walks take.
+    #[serde(default)]
+    pub singular: usize,
+    /// Their minimal lock sets.
+    #[serde(default)]
+    pub singular_lock_sets: Vec<String>,
     /// Why the design could not be built (its leg is singular at every configuration, say);
     /// the counts are then zero.
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -186,6 +194,8 @@ impl Design {
             groups: Vec::new(),
             non_groups: Vec::new(),
             unsampled: 0,
+            singular: 0,
+            singular_lock_sets: Vec::new(),
             error: None,
         };
         let manipulator = match self.manipulator(settings.legs) {
@@ -208,6 +218,8 @@ impl Design {
             .find(|m| m.locked.is_empty())
             .map_or(0, |m| m.dof);
         row.unsampled = modes.modes.iter().filter(|m| m.error.is_some()).count();
+        row.singular = modes.modes.iter().filter(|m| m.is_singular_start()).count();
+        row.singular_lock_sets = modes.singular_starts;
         row.groups = modes.groups.iter().map(Reached::from).collect();
         row.non_groups = modes.non_groups.iter().map(Reached::from).collect();
         row.subgroups = row.groups.len();

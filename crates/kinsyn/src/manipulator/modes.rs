@@ -52,6 +52,15 @@ pub struct Mode {
 }
 
 impl Mode {
+    /// Whether the motion was sampled from a singular start ([`crate::motion::SingularStart`]):
+    /// its pattern is then not one answer, and is not counted as reached.
+    #[must_use]
+    pub fn is_singular_start(&self) -> bool {
+        self.classification
+            .as_ref()
+            .is_some_and(|c| c.singular_start.is_some())
+    }
+
     /// The pattern's name as text, `?` when the motion could not be sampled.
     #[must_use]
     pub fn pattern_text(&self) -> String {
@@ -103,6 +112,11 @@ pub struct Modes {
     pub group_kinds: Vec<String>,
     /// The distinct non-group patterns reached, with their minimal lock sets.
     pub non_groups: Vec<PatternModes>,
+    /// The minimal lock sets (label lists) of the subsets whose start is a singular
+    /// configuration of the locked mechanism ([`crate::motion::SingularStart`]): their sampled
+    /// pattern depends on which branch the random walks take, so it is not counted among the
+    /// patterns reached.
+    pub singular_starts: Vec<String>,
 }
 
 /// The largest number of inputs whose lock subsets [`Manipulator::modes`] enumerates all of
@@ -372,6 +386,10 @@ impl Manipulator {
             })
             .collect();
         let (groups, non_groups) = self.patterns_reached(&modes);
+        let singular_starts = minimal_sets(modes.iter().filter(|m| m.is_singular_start()))
+            .iter()
+            .map(|m| m.lock_text.clone())
+            .collect();
         let frame = self.platform_frame(start);
         Modes {
             manipulator: self.name.clone(),
@@ -384,15 +402,20 @@ impl Manipulator {
             modes,
             groups,
             non_groups,
+            singular_starts,
         }
     }
 
     /// The distinct subgroups and the distinct non-group patterns among the sampled `modes`
     /// (sorted by number of locks), each with how many subsets give it and its minimal lock
-    /// sets. Subsets whose motion could not be sampled are left out.
+    /// sets. Subsets whose motion could not be sampled, or was sampled from a singular start,
+    /// are left out.
     fn patterns_reached(&self, modes: &[Mode]) -> (Vec<PatternModes>, Vec<PatternModes>) {
         let mut by_pattern: BTreeMap<(bool, String), Vec<&Mode>> = BTreeMap::new();
-        for m in modes.iter().filter(|m| m.error.is_none()) {
+        for m in modes
+            .iter()
+            .filter(|m| m.error.is_none() && !m.is_singular_start())
+        {
             by_pattern
                 .entry((!m.group, self.subgroup_key(m)))
                 .or_default()
@@ -439,10 +462,12 @@ fn name_or_unknown<S: serde::Serializer>(
     }
 }
 
-/// The kinds of displacement group among `modes`, each once, in the order of the 12.
+/// The kinds of displacement group among `modes` (regular starts), each once, in the order of
+/// the 12.
 fn group_kinds(modes: &[Mode]) -> Vec<String> {
     let mut kinds: Vec<GroupKind> = modes
         .iter()
+        .filter(|m| !m.is_singular_start())
         .filter_map(|m| match m.classification.as_ref().map(|c| c.pattern) {
             Some(Pattern::Group(g)) => Some(g.kind),
             _ => None,

@@ -21,7 +21,7 @@
 use super::{MOBILITY_TOLERANCE, Mechanism, MechanismError, compose, inverse, log};
 use crate::chain::Displacement;
 use crate::linalg;
-use crate::motion::{self, Classification, MIN_SEPARATION, Pattern};
+use crate::motion::{self, Classification, MIN_SEPARATION, Pattern, SingularStart};
 use nalgebra::{DMatrix, DVector, Vector3};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -79,6 +79,13 @@ pub struct SampledMotion {
     /// The smallest distance between the body poses of two samples (dimensionless, see
     /// [`MIN_SEPARATION`]); infinite with fewer than two samples.
     pub min_separation: f64,
+    /// The mechanism's degrees of freedom at the start (closure nullity over the free joints).
+    pub start_dof: usize,
+    /// The smallest of them at the samples: below `start_dof` when the start is singular
+    /// ([`crate::motion::SingularStart`]). Near a regular start every sample has the start's
+    /// degrees of freedom; a sample with fewer lies on a branch of which the start is not a
+    /// regular point.
+    pub motion_dof: usize,
 }
 
 impl Mechanism {
@@ -131,6 +138,15 @@ impl Mechanism {
             q = attempt?;
         }
         Ok(q)
+    }
+
+    /// The degrees of freedom of the mechanism at `q` with only the `free` joints moving: the
+    /// nullity of the dimensionless loop-closure Jacobian over them, its rank decided as the
+    /// SVD decides it at [`MOBILITY_TOLERANCE`] ([`linalg::rank_quick`]).
+    fn closure_dof(&self, q: &[f64], free: &[usize]) -> usize {
+        let c = self.dimensionless(&self.closure_jacobian(&self.joint_screws(q)));
+        let cf = DMatrix::from_fn(c.nrows(), free.len(), |r, k| c[(r, free[k])]);
+        free.len() - linalg::rank_quick(&cf, MOBILITY_TOLERANCE, None)
     }
 
     /// A random direction of the dimensionless rates of the `free` joints that keep every loop
@@ -229,7 +245,14 @@ impl Mechanism {
             min_separation = min_separation.min(nearest);
             samples.push(sample);
         }
+        let motion_dof = samples
+            .iter()
+            .map(|s| self.closure_dof(&s.q, &free))
+            .min()
+            .unwrap_or(0);
         Ok(SampledMotion {
+            start_dof: self.closure_dof(&start, &free),
+            motion_dof,
             samples,
             min_separation,
         })
@@ -303,6 +326,10 @@ impl Mechanism {
             });
             g.pitch = g.pitch.map(|p| p * self.scale);
         }
+        c.singular_start = (motion.start_dof > motion.motion_dof).then_some(SingularStart {
+            start_dof: motion.start_dof,
+            motion_dof: motion.motion_dof,
+        });
         c
     }
 }

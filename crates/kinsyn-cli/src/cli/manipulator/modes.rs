@@ -340,6 +340,15 @@ fn modes_by_dof(modes: &Modes) -> String {
             )
         });
     }
+    let singular = modes.modes.iter().filter(|m| m.is_singular_start()).count();
+    if singular > 0 {
+        let _ = writeln!(
+            s,
+            "\n{singular} of {} subsets start at a singular configuration of the locked manipulator (more freedom there than along its motion: the branch the motion takes, hence its pattern, is not unique; not counted): lock {}",
+            modes.modes.len(),
+            lock_sets_text(&modes.singular_starts)
+        );
+    }
     let failed: Vec<&Mode> = modes.modes.iter().filter(|m| m.error.is_some()).collect();
     if let Some(first) = failed.first() {
         let _ = writeln!(
@@ -414,6 +423,13 @@ fn mode_detail(mode: &Mode) -> String {
             .map(|p| format!("; {p}"))
             .unwrap_or_default()
     );
+    if let Some(start) = &c.singular_start {
+        let _ = writeln!(
+            s,
+            "singular start: {} degrees of freedom here, {} along the sampled motion; the motion branches here, and the pattern above is that of the branches these walks took (another seed may take another)",
+            start.start_dof, start.motion_dof
+        );
+    }
     let _ = writeln!(
         s,
         "rank gap: smallest kept singular value {}, largest dropped {:.3e} (each relative to its rank decision's scale, over the samples)",
