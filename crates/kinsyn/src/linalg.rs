@@ -455,13 +455,11 @@ pub fn rank_quick(m: &DMatrix<f64>, tolerance: f64, scale: Option<f64>) -> usize
 /// otherwise. For deciding patterns, where the singular values themselves are not reported.
 #[must_use]
 pub fn span_basis_quick(m: &DMatrix<f64>, tolerance: f64) -> (DMatrix<f64>, usize) {
-    match certified_independent_columns(m, tolerance) {
-        Some(qr) => (qr.q(), m.ncols()),
-        None => {
-            let (basis, rank) = span_basis(m, tolerance);
-            (basis, rank.rank)
-        }
+    if let Some(qr) = certified_independent_columns(m, tolerance) {
+        return (qr.q(), m.ncols());
     }
+    let (basis, rank) = span_basis(m, tolerance);
+    (basis, rank.rank)
 }
 
 impl FullRowRank {
@@ -524,7 +522,8 @@ pub fn null_direction(
     #[expect(clippy::cast_precision_loss, reason = "a row count")]
     let round_off = 100.0 * m as f64 * f64::EPSILON;
     let lower = 1.0 / inverse.norm_squared();
-    if !(lower > (tolerance * tolerance + round_off) * norm2) {
+    // A NaN bound certifies nothing.
+    if lower.is_nan() || lower <= (tolerance * tolerance + round_off) * norm2 {
         return None;
     }
     let g = DVector::from_fn(n, draw);

@@ -759,7 +759,7 @@ pub fn classify_subalgebra(basis: &DMatrix<f64>, tolerance: f64) -> Option<Group
     let rot_basis = d.u.columns(0, r);
     // Pure translations in the span: combinations x with ω-part zero.
     let null = d.v.columns(r, k - r);
-    let translations = basis * &null; // 6 × (k − r)
+    let translations = basis * null; // 6 × (k − r)
     let t_dirs = translations.rows(3, 3).into_owned();
     let group = |kind,
                  direction: Option<Vector3<f64>>,
@@ -916,7 +916,7 @@ pub fn classify(samples: &[DMatrix<f64>], min_separation: f64, tolerance: f64) -
 
 /// [`classify`] deciding each sample's rank by a certified QR where its twists are
 /// independent, and by the SVD only where they are not (the same decisions,
-/// [`linalg::span_basis_quick`]): for callers that want the pattern, not the singular values
+/// `docs/verification.md`): for callers that want the pattern, not the singular values
 /// behind it. The classification's `rank_gap` is `rank_gap` as given.
 #[must_use]
 pub fn classify_quick(
