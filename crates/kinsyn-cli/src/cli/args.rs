@@ -299,6 +299,9 @@ pub(super) enum Command {
     /// Figures of the papers drawn by kinsyn (SVG, and PNG for paper 001).
     #[command(subcommand)]
     Plot(PlotCommand),
+    /// Multioperation sweeps over the catalogue's designs (paper 000 §1, §6).
+    #[command(subcommand)]
+    Sweep(SweepCommand),
     /// Write a series-parallel stack of three-legged modules (paper 002) as a description file.
     ///
     /// Equilateral platforms joined in series, each module a 3-RPS (revolutes on its lower
@@ -553,6 +556,19 @@ impl From<StartArg> for kinsyn::homotopy::StartSystem {
             StartArg::MultiHomogeneous => Self::MultiHomogeneous,
         }
     }
+}
+
+/// `kinsyn sweep …`.
+#[derive(Debug, clap::Subcommand)]
+pub(super) enum SweepCommand {
+    /// Rank a sweep's designs by multioperation capacity (group kinds reached, then distinct
+    /// subgroups) against inputs: the Pareto front, the best designs per number of inputs with
+    /// a minimal lock set for each kind, their legs, capacity per family; report.md with two
+    /// figures (SVG and PNG).
+    #[command(
+        after_help = "Examples:\n  kinsyn sweep report results/\n  kinsyn sweep report results/designs.jsonl --top 10 --out ranking"
+    )]
+    Report(super::sweep_report::ReportArgs),
 }
 
 /// `kinsyn plot …`.

@@ -18,6 +18,7 @@ mod notation;
 mod plot;
 mod site;
 pub mod solve;
+mod sweep_report;
 pub mod terminal;
 
 /// The error type under its name inside the command's modules.
@@ -307,6 +308,7 @@ fn execute(command: Command) -> Result<String, CliError> {
             output,
         } => manipulator::stack_command(&modules, radii, heights, output.as_deref()),
         Command::Export { file, mjcf } => export::mjcf(&file, &mjcf),
+        Command::Sweep(args::SweepCommand::Report(r)) => sweep_report::report(&r),
     }
 }
 
