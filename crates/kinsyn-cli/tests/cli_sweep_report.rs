@@ -27,7 +27,11 @@ fn row(design: usize, inputs: usize, kinds: usize, family: &str) -> DesignRow {
                 parameters: None,
                 dof: 3,
                 subsets: 1,
-                lock_sets: vec![if k == "D" { "-".into() } else { "P1.1 | P2.1".into() }],
+                lock_sets: vec![if k == "D" {
+                    "-".into()
+                } else {
+                    "P1.1 | P2.1".into()
+                }],
             })
             .collect(),
         kinds,
@@ -55,7 +59,11 @@ fn assert_well_formed_xml(text: &str) {
             continue;
         }
         let name = tag.split_whitespace().next().unwrap().trim_end_matches('/');
-        assert_eq!(tag.matches('"').count() % 2, 0, "attribute quotes in <{tag}>");
+        assert_eq!(
+            tag.matches('"').count() % 2,
+            0,
+            "attribute quotes in <{tag}>"
+        );
         if !tag.ends_with('/') {
             stack.push(name.to_string());
         }
@@ -87,8 +95,14 @@ fn report_writes_markdown_and_figures() {
     let md = std::fs::read_to_string(out.join("report.md")).unwrap();
     assert!(md.contains("| inputs | design | chain |"), "{md}");
     // The front's rows: d1 with 3 inputs and 2 kinds, d3 with 6 inputs and 3 kinds.
-    assert!(md.contains("| 3 | 1 | T1-001 | `PPPS` | 1 | 6 | 2 | 2 | X D |"), "{md}");
-    assert!(md.contains("| 6 | 3 | T1-003 | `PPPS` | 1 | 6 | 3 | 3 | T3 X D |"), "{md}");
+    assert!(
+        md.contains("| 3 | 1 | T1-001 | `PPPS` | 1 | 6 | 2 | 2 | X D |"),
+        "{md}"
+    );
+    assert!(
+        md.contains("| 6 | 3 | T1-003 | `PPPS` | 1 | 6 | 3 | 3 | T3 X D |"),
+        "{md}"
+    );
     assert!(!md.contains("| 6 | 2 | T1-002"), "{md}");
     // A lock set holding '|' is escaped in the table.
     assert!(md.contains("P1.1 \\| P2.1"), "{md}");
@@ -101,7 +115,14 @@ fn report_writes_markdown_and_figures() {
         assert_well_formed_xml(&svg);
     }
     // --json: the ranking, the front by design index.
-    let o = kinsyn(&["sweep", "report", results, "--json", "--out", dir.path().join("j").to_str().unwrap()]);
+    let o = kinsyn(&[
+        "sweep",
+        "report",
+        results,
+        "--json",
+        "--out",
+        dir.path().join("j").to_str().unwrap(),
+    ]);
     assert_eq!(o.status.code(), Some(0));
     let v: serde_json::Value = serde_json::from_str(&stdout(&o)).unwrap();
     let front: Vec<u64> = v["ranking"]["front"]

@@ -31,17 +31,17 @@ fn row(design: usize, inputs: usize, kinds: usize, subgroups: usize, family: &st
 /// (inputs, kinds, subgroups) per design index; design 9 failed to build.
 fn hand_rows() -> Vec<DesignRow> {
     let table = [
-        (3, 2, 2),  // d0: below d1 (same inputs, fewer subgroups)
-        (3, 2, 3),  // d1: best of 3 inputs, beats everything with 2 inputs → front
-        (3, 1, 5),  // d2: fewer kinds than d1 (kinds before subgroups) → dominated
-        (6, 2, 9),  // d3: below d4 at 6 inputs (2 kinds < 4) → dominated
-        (6, 4, 4),  // d4: best of 6, beats (2,3) → front
-        (9, 4, 4),  // d5: same capacity as d4 with more inputs → dominated
-        (9, 5, 1),  // d6: best of 9, 5 kinds > 4 → front
-        (4, 2, 3),  // d7: same capacity as d1 with more inputs → dominated
-        (6, 4, 4),  // d8: tie with d4 → front too
-        (2, 0, 0),  // d9: failed (error): not ranked although it has the fewest inputs
-        (2, 1, 1),  // d10: the fewest inputs among built designs → front
+        (3, 2, 2), // d0: below d1 (same inputs, fewer subgroups)
+        (3, 2, 3), // d1: best of 3 inputs, beats everything with 2 inputs → front
+        (3, 1, 5), // d2: fewer kinds than d1 (kinds before subgroups) → dominated
+        (6, 2, 9), // d3: below d4 at 6 inputs (2 kinds < 4) → dominated
+        (6, 4, 4), // d4: best of 6, beats (2,3) → front
+        (9, 4, 4), // d5: same capacity as d4 with more inputs → dominated
+        (9, 5, 1), // d6: best of 9, 5 kinds > 4 → front
+        (4, 2, 3), // d7: same capacity as d1 with more inputs → dominated
+        (6, 4, 4), // d8: tie with d4 → front too
+        (2, 0, 0), // d9: failed (error): not ranked although it has the fewest inputs
+        (2, 1, 1), // d10: the fewest inputs among built designs → front
     ];
     let mut rows: Vec<DesignRow> = table
         .iter()
@@ -148,7 +148,14 @@ fn kind_locks_take_the_fewest_inputs() {
     ];
     let k = kind_locks(&r);
     assert_eq!(k.len(), 2);
-    assert_eq!((k[0].kind.as_str(), k[0].pattern.as_str(), k[0].lock_set.as_str()), ("X", "X(z)", "P1.1"));
+    assert_eq!(
+        (
+            k[0].kind.as_str(),
+            k[0].pattern.as_str(),
+            k[0].lock_set.as_str()
+        ),
+        ("X", "X(z)", "P1.1")
+    );
     assert_eq!((k[1].kind.as_str(), k[1].lock_set.as_str()), ("D", "-"));
 }
 
@@ -260,31 +267,38 @@ fn direction(pattern: &str) -> [f64; 3] {
         _ => {}
     }
     let inside = pattern.split(['[', ']']).nth(1).unwrap();
-    let v: Vec<f64> = inside.split(',').map(|x| x.trim().parse().unwrap()).collect();
+    let v: Vec<f64> = inside
+        .split(',')
+        .map(|x| x.trim().parse().unwrap())
+        .collect();
     [v[0], v[1], v[2]]
 }
 
 /// Paper 000 Table 1 row 1, PPPS, with the three sliders of each leg actuated (9 inputs).
 /// The geometry of `manipulator::build` (module documentation): leg i's platform point, the S
-/// centre A_i, is on the platform circle of radius 0.5 at height 1, at angle 120°·(i−1); the
+/// centre `A_i`, is on the platform circle of radius 0.5 at height 1, at angle 120°·(i−1); the
 /// sliders run along the leg frame x, y, z (x and z in the leg's vertical plane and not
-/// horizontal, y horizontal). Each leg moves A_i freely, so with nothing locked the platform
+/// horizontal, y horizontal). Each leg moves `A_i` freely, so with nothing locked the platform
 /// has D (6 dof). Derived kinds and subgroups:
-/// - S(A_i): the three sliders of leg i locked fix A_i; any further lock moves another
-///   platform point in a plane or a line, which no rotation about A_i keeps, so that one
+/// - `S(A_i)`: the three sliders of leg i locked fix `A_i`; any further lock moves another
+///   platform point in a plane or a line, which no rotation about `A_i` keeps, so that one
 ///   subset alone gives it (3 dof).
-/// - R about the line A_aA_b: leg a's three sliders and two of leg b's locked fix A_a and hold
-///   A_b on a line; of the rotations about A_a (3 dof) the two constraints leave one, the
-///   rotation about A_aA_b, which keeps A_b fixed: a minimal lock set of 5 (1 dof).
-/// - E: add leg c's slider x to that set: the rotation about A_aA_b (a horizontal line) moves
-///   A_c vertically, and x has a vertical component, so nothing moves (0 dof).
+/// - R about the line `A_aA_b`: leg a's three sliders and two of leg b's locked fix `A_a` and hold
+///   `A_b` on a line; of the rotations about `A_a` (3 dof) the two constraints leave one, the
+///   rotation about `A_aA_b`, which keeps `A_b` fixed: a minimal lock set of 5 (1 dof).
+/// - E: add leg c's slider x to that set: the rotation about `A_aA_b` (a horizontal line) moves
+///   `A_c` vertically, and x has a vertical component, so nothing moves (0 dof).
 #[test]
 fn three_ppps_with_sliders_actuated() {
     let r = design("T1-001", &[1, 2, 3]).evaluate(&SweepSettings::default());
     assert_eq!(r.error, None);
     assert_eq!((r.inputs, r.dof), (9, 6));
     for kind in ["E", "R", "S", "D"] {
-        assert!(r.group_kinds.iter().any(|k| k == kind), "{kind} in {:?}", r.group_kinds);
+        assert!(
+            r.group_kinds.iter().any(|k| k == kind),
+            "{kind} in {:?}",
+            r.group_kinds
+        );
     }
     assert_eq!(group(&r, "-").unwrap().pattern, "D");
     for leg in 1..=3 {
@@ -323,6 +337,11 @@ fn three_ppps_with_sliders_actuated() {
         assert_eq!((e.pattern.as_str(), e.dof), ("E", 0));
     }
     // One S per leg's centre.
-    let count = |k: &str| r.groups.iter().filter(|g| g.pattern.split('(').next() == Some(k)).count();
+    let count = |k: &str| {
+        r.groups
+            .iter()
+            .filter(|g| g.pattern.split('(').next() == Some(k))
+            .count()
+    };
     assert_eq!(count("S"), 3);
 }

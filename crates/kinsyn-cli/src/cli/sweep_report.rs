@@ -3,7 +3,7 @@
 
 use super::plot::draw_error;
 use super::{CliError, json};
-use kinsyn::sweep::ranking::{Ranking, RankedDesign};
+use kinsyn::sweep::ranking::{RankedDesign, Ranking};
 use kinsyn::sweep::{DesignRow, SweepSettings};
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -142,9 +142,8 @@ fn read_rows(file: &Path) -> Result<Vec<DesignRow>, CliError> {
     for (i, line) in reader.split(b'\n').enumerate() {
         let number = i + 1;
         let bytes = line.map_err(|e| CliError::Input(format!("{shown}: {e}")))?;
-        let text = String::from_utf8(bytes).map_err(|_| {
-            CliError::Input(format!("{shown} line {number}: not UTF-8 text"))
-        })?;
+        let text = String::from_utf8(bytes)
+            .map_err(|_| CliError::Input(format!("{shown} line {number}: not UTF-8 text")))?;
         if text.trim().is_empty() {
             continue;
         }
@@ -283,7 +282,10 @@ fn markdown_report(results: &Results, r: &Ranking) -> String {
         md,
         "| inputs | design | chain | notation | actuated | dof | kinds | subgroups | group kinds |"
     );
-    let _ = writeln!(md, "| ---: | ---: | --- | --- | --- | ---: | ---: | ---: | --- |");
+    let _ = writeln!(
+        md,
+        "| ---: | ---: | --- | --- | --- | ---: | ---: | ---: | --- |"
+    );
     for d in &r.front {
         let _ = writeln!(
             md,
@@ -560,7 +562,10 @@ fn draw_scatter<DB: DrawingBackend>(
         .margin(12)
         .x_label_area_size(40)
         .y_label_area_size(50)
-        .build_cartesian_2d(0.0..(most_inputs as f64 + 1.0), -0.5..(most_kinds as f64 + 1.0))
+        .build_cartesian_2d(
+            0.0..(most_inputs as f64 + 1.0),
+            -0.5..(most_kinds as f64 + 1.0),
+        )
         .map_err(draw_error)?;
     chart
         .configure_mesh()
