@@ -19,6 +19,7 @@ mod plot;
 mod site;
 pub mod solve;
 pub mod sweep;
+mod sweep_report;
 pub mod terminal;
 
 /// The error type under its name inside the command's modules.
@@ -308,6 +309,10 @@ fn execute(command: Command) -> Result<String, CliError> {
             output,
         } => manipulator::stack_command(&modules, radii, heights, output.as_deref()),
         Command::Export { file, mjcf } => export::mjcf(&file, &mjcf),
+        Command::Sweep {
+            command: Some(args::SweepCommand::Report(r)),
+            ..
+        } => sweep_report::report(&r),
         Command::Sweep {
             command: Some(args::SweepCommand::Merge { dirs, out, json }),
             ..

@@ -17,6 +17,8 @@
 //! with it or on the thread count, so a sweep can be split into shards, interrupted and
 //! resumed, and its parts merged, with the same rows as one run.
 
+pub mod ranking;
+
 use crate::catalogue::Catalogue;
 use crate::manipulator::build::{BuildSpec, build};
 use crate::manipulator::{Manipulator, PatternModes};
