@@ -1,5 +1,6 @@
 //! The Python module `kinsyn._native`: kinsyn's catalogue, manipulators, homotopy solver and the
-//! commands of single papers (paper 003's configurable 4-RRR, `components`) for the pure-Python
+//! commands of single papers (paper 003's configurable 4-RRR, `components`) and the
+//! catalogue-wide sweep (`kinsyn sweep`, as files in a directory) for the pure-Python
 //! package `kinsyn`, which turns the reports into pandas and numpy objects.
 //!
 //! Each function gives the report the `kinsyn` command gives with `--json`, as JSON text, and
@@ -11,6 +12,7 @@ mod error;
 mod manipulator;
 mod papers;
 mod solve;
+mod sweep;
 
 use pyo3::prelude::*;
 
@@ -29,6 +31,9 @@ fn kinsyn_native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(papers::configurable_forward_json, m)?)?;
     m.add_function(wrap_pyfunction!(papers::configurable_velocity_json, m)?)?;
     m.add_function(wrap_pyfunction!(papers::components_json, m)?)?;
+    m.add_function(wrap_pyfunction!(sweep::sweep_json, m)?)?;
+    m.add_function(wrap_pyfunction!(sweep::sweep_merge_json, m)?)?;
+    m.add_function(wrap_pyfunction!(sweep::sweep_partitions_json, m)?)?;
     m.add_class::<manipulator::Manipulator>()?;
     Ok(())
 }

@@ -25,17 +25,26 @@ use kinsyn::sweep::SweepSettings;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
-/// The options of `kinsyn sweep` as given on the command line.
+/// The options of `kinsyn sweep` as given on the command line (and by Python's
+/// `kinsyn.sweep`), not yet checked.
 #[derive(Debug, Clone)]
-pub(super) struct Request<'a> {
-    pub(super) legs: usize,
-    pub(super) actuated: &'a [usize],
-    pub(super) seed: u64,
-    pub(super) chains: Option<&'a str>,
-    pub(super) family: Option<&'a str>,
-    pub(super) shard: Option<&'a str>,
-    pub(super) threads: Option<usize>,
-    pub(super) stop_after: Option<usize>,
+pub struct Request<'a> {
+    /// `--legs`.
+    pub legs: usize,
+    /// `--actuated`: the counts of actuated joints per leg.
+    pub actuated: &'a [usize],
+    /// `--seed`.
+    pub seed: u64,
+    /// `--chains`: comma-separated catalogue ids.
+    pub chains: Option<&'a str>,
+    /// `--family`.
+    pub family: Option<&'a str>,
+    /// `--shard K/N`.
+    pub shard: Option<&'a str>,
+    /// `--threads`.
+    pub threads: Option<usize>,
+    /// `--stop-after` (hidden; for tests of resuming).
+    pub stop_after: Option<usize>,
 }
 
 /// The settings of `--legs`, `--actuated` and `--seed`, checked: 3 to 6 legs (as
@@ -91,13 +100,14 @@ fn catalogue() -> Result<Catalogue, CliError> {
         .map_err(|e| CliError::Internal(format!("the compiled-in catalogue does not read: {e}")))
 }
 
-/// `kinsyn sweep --out DIR …`: runs (or resumes) the sweep and reports it.
-pub(super) fn command(
-    out: &Path,
-    request: &Request,
-    bench: bool,
-    as_json: bool,
-) -> Result<String, CliError> {
+/// The sweep `request` asks for, checked against `catalogue`: its settings, selection, shard
+/// and threads.
+///
+/// # Errors
+/// [`CliError::Input`] naming the option that is out of range or malformed (as
+/// [`sweep_settings`], [`Shard::parse`], [`SweepSelection::new`]; `--threads` 0 or above
+/// [`MAX_THREADS`](crate::MAX_THREADS)).
+pub fn options(catalogue: &Catalogue, request: &Request) -> Result<SweepOptions, CliError> {
     let settings = sweep_settings(request.legs, request.actuated, request.seed)?;
     let shard = request.shard.map(Shard::parse).transpose()?;
     if request
@@ -110,30 +120,100 @@ pub(super) fn command(
             crate::cli::solve::MAX_THREADS
         )));
     }
-    let catalogue = catalogue()?;
-    let selection = SweepSelection::new(&catalogue, request.chains, request.family)?;
-    let options = SweepOptions {
+    let selection = SweepSelection::new(catalogue, request.chains, request.family)?;
+    Ok(SweepOptions {
         settings,
         selection,
         shard,
         threads: request.threads,
         stop_after: request.stop_after,
+    })
+}
+
+/// `kinsyn sweep --out OUT …` on the committed catalogue: runs (or resumes) the sweep
+/// `request` asks for into `out`, with a progress bar on stderr when `progress` is true and
+/// stderr is a terminal.
+///
+/// # Errors
+/// As [`options`] and [`sweep()`].
+pub fn run_request(
+    out: &Path,
+    request: &Request,
+    progress: bool,
+) -> Result<SweepOutcome, CliError> {
+    let catalogue = catalogue()?;
+    let options = options(&catalogue, request)?;
+    let bar = if progress {
+        crate::cli::terminal::progress(0, "designs", "sweep")
+    } else {
+        indicatif::ProgressBar::hidden()
     };
-    let bar = crate::cli::terminal::progress(0, "designs", "sweep");
-    let outcome = sweep(&catalogue, out, &options, &bar)?;
+    sweep(&catalogue, out, &options, &bar)
+}
+
+/// The `--json` summary of a run: the outcome with `designs_per_second` and
+/// `subsets_per_core_second`.
+#[must_use]
+pub fn outcome_json(outcome: &SweepOutcome) -> serde_json::Value {
+    let mut value = serde_json::to_value(outcome).unwrap_or_default();
+    if let Some(o) = value.as_object_mut() {
+        o.insert(
+            "designs_per_second".into(),
+            outcome.designs_per_second().into(),
+        );
+        o.insert(
+            "subsets_per_core_second".into(),
+            outcome.subsets_per_core_second().into(),
+        );
+    }
+    value
+}
+
+/// The manifests (not yet complete) of the shards 1/`count` … `count`/`count` of the sweep
+/// `request` asks for (its `shard`, `threads` and `stop_after` are not used): what each
+/// `kinsyn sweep --shard K/N` with these options writes into `sweep.json` when it starts.
+///
+/// # Errors
+/// As [`options`]; `count` 0 is refused as `--shard 1/0` is.
+pub fn shard_manifests(request: &Request, count: usize) -> Result<Vec<Manifest>, CliError> {
+    Shard::parse(&format!("1/{count}"))?;
+    let catalogue = catalogue()?;
+    let options = options(
+        &catalogue,
+        &Request {
+            shard: None,
+            threads: None,
+            stop_after: None,
+            ..request.clone()
+        },
+    )?;
+    let total = options
+        .selection
+        .designs(&catalogue, &options.settings)?
+        .len();
+    (1..=count)
+        .map(|k| {
+            let shard = Shard::parse(&format!("{k}/{count}"))?;
+            Ok(Manifest::new(
+                &options.settings,
+                &options.selection,
+                Some(shard),
+                total,
+            ))
+        })
+        .collect()
+}
+
+/// `kinsyn sweep --out DIR …`: runs (or resumes) the sweep and reports it.
+pub(super) fn command(
+    out: &Path,
+    request: &Request,
+    bench: bool,
+    as_json: bool,
+) -> Result<String, CliError> {
+    let outcome = run_request(out, request, true)?;
     if as_json {
-        let mut value = serde_json::to_value(&outcome).unwrap_or_default();
-        if let Some(o) = value.as_object_mut() {
-            o.insert(
-                "designs_per_second".into(),
-                outcome.designs_per_second().into(),
-            );
-            o.insert(
-                "subsets_per_core_second".into(),
-                outcome.subsets_per_core_second().into(),
-            );
-        }
-        return Ok(json(&value));
+        return Ok(json(&outcome_json(&outcome)));
     }
     Ok(summary(&outcome, bench))
 }

@@ -14,7 +14,9 @@ command it mirrors), as pandas DataFrames and numpy arrays:
 - :func:`components`: the irreducible components (assemblies, self-motions, operation modes)
   of a manipulator's constraint variety or of a polynomial system (paper 004);
 - :mod:`kinsyn.configurable`: paper 003's planar 4-RRR with a configurable platform (inverse
-  and forward position, velocities by screw theory).
+  and forward position, velocities by screw theory);
+- :mod:`kinsyn.sweep`: the catalogue-wide multioperation sweep as files in a directory (one
+  run, or shards for a cluster such as Dask, merged), read back as a DataFrame.
 
 Bad input raises :class:`InputError` (a :class:`KinsynError`) whose ``str()`` is the one-line
 message the command prints after ``kinsyn: error:``.
@@ -49,6 +51,7 @@ __all__ = [
     "query",
     "solve",
     "solve_file",
+    "sweep",
 ]
 
 
@@ -631,3 +634,4 @@ def components(
 
 
 from . import configurable  # noqa: E402  (the submodule uses the helpers above)
+from . import sweep  # noqa: E402

@@ -39,6 +39,28 @@ def components_json(
     method: str = "by-dimension",
     seed: int = 1,
 ) -> str: ...
+def sweep_json(
+    out: Union[str, PathLike[str]],
+    legs: int = 3,
+    actuated: List[int] = ...,
+    seed: Optional[int] = None,
+    chains: Optional[List[str]] = None,
+    family: Optional[str] = None,
+    shard: Optional[str] = None,
+    threads: Optional[int] = None,
+    stop_after: Optional[int] = None,
+) -> str: ...
+def sweep_merge_json(
+    dirs: List[Union[str, PathLike[str]]], out: Union[str, PathLike[str]]
+) -> str: ...
+def sweep_partitions_json(
+    count: int,
+    legs: int = 3,
+    actuated: List[int] = ...,
+    seed: Optional[int] = None,
+    chains: Optional[List[str]] = None,
+    family: Optional[str] = None,
+) -> str: ...
 
 class Manipulator:
     @staticmethod

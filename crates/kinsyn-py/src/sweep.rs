@@ -1,0 +1,118 @@
+//! `kinsyn sweep` and `kinsyn sweep merge` (docs/sweep.md): the catalogue-wide multioperation
+//! sweep run into a directory (whole or one shard, resumable), shard directories merged, and
+//! the shards of a sweep listed, each by the command's own code ([`kinsyn_cli::sweep`]).
+
+use crate::error::{Error, py_err};
+use kinsyn::mechanism::SampleSettings;
+use kinsyn_cli::sweep::{Request, Shard, merge, outcome_json, run_request, shard_manifests};
+use pyo3::prelude::*;
+use std::path::PathBuf;
+
+/// The chain ids as `--chains` takes them: comma-separated.
+fn chains_text(chains: Option<&[String]>) -> Option<String> {
+    chains.map(|c| c.join(","))
+}
+
+/// `value` as JSON text.
+fn to_json(value: Result<serde_json::Value, serde_json::Error>) -> PyResult<String> {
+    value
+        .and_then(|v| serde_json::to_string(&v))
+        .map_err(|e| py_err(Error::Internal(format!("the sweep report: {e}"))))
+}
+
+/// `kinsyn sweep --out OUT [--shard K/N] … --json`, as JSON text: runs (or resumes, or finds
+/// complete) the sweep of `legs` legs with `actuated` actuated joints per leg over the chosen
+/// catalogue chains into the directory `out`, and reports the run. `seed` `None` is the
+/// command's default. No progress bar is drawn.
+#[pyfunction]
+#[pyo3(signature = (out, legs = 3, actuated = vec![1, 2], seed = None, chains = None,
+    family = None, shard = None, threads = None, stop_after = None))]
+#[expect(clippy::too_many_arguments, reason = "the options of `kinsyn sweep`")]
+#[expect(
+    clippy::needless_pass_by_value,
+    reason = "PyO3 converts Python paths and lists to owned values"
+)]
+pub fn sweep_json(
+    py: Python<'_>,
+    out: PathBuf,
+    legs: usize,
+    actuated: Vec<usize>,
+    seed: Option<u64>,
+    chains: Option<Vec<String>>,
+    family: Option<String>,
+    shard: Option<String>,
+    threads: Option<usize>,
+    stop_after: Option<usize>,
+) -> PyResult<String> {
+    let chains = chains_text(chains.as_deref());
+    let request = Request {
+        legs,
+        actuated: &actuated,
+        seed: seed.unwrap_or(SampleSettings::default().seed),
+        chains: chains.as_deref(),
+        family: family.as_deref(),
+        shard: shard.as_deref(),
+        threads,
+        stop_after,
+    };
+    let outcome = py
+        .detach(|| run_request(&out, &request, false))
+        .map_err(py_err)?;
+    to_json(Ok(outcome_json(&outcome)))
+}
+
+/// `kinsyn sweep merge DIRS… --out OUT --json`, as JSON text: the complete shard directories
+/// `dirs` of one sweep merged into `out` (the files one run of the whole sweep writes); the
+/// merged manifest.
+#[pyfunction]
+#[expect(
+    clippy::needless_pass_by_value,
+    reason = "PyO3 converts Python paths and lists to owned values"
+)]
+pub fn sweep_merge_json(py: Python<'_>, dirs: Vec<PathBuf>, out: PathBuf) -> PyResult<String> {
+    let manifest = py.detach(|| merge(&dirs, &out)).map_err(py_err)?;
+    to_json(serde_json::to_value(&manifest))
+}
+
+/// The manifests of the shards 1/`count` … `count`/`count` of the sweep with these options, as a
+/// JSON array: what `kinsyn sweep --shard K/N` writes into `sweep.json` when it starts (the
+/// chains in the catalogue's spelling and order, the seed, each shard's design count).
+#[pyfunction]
+#[pyo3(signature = (count, legs = 3, actuated = vec![1, 2], seed = None, chains = None,
+    family = None))]
+#[expect(
+    clippy::needless_pass_by_value,
+    reason = "PyO3 converts Python lists to owned values"
+)]
+pub fn sweep_partitions_json(
+    py: Python<'_>,
+    count: i64,
+    legs: usize,
+    actuated: Vec<usize>,
+    seed: Option<u64>,
+    chains: Option<Vec<String>>,
+    family: Option<String>,
+) -> PyResult<String> {
+    // A negative count is refused as `--shard 1/-1` is.
+    let Ok(count) = usize::try_from(count) else {
+        let refused = Shard::parse(&format!("1/{count}")).err();
+        return Err(py_err(refused.unwrap_or_else(|| {
+            Error::Input(format!("{count} shards: give 1 or more"))
+        })));
+    };
+    let chains = chains_text(chains.as_deref());
+    let request = Request {
+        legs,
+        actuated: &actuated,
+        seed: seed.unwrap_or(SampleSettings::default().seed),
+        chains: chains.as_deref(),
+        family: family.as_deref(),
+        shard: None,
+        threads: None,
+        stop_after: None,
+    };
+    let manifests = py
+        .detach(|| shard_manifests(&request, count))
+        .map_err(py_err)?;
+    to_json(serde_json::to_value(&manifests))
+}

@@ -1,0 +1,184 @@
+"""kinsyn.sweep against the kinsyn command line (an independent run of `kinsyn sweep` by the
+binary named by $KINSYN_BIN, or `cargo run`): the files of a Python run are the command's byte
+for byte; three shards run on a Dask cluster of two worker processes and merged are one run's
+files byte for byte; the Parquet and JSON-lines files read back give equal frames with the
+command's design count; bad input raises InputError with the command's one-line message.
+
+Dask (dask, distributed) is required in CI (`CI` set) and skipped elsewhere when missing; the
+Parquet reading needs pyarrow likewise.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import pickle
+from pathlib import Path
+
+import pytest
+
+import kinsyn
+import kinsyn.sweep as ks
+
+from test_kinsyn import cli, cli_error
+
+# Three chains, one actuated joint per leg: 3 × 6 designs of 3 legs, 8 lock subsets each.
+CHAINS = ["T1-001", "T1-002", "T4-034"]
+SMALL = dict(chains=CHAINS, actuated=(1,))
+SMALL_ARGS = ["--chains", ",".join(CHAINS), "--actuated", "1"]
+FILES = ["designs.jsonl", "designs.parquet", "sweep.json"]
+
+
+def optional(module: str, why: str):
+    """`module` imported; a failure in CI, a skip with the reason elsewhere."""
+    try:
+        return __import__(module)
+    except ImportError:
+        if os.environ.get("CI"):
+            pytest.fail(f"CI is set but {module} does not import: pip install {module} ({why})")
+        pytest.skip(f"{module} is not installed: {why} is skipped")
+
+
+def assert_same_files(a: Path, b: Path) -> None:
+    for name in FILES:
+        assert (a / name).read_bytes() == (b / name).read_bytes(), name
+    assert not (a / "checkpoint.jsonl").exists()
+
+
+def cli_sweep(out: Path, *args: str) -> dict:
+    done = cli("sweep", "--out", str(out), *args, "--json")
+    assert done.returncode == 0, done.stderr
+    return json.loads(done.stdout)
+
+
+@pytest.fixture(scope="module")
+def cli_run(tmp_path_factory) -> tuple[Path, dict]:
+    """The command's run of the small sweep: its directory and its --json summary."""
+    d = tmp_path_factory.mktemp("cli") / "whole"
+    return d, cli_sweep(d, *SMALL_ARGS)
+
+
+def test_a_python_run_writes_the_command_s_files(tmp_path, cli_run):
+    cli_dir, cli_summary = cli_run
+    got = ks.run(None, tmp_path / "py", threads=2, **SMALL)
+    assert got.complete and not got.already_complete and got.resumed == 0
+    assert got.evaluated == cli_summary["evaluated"] == cli_summary["manifest"]["designs"] == 18
+    assert got.lock_subsets == 18 * 2**3 - 8 * got.errors
+    assert got.manifest == cli_summary["manifest"]
+    assert_same_files(tmp_path / "py", cli_dir)
+    # Run again: already complete, nothing rewritten.
+    again = ks.run(None, tmp_path / "py", **SMALL)
+    assert again.already_complete and again.evaluated == 0
+    assert_same_files(tmp_path / "py", cli_dir)
+
+
+def test_an_interrupted_python_run_resumes_to_the_same_files(tmp_path, cli_run):
+    cut = tmp_path / "cut"
+    first = ks.run(None, cut, stop_after=5, threads=1, **SMALL)
+    assert not first.complete and first.evaluated == 5
+    assert not (cut / "designs.jsonl").exists()
+    second = ks.run(None, cut, **SMALL)
+    assert second.complete and second.resumed == 5 and second.evaluated == 13
+    assert_same_files(cut, cli_run[0])
+
+
+def test_partitions_are_the_command_s_shards(tmp_path, cli_run):
+    parts = ks.partitions(3, chains=["t4-034", "T1-002", "T1-001"], actuated=[1])
+    assert [p.shard for p in parts] == ["1/3", "2/3", "3/3"]
+    # Design i is in shard (i mod 3) + 1: 18 designs, 6 per shard.
+    assert [p.designs for p in parts] == [6, 6, 6]
+    assert all(p.sweep_designs == 18 for p in parts)
+    assert parts[0].chains == tuple(CHAINS)  # the catalogue's spelling and order
+    assert parts[0].seed == 2026 and parts[0].legs == 3 and parts[0].actuated == (1,)
+    assert pickle.loads(pickle.dumps(parts)) == parts
+    # Shard 2/3 by the Python method and by the command: the same files.
+    parts[1].run(tmp_path / "py2")
+    cli_sweep(tmp_path / "cli2", *SMALL_ARGS, "--shard", "2/3")
+    assert_same_files(tmp_path / "py2", tmp_path / "cli2")
+    assert [len(ks.partitions(n, **SMALL)) for n in (1, 7)] == [1, 7]
+    assert sum(p.designs for p in ks.partitions(7, **SMALL)) == 18
+
+
+def test_three_shards_on_a_dask_cluster_merge_to_one_run(tmp_path, cli_run):
+    optional("dask", "the Dask recipe's test")
+    distributed = optional("distributed", "the Dask recipe's test")
+    parts = ks.partitions(3, **SMALL)
+    dirs = [tmp_path / f"shard{p.index}" for p in parts]
+    with distributed.LocalCluster(
+        n_workers=2, processes=True, threads_per_worker=1, dashboard_address=None
+    ) as cluster, distributed.Client(cluster) as client:
+        results = client.gather(client.map(ks.run, parts, dirs, threads=1))
+        workers = {r["pid"] for r in client.run(lambda: {"pid": os.getpid()}).values()}
+    assert len(workers) == 2 and os.getpid() not in workers
+    assert [r.manifest["shard"] for r in results] == [
+        {"index": k, "count": 3} for k in (1, 2, 3)
+    ]
+    assert all(r.complete for r in results)
+    assert sum(r.evaluated for r in results) == 18
+    merged = ks.merge(list(reversed(dirs)), tmp_path / "merged")
+    assert merged["designs"] == 18 and merged["shard"] is None and merged["complete"]
+    assert_same_files(tmp_path / "merged", cli_run[0])
+
+
+def test_parquet_and_jsonl_read_to_the_same_frame(cli_run):
+    optional("pyarrow", "reading designs.parquet")
+    cli_dir, cli_summary = cli_run
+    from_parquet = ks.read(cli_dir)
+    from_jsonl = ks.read(cli_dir, source="jsonl")
+    assert len(from_parquet) == len(from_jsonl) == cli_summary["manifest"]["designs"] == 18
+    assert list(from_parquet.columns) == list(from_jsonl.columns) == ks.COLUMNS
+    assert (from_parquet.dtypes == from_jsonl.dtypes).all()
+    assert from_parquet.to_dict("records") == from_jsonl.to_dict("records")
+    assert from_parquet.equals(ks.read(cli_dir / "designs.parquet"))
+    assert from_parquet.attrs["manifest"] == cli_summary["manifest"]
+    # The rows are the JSON lines, in design order.
+    lines = [json.loads(l) for l in (cli_dir / "designs.jsonl").read_text().splitlines()]
+    assert list(from_parquet["design"]) == list(range(18))
+    assert list(from_parquet["chain"]) == [l["chain"] for l in lines]
+    assert from_parquet["groups"].tolist() == [l["groups"] for l in lines]
+    # T4-034 is the UPS leg: with its 3 sliders actuated the 3-UPS has 6 dof (paper 000 §5.1).
+    ups = from_parquet[
+        (from_parquet.chain == "T4-034") & from_parquet.actuated.map(lambda a: list(a) == [3])
+    ]
+    assert list(ups["dof"]) == [6]
+
+
+def test_bad_input_raises_the_command_s_message(tmp_path, cli_run):
+    out = str(tmp_path / "never")
+    cases = [
+        (lambda: ks.partitions(0), ["sweep", "--out", out, "--shard", "1/0"]),
+        (lambda: ks.partitions(-2), ["sweep", "--out", out, "--shard", "1/-2"]),
+        (
+            lambda: ks.partitions(2, chains=["T1-001", "T9-999"]),
+            ["sweep", "--out", out, "--chains", "T1-001,T9-999"],
+        ),
+        (
+            lambda: ks.run(None, out, chains=["T9-999"]),
+            ["sweep", "--out", out, "--chains", "T9-999"],
+        ),
+        (lambda: ks.partitions(2, legs=7), ["sweep", "--out", out, "--legs", "7"]),
+        (lambda: ks.partitions(2, family="QQQ"), ["sweep", "--out", out, "--family", "QQQ"]),
+        (lambda: ks.run(None, out, threads=0, **SMALL), ["sweep", "--out", out, "--threads", "0"]),
+    ]
+    for call, args in cases:
+        with pytest.raises(kinsyn.InputError) as e:
+            call()
+        assert str(e.value) == cli_error(*args)
+    assert not Path(out).exists()
+    # Merging an incomplete shard: shard 1/2 stopped after 2 rows, shard 2/2 complete.
+    parts = ks.partitions(2, **SMALL)
+    a, b = tmp_path / "a", tmp_path / "b"
+    parts[0].run(a, stop_after=2)
+    parts[1].run(b)
+    with pytest.raises(kinsyn.InputError) as e:
+        ks.merge([a, b], tmp_path / "m")
+    assert str(e.value) == cli_error("sweep", "merge", str(a), str(b), "--out", str(tmp_path / "m"))
+    assert "incomplete" in str(e.value)
+    # A directory holding another sweep.
+    with pytest.raises(kinsyn.InputError) as e:
+        ks.run(None, b, **SMALL)
+    assert str(e.value) == cli_error("sweep", "--out", str(b), *SMALL_ARGS)
+    with pytest.raises(kinsyn.InputError, match="not a complete sweep directory"):
+        ks.read(a)
+    with pytest.raises(TypeError):
+        ks.run(parts[0], tmp_path / "c", legs=4)
