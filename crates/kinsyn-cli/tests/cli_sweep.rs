@@ -133,6 +133,10 @@ fn a_row_is_what_build_and_modes_give_for_its_design() {
             "design {design}"
         );
         assert_eq!(row["inputs"], modes["actuators"].as_array().unwrap().len());
+        assert_eq!(
+            row["singular_lock_sets"], modes["singular_starts"],
+            "design {design}"
+        );
     }
 }
 
@@ -404,6 +408,7 @@ fn the_parquet_file_holds_the_jsonl_rows() {
                 "subgroups",
                 "kinds",
                 "unsampled",
+                "singular",
             ] {
                 let c = col(name);
                 assert_eq!(
@@ -431,6 +436,10 @@ fn the_parquet_file_holds_the_jsonl_rows() {
             let list = kinds.as_list::<i32>().value(i);
             let values: Vec<&str> = list.as_string::<i32>().iter().map(Option::unwrap).collect();
             assert_eq!(serde_json::json!(values), row["group_kinds"]);
+            let singular = col("singular_lock_sets");
+            let list = singular.as_list::<i32>().value(i);
+            let values: Vec<&str> = list.as_string::<i32>().iter().map(Option::unwrap).collect();
+            assert_eq!(serde_json::json!(values), row["singular_lock_sets"]);
             for name in ["groups", "non_groups"] {
                 let v: Value = serde_json::from_str(col(name).as_string::<i32>().value(i)).unwrap();
                 assert_eq!(v, row[name], "{name}");

@@ -38,6 +38,8 @@ fn row(design: usize, inputs: usize, kinds: usize, family: &str) -> DesignRow {
         group_kinds,
         non_groups: Vec::new(),
         unsampled: 0,
+        singular: 0,
+        singular_lock_sets: Vec::new(),
         error: None,
     }
 }

@@ -505,6 +505,18 @@ pub fn null_direction(
     tolerance: f64,
     draw: impl FnMut(usize, usize) -> f64,
 ) -> Option<DVector<f64>> {
+    let cholesky = independent_rows(a, tolerance)?;
+    let g = DVector::from_fn(a.ncols(), draw);
+    let z = cholesky.solve(&(a * &g));
+    Some(g - a.tr_mul(&z))
+}
+
+/// The Cholesky factor of the Gram matrix `a aᵀ` when the rows of `a` are certified independent
+/// at relative tolerance `tolerance` (the bound of [`null_direction`]), `None` otherwise.
+pub fn independent_rows(
+    a: &DMatrix<f64>,
+    tolerance: f64,
+) -> Option<nalgebra::Cholesky<f64, nalgebra::Dyn>> {
     let (m, n) = a.shape();
     if m > n || m == 0 {
         return None;
@@ -515,10 +527,10 @@ pub fn null_direction(
     }
     let cholesky = (a * a.transpose()).cholesky()?;
     let mut inverse = DMatrix::<f64>::identity(m, m);
+    // Only the lower triangle of `l_dirty` is the factor; the solve reads only that.
     if !cholesky.l_dirty().solve_lower_triangular_mut(&mut inverse) {
         return None;
     }
-    // Only the lower triangle of `l_dirty` is the factor; the solve reads only that.
     #[expect(clippy::cast_precision_loss, reason = "a row count")]
     let round_off = 100.0 * m as f64 * f64::EPSILON;
     let lower = 1.0 / inverse.norm_squared();
@@ -526,9 +538,7 @@ pub fn null_direction(
     if lower.is_nan() || lower <= (tolerance * tolerance + round_off) * norm2 {
         return None;
     }
-    let g = DVector::from_fn(n, draw);
-    let z = cholesky.solve(&(a * &g));
-    Some(g - a.tr_mul(&z))
+    Some(cholesky)
 }
 
 /// The truncated least-squares solution of `a x ≈ b` ([`least_squares`]).

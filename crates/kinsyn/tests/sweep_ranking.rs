@@ -24,6 +24,8 @@ fn row(design: usize, inputs: usize, kinds: usize, subgroups: usize, family: &st
         groups: Vec::new(),
         non_groups: Vec::new(),
         unsampled: 0,
+        singular: 0,
+        singular_lock_sets: Vec::new(),
         error: None,
     }
 }

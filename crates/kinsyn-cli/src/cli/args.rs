@@ -786,7 +786,8 @@ pub(super) enum SweepCommand {
         /// Print the merged manifest as JSON instead of text.
         #[arg(long)]
         json: bool,
-    },    /// Rank a sweep's designs by multioperation capacity (group kinds reached, then distinct
+    },
+    /// Rank a sweep's designs by multioperation capacity (group kinds reached, then distinct
     /// subgroups) against inputs: the Pareto front, the best designs per number of inputs with
     /// a minimal lock set for each kind, their legs, capacity per family; report.md with two
     /// figures (SVG and PNG).

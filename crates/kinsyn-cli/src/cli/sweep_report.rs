@@ -173,12 +173,13 @@ fn summary(results: &Results, ranking: &Ranking, files: &[PathBuf]) -> String {
     let mut text = String::new();
     let _ = writeln!(
         text,
-        "{}: {} designs, {} built, {} not built, {} with unsampled lock subsets",
+        "{}: {} designs, {} built, {} not built, {} with unsampled lock subsets, {} with lock subsets at a singular start (not counted)",
         results.file.display(),
         ranking.designs,
         ranking.built,
         ranking.failed.len(),
-        ranking.unsampled.len()
+        ranking.unsampled.len(),
+        ranking.singular.0
     );
     let _ = writeln!(
         text,
@@ -252,12 +253,14 @@ fn markdown_report(results: &Results, r: &Ranking) -> String {
     let _ = writeln!(md, "# Multioperation sweep: ranking of the designs\n");
     let _ = writeln!(
         md,
-        "Rows: `{}`: {} designs, {} built, {} not built, {} with unsampled lock subsets.\n",
+        "Rows: `{}`: {} designs, {} built, {} not built, {} with unsampled lock subsets, {} with {} lock subsets whose start is a singular configuration of the locked manipulator (not counted: the motion branches there, and the pattern sampled depends on the branch; see docs/deviations.md, \"Issue 17\").\n",
         cell(&results.file.display().to_string()),
         r.designs,
         r.built,
         r.failed.len(),
-        r.unsampled.len()
+        r.unsampled.len(),
+        r.singular.0,
+        r.singular.1
     );
     match &results.settings {
         Some(s) => {

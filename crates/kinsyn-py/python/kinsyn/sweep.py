@@ -68,6 +68,8 @@ COLUMNS = [
     "groups",
     "non_groups",
     "unsampled",
+    "singular",
+    "singular_lock_sets",
     "error",
 ]
 
@@ -268,12 +270,12 @@ def _cells(row: Dict[str, Any]) -> Dict[str, Any]:
     for c in ("groups", "non_groups"):
         if isinstance(cells[c], str):
             cells[c] = json.loads(cells[c])
-    for c in ("actuated", "group_kinds"):
+    for c in ("actuated", "group_kinds", "singular_lock_sets"):
         cells[c] = list(cells[c])
     return cells
 
 
-_INTEGERS = ["design", "legs", "inputs", "dof", "subgroups", "kinds", "unsampled"]
+_INTEGERS = ["design", "legs", "inputs", "dof", "subgroups", "kinds", "unsampled", "singular"]
 
 
 def read(path: PathType, *, source: Optional[str] = None) -> pd.DataFrame:

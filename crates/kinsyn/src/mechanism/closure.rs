@@ -69,13 +69,23 @@ impl Mechanism {
         let mut c = DMatrix::zeros(6 * self.chords.len(), self.joints.len());
         for (l, &chord) in self.chords.iter().enumerate() {
             let j = &self.joints[chord];
-            let mut block = self.body_jacobian(j.to, screws) - self.body_jacobian(j.from, screws);
-            let s = screws[chord].to_vector();
-            for r in 0..6 {
-                block[(r, chord)] -= s[r];
+            // The body Jacobian of `to` minus that of `from`, column by column along their
+            // tree paths, and the chord's own screw.
+            let terms = self.paths[j.to]
+                .iter()
+                .map(|&(joint, sign)| (joint, sign))
+                .chain(
+                    self.paths[j.from]
+                        .iter()
+                        .map(|&(joint, sign)| (joint, -sign)),
+                )
+                .chain(std::iter::once((chord, -1.0)));
+            for (joint, sign) in terms {
+                let s = screws[joint].to_vector();
+                for r in 0..6 {
+                    c[(6 * l + r, joint)] += sign * s[r];
+                }
             }
-            c.view_mut((6 * l, 0), (6, self.joints.len()))
-                .copy_from(&block);
         }
         c
     }

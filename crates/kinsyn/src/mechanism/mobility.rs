@@ -119,12 +119,28 @@ impl Mechanism {
         screws: &[Twist],
         locked: &[bool],
     ) -> (DMatrix<f64>, linalg::Rank) {
+        let (basis, rank, _) = self.unitless_span_and_freedom(jacobian, screws, locked);
+        (basis, rank)
+    }
+
+    /// [`Mechanism::unitless_span`] and the mechanism's degrees of freedom with the `locked`
+    /// joints held (the dimension of the rates that keep the loops closed, over which the span
+    /// is taken).
+    pub(crate) fn unitless_span_and_freedom(
+        &self,
+        jacobian: &DMatrix<f64>,
+        screws: &[Twist],
+        locked: &[bool],
+    ) -> (DMatrix<f64>, linalg::Rank, usize) {
         let free = self.free(locked);
         let rates = self.unitless_rate_basis(screws, &free);
         let j = self.dimensionless(jacobian);
         let jf = DMatrix::from_fn(6, free.len(), |r, k| j[(r, free[k])]);
         let norm = jf.norm();
-        linalg::span_basis_scaled(&(jf * rates), MOBILITY_TOLERANCE, Some(norm.max(1.0)))
+        let freedom = rates.ncols();
+        let (basis, rank) =
+            linalg::span_basis_scaled(&(jf * rates), MOBILITY_TOLERANCE, Some(norm.max(1.0)));
+        (basis, rank, freedom)
     }
 }
 

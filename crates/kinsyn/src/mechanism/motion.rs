@@ -69,6 +69,8 @@ pub struct MotionSample {
     pub twists: DMatrix<f64>,
     /// The rank decision behind it (relative to the norm of the body's dimensionless Jacobian).
     pub rank: crate::linalg::Rank,
+    /// The mechanism's degrees of freedom here (closure nullity over the free joints).
+    pub freedom: usize,
 }
 
 /// The sampled finite motion of a body.
@@ -142,10 +144,14 @@ impl Mechanism {
 
     /// The degrees of freedom of the mechanism at `q` with only the `free` joints moving: the
     /// nullity of the dimensionless loop-closure Jacobian over them, its rank decided as the
-    /// SVD decides it at [`MOBILITY_TOLERANCE`] ([`linalg::rank_quick`]).
+    /// SVD decides it at [`MOBILITY_TOLERANCE`] (certified independent rows, else
+    /// [`linalg::rank_quick`]).
     fn closure_dof(&self, q: &[f64], free: &[usize]) -> usize {
         let c = self.dimensionless(&self.closure_jacobian(&self.joint_screws(q)));
         let cf = DMatrix::from_fn(c.nrows(), free.len(), |r, k| c[(r, free[k])]);
+        if linalg::independent_rows(&cf, MOBILITY_TOLERANCE).is_some() {
+            return free.len() - cf.nrows();
+        }
         free.len() - linalg::rank_quick(&cf, MOBILITY_TOLERANCE, None)
     }
 
@@ -196,19 +202,23 @@ impl Mechanism {
         settings: &SampleSettings,
     ) -> Result<SampledMotion, MechanismError> {
         self.sample_observed(start, locked, settings, |q| {
-            let (twists, rank) = self.unitless_twist_space(body, &self.joint_screws(q), locked);
-            (self.poses(q)[body], twists, rank)
+            let poses = self.poses(q);
+            let screws = self.screws_at(&poses);
+            let (twists, rank, freedom) =
+                self.unitless_span_and_freedom(&self.body_jacobian(body, &screws), &screws, locked);
+            (poses[body], twists, rank, freedom)
         })
     }
 
     /// [`Mechanism::sample_motion`] of what `observe` sees at joint values `q`: a displacement
-    /// (telling samples apart) and a dimensionless twist space with its rank decision.
+    /// (telling samples apart), a dimensionless twist space with its rank decision, and the
+    /// mechanism's degrees of freedom there.
     pub(super) fn sample_observed(
         &self,
         start: &[f64],
         locked: &[bool],
         settings: &SampleSettings,
-        observe: impl Fn(&[f64]) -> (Displacement, DMatrix<f64>, crate::linalg::Rank),
+        observe: impl Fn(&[f64]) -> (Displacement, DMatrix<f64>, crate::linalg::Rank, usize),
     ) -> Result<SampledMotion, MechanismError> {
         let start = self.assemble(start, locked, None)?;
         let mut rng = ChaCha8Rng::seed_from_u64(settings.seed);
@@ -219,7 +229,7 @@ impl Mechanism {
             let mut best: Option<(f64, MotionSample)> = None;
             for _ in 0..WALK_ATTEMPTS {
                 let q = self.walk(&start, locked, &free, settings, &mut rng)?;
-                let (pose, twists, rank) = observe(&q);
+                let (pose, twists, rank, freedom) = observe(&q);
                 let nearest = samples
                     .iter()
                     .map(|s| self.pose_distance(&s.pose, &pose))
@@ -232,6 +242,7 @@ impl Mechanism {
                         pose,
                         twists,
                         rank,
+                        freedom,
                     };
                     best = Some((nearest, sample));
                 }
@@ -245,11 +256,7 @@ impl Mechanism {
             min_separation = min_separation.min(nearest);
             samples.push(sample);
         }
-        let motion_dof = samples
-            .iter()
-            .map(|s| self.closure_dof(&s.q, &free))
-            .min()
-            .unwrap_or(0);
+        let motion_dof = samples.iter().map(|s| s.freedom).min().unwrap_or(0);
         Ok(SampledMotion {
             start_dof: self.closure_dof(&start, &free),
             motion_dof,

@@ -94,8 +94,13 @@ impl Mechanism {
             let poses = self.poses(q);
             let screws = self.screws_at(&poses);
             let j = self.relative_jacobian_with(body, base, &poses, &screws);
-            let (twists, rank) = self.unitless_span(&j, &screws, locked);
-            (compose(&inverse(&poses[base]), &poses[body]), twists, rank)
+            let (twists, rank, freedom) = self.unitless_span_and_freedom(&j, &screws, locked);
+            (
+                compose(&inverse(&poses[base]), &poses[body]),
+                twists,
+                rank,
+                freedom,
+            )
         })
     }
 

@@ -290,6 +290,10 @@ pub struct Ranking {
     pub failed: Vec<Failed>,
     /// Designs with unsampled lock subsets, by index.
     pub unsampled: Vec<Unsampled>,
+    /// Built designs with lock subsets that start at a singular configuration
+    /// ([`crate::motion::SingularStart`]), and those subsets in all: not counted in any
+    /// capacity, so these designs' capacity is what their regular starts reach.
+    pub singular: (usize, usize),
 }
 
 impl Ranking {
@@ -341,6 +345,10 @@ impl Ranking {
                     unsampled: r.unsampled,
                 })
                 .sorted_by_design(),
+            singular: (
+                built(rows).filter(|r| r.singular > 0).count(),
+                built(rows).map(|r| r.singular).sum(),
+            ),
         }
     }
 }

@@ -64,7 +64,12 @@ pub fn parquet_bytes(manifest: &Manifest, rows: &[&DesignRow]) -> Result<Vec<u8>
     let internal = |e: &dyn std::fmt::Display| CliError::Internal(format!("designs.parquet: {e}"));
     let mut actuated = ListBuilder::new(UInt32Builder::new());
     let mut kinds = ListBuilder::new(StringBuilder::new());
+    let mut singular = ListBuilder::new(StringBuilder::new());
     for r in rows {
+        for set in &r.singular_lock_sets {
+            singular.values().append_value(set);
+        }
+        singular.append(true);
         for &j in &r.actuated {
             actuated.values().append_value(u32_of(j));
         }
@@ -101,6 +106,12 @@ pub fn parquet_bytes(manifest: &Manifest, rows: &[&DesignRow]) -> Result<Vec<u8>
         ("groups", groups, false),
         ("non_groups", non_groups, false),
         ("unsampled", counts(rows, |r| r.unsampled), false),
+        ("singular", counts(rows, |r| r.singular), false),
+        (
+            "singular_lock_sets",
+            Arc::new(singular.finish()) as ArrayRef,
+            false,
+        ),
         ("error", error, true),
     ])
     .map_err(|e| internal(&e))?;
