@@ -95,20 +95,26 @@ fn report_writes_markdown_and_figures() {
     assert!(stdout(&o).contains("4 designs, 4 built"), "{}", stdout(&o));
     let out = dir.path().join("report");
     let md = std::fs::read_to_string(out.join("report.md")).unwrap();
-    assert!(md.contains("| inputs | design | chain |"), "{md}");
-    // The front's rows: d1 with 3 inputs and 2 kinds, d3 with 6 inputs and 3 kinds.
+    assert!(md.contains("| design | chain | notation |"), "{md}");
+    // The front's points and rows: d1 with 3 inputs and 2 kinds, d3 with 6 inputs and 3 kinds,
+    // each the only design at its point.
     assert!(
-        md.contains("| 3 | 1 | T1-001 | `PPPS` | 1 | 6 | 2 | 2 | X D |"),
+        md.contains("**3 inputs: 2 kinds, 2 subgroups**, reached by 1 design:"),
+        "{md}"
+    );
+    assert!(md.contains("| 1 | T1-001 | `PPPS` | 1 | 6 | X D |"), "{md}");
+    assert!(
+        md.contains("**6 inputs: 3 kinds, 3 subgroups**, reached by 1 design:"),
         "{md}"
     );
     assert!(
-        md.contains("| 6 | 3 | T1-003 | `PPPS` | 1 | 6 | 3 | 3 | T3 X D |"),
+        md.contains("| 3 | T1-003 | `PPPS` | 1 | 6 | T3 X D |"),
         "{md}"
     );
-    assert!(!md.contains("| 6 | 2 | T1-002"), "{md}");
+    assert!(!md.contains("| 2 | T1-002 | `PPPS` | 1 | 6 |"), "{md}");
     // A lock set holding '|' is escaped in the table.
     assert!(md.contains("P1.1 \\| P2.1"), "{md}");
-    assert!(md.contains("![capacity per family](capacity-by-family.svg)"));
+    assert!(md.contains("![capacity per family](capacity-by-family.png)"));
     for name in ["capacity-by-family", "capacity-vs-inputs"] {
         let png = std::fs::read(out.join(format!("{name}.png"))).unwrap();
         assert!(png.starts_with(b"\x89PNG\r\n\x1a\n"), "{name}.png");

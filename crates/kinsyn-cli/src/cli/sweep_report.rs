@@ -281,30 +281,45 @@ fn markdown_report(results: &Results, r: &Ranking) -> String {
         "A design's capacity is the number of kinds of displacement group its platform reaches by locking inputs (paper 000 §1), ties broken by the number of distinct subgroups (a group with its axis, plane or centre). A design is on the Pareto front when no other has no more inputs and no less capacity, one of them strictly. Designs not built are left out of the ranking; designs with unsampled lock subsets are ranked on what was sampled.\n"
     );
     let _ = writeln!(md, "## Pareto front: capacity against inputs\n");
-    let _ = writeln!(
-        md,
-        "| inputs | design | chain | notation | actuated | dof | kinds | subgroups | group kinds |"
-    );
-    let _ = writeln!(
-        md,
-        "| ---: | ---: | --- | --- | --- | ---: | ---: | ---: | --- |"
-    );
-    for d in &r.front {
+    // The front is the best capacity of each number of inputs that beats every smaller one;
+    // the designs tied there are counted, and the first `top_k` (by the tie-breaks) listed.
+    let points = r.front.chunk_by(|a, b| a.inputs == b.inputs);
+    for tied in points {
+        let first = &tied[0];
         let _ = writeln!(
             md,
-            "| {} | {} | {} | `{}` | {} | {} | {} | {} | {} |",
-            d.inputs,
-            d.design,
-            cell(&d.chain),
-            cell(&d.notation),
-            joints(&d.actuated),
-            d.dof,
-            d.kinds,
-            d.subgroups,
-            cell(&kinds_list(d))
+            "**{} inputs: {} kinds, {} subgroups**, reached by {} design{}{}:\n",
+            first.inputs,
+            first.kinds,
+            first.subgroups,
+            tied.len(),
+            if tied.len() == 1 { "" } else { "s" },
+            if tied.len() > r.top_k {
+                format!(" (the first {} listed; all of them with `--json`)", r.top_k)
+            } else {
+                String::new()
+            }
         );
+        let _ = writeln!(
+            md,
+            "| design | chain | notation | actuated | dof | group kinds |"
+        );
+        let _ = writeln!(md, "| ---: | --- | --- | --- | ---: | --- |");
+        for d in tied.iter().take(r.top_k) {
+            let _ = writeln!(
+                md,
+                "| {} | {} | `{}` | {} | {} | {} |",
+                d.design,
+                cell(&d.chain),
+                cell(&d.notation),
+                joints(&d.actuated),
+                d.dof,
+                cell(&kinds_list(d))
+            );
+        }
+        let _ = writeln!(md);
     }
-    let _ = writeln!(md, "\n![capacity against inputs](capacity-vs-inputs.svg)\n");
+    let _ = writeln!(md, "![capacity against inputs](capacity-vs-inputs.png)\n");
     top_section(&mut md, r);
     let _ = writeln!(md, "## Legs of the front and the best designs\n");
     let _ = writeln!(
@@ -336,7 +351,7 @@ fn markdown_report(results: &Results, r: &Ranking) -> String {
             f.max_kinds
         );
     }
-    let _ = writeln!(md, "\n![capacity per family](capacity-by-family.svg)\n");
+    let _ = writeln!(md, "\n![capacity per family](capacity-by-family.png)\n");
     let _ = writeln!(md, "## Group kinds reached\n");
     let _ = writeln!(md, "| kinds | designs |");
     let _ = writeln!(md, "| ---: | ---: |");
