@@ -477,19 +477,24 @@ impl FullRowRank {
     }
 }
 
-/// The Gauss–Newton step of least norm for the equations `a x = b` (m ≤ n unknowns): `x = aᵀ
-/// (a aᵀ)⁻¹ b`, by the Cholesky factor of the Gram matrix `a aᵀ`; `None` when that matrix is
-/// not numerically positive definite (equations dependent or nearly so: take the damped steps
-/// of an SVD instead). No rank is decided here: the caller keeps the step only if it reduces
-/// the residual.
+/// The Gauss–Newton step of least norm for the equations `a x = b`, the pseudo-inverse
+/// solution `a⁺ b` when `a` has full rank: with m ≤ n unknowns `x = aᵀ (a aᵀ)⁻¹ b`, by the
+/// Cholesky factor of the Gram matrix `a aᵀ`; with more equations than unknowns the
+/// least-squares step `(aᵀ a)⁻¹ aᵀ b`. `None` when the Gram matrix is not numerically positive
+/// definite (rank deficient or nearly so: take the damped steps of an SVD instead). No rank is
+/// decided here: the caller keeps the step only if it reduces the residual.
 #[must_use]
 pub fn min_norm_step(a: &DMatrix<f64>, b: &DVector<f64>) -> Option<DVector<f64>> {
     let (m, n) = a.shape();
-    if m > n || m == 0 || b.len() != m {
+    if m == 0 || n == 0 || b.len() != m {
         return None;
     }
-    let z = (a * a.transpose()).cholesky()?.solve(b);
-    z.iter().all(|x| x.is_finite()).then(|| a.tr_mul(&z))
+    let x = if m <= n {
+        a.tr_mul(&(a * a.transpose()).cholesky()?.solve(b))
+    } else {
+        a.tr_mul(a).cholesky()?.solve(&a.tr_mul(b))
+    };
+    x.iter().all(|v| v.is_finite()).then_some(x)
 }
 
 /// A random direction, isotropic in the null space of the wide matrix `a` (the rates that keep
@@ -513,6 +518,7 @@ pub fn null_direction(
 
 /// The Cholesky factor of the Gram matrix `a aᵀ` when the rows of `a` are certified independent
 /// at relative tolerance `tolerance` (the bound of [`null_direction`]), `None` otherwise.
+#[must_use]
 pub fn independent_rows(
     a: &DMatrix<f64>,
     tolerance: f64,
@@ -683,6 +689,12 @@ mod tests {
             assert!((&step - &reference).norm() < 1e-10 * reference.norm());
         }
         assert!(min_norm_step(&with_rank(6, 8, 4, 1e-2, 1), &DVector::zeros(6)).is_none());
+        // More equations than unknowns, independent columns: the least-squares step.
+        let a = with_rank(30, 24, 24, 1e-2, 5);
+        let b = DVector::from_fn(30, |_, _| rng.random_range(-1.0..1.0));
+        let step = min_norm_step(&a, &b).expect("independent columns");
+        let reference = least_squares(&a, &b, 1e-14).x;
+        assert!((&step - &reference).norm() < 1e-10 * reference.norm());
     }
 
     /// The random direction lies in the null space, and it is isotropic there: the mean of

@@ -80,6 +80,12 @@ impl Mechanism {
         if cf.nrows() == 0 {
             return DMatrix::identity(free.len(), free.len());
         }
+        // As many equations as free joints or more, certified independent columns: no rate.
+        if cf.nrows() >= free.len()
+            && linalg::independent_rows(&cf.transpose(), MOBILITY_TOLERANCE).is_some()
+        {
+            return DMatrix::zeros(free.len(), 0);
+        }
         match linalg::full_row_rank(&cf, MOBILITY_TOLERANCE) {
             Some(f) => f.null_basis(),
             None => linalg::nullspace(&cf, MOBILITY_TOLERANCE).0,

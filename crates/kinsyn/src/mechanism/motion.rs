@@ -152,6 +152,11 @@ impl Mechanism {
         if linalg::independent_rows(&cf, MOBILITY_TOLERANCE).is_some() {
             return free.len() - cf.nrows();
         }
+        if cf.nrows() >= free.len()
+            && linalg::independent_rows(&cf.transpose(), MOBILITY_TOLERANCE).is_some()
+        {
+            return 0;
+        }
         free.len() - linalg::rank_quick(&cf, MOBILITY_TOLERANCE, None)
     }
 
