@@ -77,8 +77,8 @@ pub(super) enum Command {
     /// labelled by kind, leg and joint: P1.3 is leg 1's third joint.
     ///
     /// The work is exponential in the number of inputs n: all the lock subsets are 2^n sampled
-    /// motions (64 for 6 inputs, 4096 for 12, 65536 for 16). One subset costs about 0.8 ms of
-    /// CPU (3-UPS) to 4 ms (6-UPS) with the default 3 samples, in proportion to --samples; the
+    /// motions (64 for 6 inputs, 4096 for 12, 65536 for 16). One subset costs about 0.25 ms of
+    /// CPU (3-UPS) to 0.7 ms (6-UPS) with the default 3 samples, in proportion to --samples; the
     /// subsets share the cores. --max-locks N samples Σ_{k≤N} C(n,k) subsets, --lock one;
     /// more than --max-subsets are refused.
     #[command(
@@ -113,7 +113,7 @@ pub(super) enum Command {
         /// join to the ground: the sub-mechanism, e.g. one limb, whose bond --body shows.
         #[arg(long, value_name = "LIST")]
         legs: Option<String>,
-        /// Refuse more lock subsets than this (each is a sampled motion of about 1–5 ms of CPU;
+        /// Refuse more lock subsets than this (each is a sampled motion of about 0.2–1 ms of CPU;
         /// 4096 take about 16–20 s on a 6-UPS).
         #[arg(long, value_name = "COUNT", default_value_t = super::manipulator::DEFAULT_MAX_SUBSETS,
               value_parser = clap::value_parser!(u32).range(1..=i64::from(super::manipulator::MAX_SUBSETS_CEILING)))]

@@ -85,7 +85,7 @@ fn selected_subsets(
         .last()
         .unwrap_or(0);
     Err(CliError::Input(format!(
-        "{}: {n} inputs give {count} lock subsets {scope}, more than --max-subsets {max_subsets} (each is a sampled motion of about 1–5 ms of CPU, docs/limits.md); use --max-locks {fits} ({} subsets) or --lock SET, or raise --max-subsets (at most {MAX_SUBSETS_CEILING})",
+        "{}: {n} inputs give {count} lock subsets {scope}, more than --max-subsets {max_subsets} (each is a sampled motion of about 0.2–1 ms of CPU, docs/limits.md); use --max-locks {fits} ({} subsets) or --lock SET, or raise --max-subsets (at most {MAX_SUBSETS_CEILING})",
         source,
         m.lock_subset_count(fits)
     )))
