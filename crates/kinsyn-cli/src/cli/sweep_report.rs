@@ -248,38 +248,9 @@ fn cell(text: &str) -> String {
 
 /// `report.md`: the settings, counts, front, top designs with their lock sets, legs, family
 /// capacity, histogram, failures and the figures.
-fn markdown_report(results: &Results, r: &Ranking) -> String {
-    let mut md = String::new();
-    let _ = writeln!(md, "# Multioperation sweep: ranking of the designs\n");
-    let _ = writeln!(
-        md,
-        "Rows: `{}`: {} designs, {} built, {} not built, {} with unsampled lock subsets, {} with {} lock subsets whose start is a singular configuration of the locked manipulator (not counted: the motion branches there, and the pattern sampled depends on the branch; see docs/deviations.md, \"Issue 17\").\n",
-        cell(&results.file.display().to_string()),
-        r.designs,
-        r.built,
-        r.failed.len(),
-        r.unsampled.len(),
-        r.singular.0,
-        r.singular.1
-    );
-    match &results.settings {
-        Some(s) => {
-            let _ = writeln!(
-                md,
-                "Settings (sweep.json): {} legs; actuated joints per leg: {}; sampling: `{}`.\n",
-                s.legs,
-                joints(&s.actuated_per_leg),
-                cell(&serde_json::to_string(&s.sampling).unwrap_or_default())
-            );
-        }
-        None => {
-            let _ = writeln!(md, "Settings: not recorded (no readable sweep.json).\n");
-        }
-    }
-    let _ = writeln!(
-        md,
-        "A design's capacity is the number of kinds of displacement group its platform reaches by locking inputs (paper 000 §1), ties broken by the number of distinct subgroups (a group with its axis, plane or centre). A design is on the Pareto front when no other has no more inputs and no less capacity, one of them strictly. Designs not built are left out of the ranking; designs with unsampled lock subsets are ranked on what was sampled.\n"
-    );
+/// The Pareto front as its points: for each number of inputs whose best capacity beats every
+/// smaller one, the designs tied there, counted, the first `top_k` (by the tie-breaks) listed.
+fn front_section(md: &mut String, r: &Ranking) {
     let _ = writeln!(md, "## Pareto front: capacity against inputs\n");
     // The front is the best capacity of each number of inputs that beats every smaller one;
     // the designs tied there are counted, and the first `top_k` (by the tie-breaks) listed.
@@ -319,6 +290,41 @@ fn markdown_report(results: &Results, r: &Ranking) -> String {
         }
         let _ = writeln!(md);
     }
+}
+
+fn markdown_report(results: &Results, r: &Ranking) -> String {
+    let mut md = String::new();
+    let _ = writeln!(md, "# Multioperation sweep: ranking of the designs\n");
+    let _ = writeln!(
+        md,
+        "Rows: `{}`: {} designs, {} built, {} not built, {} with unsampled lock subsets, {} with {} lock subsets whose start is a singular configuration of the locked manipulator (not counted: the motion branches there, and the pattern sampled depends on the branch; see docs/deviations.md, \"Issue 17\").\n",
+        cell(&results.file.display().to_string()),
+        r.designs,
+        r.built,
+        r.failed.len(),
+        r.unsampled.len(),
+        r.singular.0,
+        r.singular.1
+    );
+    match &results.settings {
+        Some(s) => {
+            let _ = writeln!(
+                md,
+                "Settings (sweep.json): {} legs; actuated joints per leg: {}; sampling: `{}`.\n",
+                s.legs,
+                joints(&s.actuated_per_leg),
+                cell(&serde_json::to_string(&s.sampling).unwrap_or_default())
+            );
+        }
+        None => {
+            let _ = writeln!(md, "Settings: not recorded (no readable sweep.json).\n");
+        }
+    }
+    let _ = writeln!(
+        md,
+        "A design's capacity is the number of kinds of displacement group its platform reaches by locking inputs (paper 000 §1), ties broken by the number of distinct subgroups (a group with its axis, plane or centre). A design is on the Pareto front when no other has no more inputs and no less capacity, one of them strictly. Designs not built are left out of the ranking; designs with unsampled lock subsets are ranked on what was sampled.\n"
+    );
+    front_section(&mut md, r);
     let _ = writeln!(md, "![capacity against inputs](capacity-vs-inputs.png)\n");
     top_section(&mut md, r);
     let _ = writeln!(md, "## Legs of the front and the best designs\n");
