@@ -142,6 +142,9 @@ def test_three_ups_modes_are_the_cli_s_and_paper_000_s():
         (m["lock_text"], m["dof"], m["pattern"]) for m in want["modes"]
     ]
     assert df.attrs["report"]["groups"] == want["groups"]
+    # Every subset removes one dof per lock at the reference (above): no start is singular.
+    assert not df["singular_start"].any()
+    assert want["singular_starts"] == []
 
 
 def test_modes_with_at_most_two_locks_are_the_cli_s():

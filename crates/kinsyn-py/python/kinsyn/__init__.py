@@ -445,9 +445,11 @@ class Manipulator:
 
         One row per lock subset: ``locked`` (the labels, ``"-"`` for none), ``n_locked``,
         ``dof``, ``pattern`` (``"?"`` when the motion could not be sampled), ``group`` (one of
-        the 12 displacement groups), ``parameters`` and ``error``. ``df.attrs["report"]`` holds
-        the whole report (the patterns with their minimal lock sets: ``groups``,
-        ``non_groups``)."""
+        the 12 displacement groups), ``parameters``, ``singular_start`` (the start is a
+        singular configuration of the locked manipulator: the pattern is that of the branch the
+        walks took and is not counted) and ``error``. ``df.attrs["report"]`` holds the whole
+        report (the patterns with their minimal lock sets: ``groups``, ``non_groups``,
+        ``singular_starts``)."""
         r = json.loads(
             self._m.modes_json(
                 max_locks,
@@ -471,11 +473,12 @@ class Manipulator:
                     "pattern": m["pattern"],
                     "group": m["group"],
                     "parameters": m.get("parameters"),
+                    "singular_start": "singular_start" in (m.get("classification") or {}),
                     "error": m.get("error"),
                 }
                 for m in r["modes"]
             ],
-            columns=["locked", "n_locked", "dof", "pattern", "group", "parameters", "error"],
+            columns=["locked", "n_locked", "dof", "pattern", "group", "parameters", "singular_start", "error"],
         )
         df.attrs["report"] = r
         return df

@@ -53,8 +53,7 @@ impl Mechanism {
     /// dimensionless loop-closure Jacobian (unit-screw columns, so its largest singular value
     /// is not round-off).
     fn unitless_rates(&self, screws: &[Twist], free: &[usize]) -> (DMatrix<f64>, linalg::Rank) {
-        let c = self.dimensionless(&self.closure_jacobian(screws));
-        let cf = DMatrix::from_fn(c.nrows(), free.len(), |r, k| c[(r, free[k])]);
+        let cf = self.free_closure(screws, free);
         if cf.nrows() == 0 {
             return (
                 DMatrix::identity(free.len(), free.len()),
@@ -75,21 +74,14 @@ impl Mechanism {
     /// [`linalg::FullRowRank`]) and by the SVD otherwise. Only the span is asked for here,
     /// not the singular values: the hot path of sampled motions.
     pub(super) fn unitless_rate_basis(&self, screws: &[Twist], free: &[usize]) -> DMatrix<f64> {
+        rate_basis(&self.free_closure(screws, free))
+    }
+
+    /// The dimensionless loop-closure Jacobian over the `free` joints only (unit-screw
+    /// columns): the equations every compatible rate of them meets.
+    pub(super) fn free_closure(&self, screws: &[Twist], free: &[usize]) -> DMatrix<f64> {
         let c = self.dimensionless(&self.closure_jacobian(screws));
-        let cf = DMatrix::from_fn(c.nrows(), free.len(), |r, k| c[(r, free[k])]);
-        if cf.nrows() == 0 {
-            return DMatrix::identity(free.len(), free.len());
-        }
-        // As many equations as free joints or more, certified independent columns: no rate.
-        if cf.nrows() >= free.len()
-            && linalg::independent_rows(&cf.transpose(), MOBILITY_TOLERANCE).is_some()
-        {
-            return DMatrix::zeros(free.len(), 0);
-        }
-        match linalg::full_row_rank(&cf, MOBILITY_TOLERANCE) {
-            Some(f) => f.null_basis(),
-            None => linalg::nullspace(&cf, MOBILITY_TOLERANCE).0,
-        }
+        DMatrix::from_fn(c.nrows(), free.len(), |r, k| c[(r, free[k])])
     }
 
     /// The twist space of `body` at `q` with the `locked` joints held: a basis (columns) of the
@@ -189,5 +181,24 @@ impl Mechanism {
         linalg::span_basis_scaled(&sub, MOBILITY_TOLERANCE, Some(1.0))
             .1
             .rank
+    }
+}
+
+/// An orthonormal basis of the null space of the dimensionless closure equations `cf` (rows)
+/// over the free joints (columns), at [`MOBILITY_TOLERANCE`]: empty when the columns are
+/// certified independent, from a certified QR when the rows are, by the SVD otherwise
+/// ([`linalg::independent_rows`], [`linalg::full_row_rank`]).
+pub(super) fn rate_basis(cf: &DMatrix<f64>) -> DMatrix<f64> {
+    let n = cf.ncols();
+    if cf.nrows() == 0 {
+        return DMatrix::identity(n, n);
+    }
+    // As many equations as free joints or more, certified independent columns: no rate.
+    if cf.nrows() >= n && linalg::independent_rows(&cf.transpose(), MOBILITY_TOLERANCE).is_some() {
+        return DMatrix::zeros(n, 0);
+    }
+    match linalg::full_row_rank(cf, MOBILITY_TOLERANCE) {
+        Some(f) => f.null_basis(),
+        None => linalg::nullspace(cf, MOBILITY_TOLERANCE).0,
     }
 }

@@ -143,21 +143,9 @@ impl Mechanism {
     }
 
     /// The degrees of freedom of the mechanism at `q` with only the `free` joints moving: the
-    /// nullity of the dimensionless loop-closure Jacobian over them, its rank decided as the
-    /// SVD decides it at [`MOBILITY_TOLERANCE`] (certified independent rows, else
-    /// [`linalg::rank_quick`]).
+    /// dimension of the rates that keep the loops closed ([`super::mobility::rate_basis`]).
     fn closure_dof(&self, q: &[f64], free: &[usize]) -> usize {
-        let c = self.dimensionless(&self.closure_jacobian(&self.joint_screws(q)));
-        let cf = DMatrix::from_fn(c.nrows(), free.len(), |r, k| c[(r, free[k])]);
-        if linalg::independent_rows(&cf, MOBILITY_TOLERANCE).is_some() {
-            return free.len() - cf.nrows();
-        }
-        if cf.nrows() >= free.len()
-            && linalg::independent_rows(&cf.transpose(), MOBILITY_TOLERANCE).is_some()
-        {
-            return 0;
-        }
-        free.len() - linalg::rank_quick(&cf, MOBILITY_TOLERANCE, None)
+        super::mobility::rate_basis(&self.free_closure(&self.joint_screws(q), free)).ncols()
     }
 
     /// A random direction of the dimensionless rates of the `free` joints that keep every loop
@@ -171,9 +159,7 @@ impl Mechanism {
         free: &[usize],
         rng: &mut ChaCha8Rng,
     ) -> Option<DVector<f64>> {
-        let screws = self.joint_screws(q);
-        let c = self.dimensionless(&self.closure_jacobian(&screws));
-        let cf = DMatrix::from_fn(c.nrows(), free.len(), |r, k| c[(r, free[k])]);
+        let cf = self.free_closure(&self.joint_screws(q), free);
         if cf.nrows() > 0
             && cf.nrows() < free.len()
             && let Some(direction) = linalg::null_direction(&cf, MOBILITY_TOLERANCE, |_, _| {
@@ -182,7 +168,7 @@ impl Mechanism {
         {
             return Some(direction);
         }
-        let rates = self.unitless_rate_basis(&screws, free);
+        let rates = super::mobility::rate_basis(&cf);
         if rates.ncols() == 0 {
             return None;
         }
