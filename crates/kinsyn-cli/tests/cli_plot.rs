@@ -2,6 +2,7 @@
 
 mod common;
 use common::kinsyn;
+use std::f64::consts::{FRAC_PI_2, PI};
 
 #[test]
 fn the_trajectory_figure_is_written_and_the_turning_point_named() {
@@ -24,6 +25,34 @@ fn the_trajectory_figure_is_written_and_the_turning_point_named() {
     // checked there by the homotopy's real-assembly counts on either side).
     assert!(text.contains("followed to t = 0.1785"), "{text}");
     assert!(text.contains("turning point"), "{text}");
+    // The inputs are functions of sin 2t: the values of [0, t*] recur on [π/2 − t*, π + t*] and
+    // [3π/2 − t*, 2π] (by hand from q(t) = q0 + a sin t cos t).
+    let t_star: f64 = text
+        .split("followed to t = ")
+        .nth(1)
+        .and_then(|rest| rest.split(' ').next())
+        .and_then(|v| v.parse().ok())
+        .expect("t*");
+    let line = text
+        .lines()
+        .find(|l| l.contains("sin 2t only"))
+        .unwrap_or_else(|| panic!("{text}"));
+    let printed: Vec<f64> = line
+        .split("= [")
+        .skip(1)
+        .flat_map(|part| part.split(']').next().unwrap().split(", "))
+        .map(|v| v.parse().unwrap())
+        .collect();
+    let expected = [
+        FRAC_PI_2 - t_star,
+        PI + t_star,
+        3.0 * FRAC_PI_2 - t_star,
+        2.0 * PI,
+    ];
+    assert_eq!(printed.len(), 4, "{line}");
+    for (p, e) in printed.iter().zip(expected) {
+        assert!((p - e).abs() < 2e-6, "{p} against {e}: {line}");
+    }
     let svg = std::fs::read_to_string(dir.path().join("trajectory-velocities.svg")).unwrap();
     assert!(svg.starts_with("<svg") && svg.contains("C1") && svg.contains("C4"));
 }

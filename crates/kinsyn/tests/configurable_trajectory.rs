@@ -5,6 +5,7 @@
 
 use kinsyn::configurable::trajectory::{
     TrajectoryEnd, assemble, elbow_family, follow, paper_input_rates, paper_inputs,
+    paper_recurring_intervals,
 };
 use kinsyn::configurable::velocity::{Configuration, velocities};
 use kinsyn::configurable::{Configurable, CornerPose};
@@ -78,21 +79,51 @@ fn the_table_2_assembly_meets_the_other_one_at_t_0_1786_and_the_inputs_leave_the
         real_assemblies(&m, next + 1e-4).is_empty(),
         "no real assembly past the turning point"
     );
-    // Over the period (sin t cos t has period π) real assemblies exist on [0, 0.179],
-    // [1.40, 3.32] and [4.54, 2π] only (checked inside and outside each).
-    for (t, n) in [
-        (0.1, 2),
-        (0.3, 0),
-        (1.3, 0),
-        (1.5, 2),
-        (3.2, 2),
-        (3.4, 0),
-        (4.4, 0),
-        (4.7, 2),
-        (6.2, 2),
-    ] {
-        assert_eq!(real_assemblies(&m, t).len(), n, "t = {t}");
+    // Over the period the inputs depend on t only through sin t cos t = ½ sin 2t, so they repeat
+    // the values of [0, t*] exactly on [0, t*] ∪ [π/2 − t*, π + t*] ∪ [3π/2 − t*, 2π]. At each of
+    // the four ends, 2 real assemblies just inside and none just outside.
+    let intervals = paper_recurring_intervals(last).expect("t* in (0, π/4]");
+    let (a, b, c) = (intervals[1].0, intervals[1].1, intervals[2].0);
+    assert!((a - (std::f64::consts::FRAC_PI_2 - last)).abs() < 1e-15);
+    for (end, inside) in [(a, 1.0), (b, -1.0), (c, 1.0)] {
+        assert_eq!(
+            real_assemblies(&m, end + inside * 1e-4).len(),
+            2,
+            "t = {end} inside"
+        );
+        assert!(
+            real_assemblies(&m, end - inside * 1e-4).is_empty(),
+            "t = {end} outside"
+        );
     }
+    // Inside, the values with sin 2t < 0 are not values of [0, t*]: every one of them (down to
+    // sin 2t = −1 at t = 3π/4) has real assemblies too, counted on a grid of each interval ...
+    for &(lo, hi) in &intervals {
+        for k in 1..8 {
+            let t = lo + (hi - lo) * f64::from(k) / 8.0;
+            assert_eq!(real_assemblies(&m, t).len(), 2, "t = {t} in [{lo}, {hi}]");
+        }
+    }
+    // Between them (sin 2t above sin 2t*, up to 1 at t = π/4 and 5π/4) there is none.
+    for (lo, hi) in [(last, a), (b, c)] {
+        for k in 1..8 {
+            let t = lo + (hi - lo) * f64::from(k) / 8.0;
+            assert!(real_assemblies(&m, t).is_empty(), "t = {t} in ({lo}, {hi})");
+        }
+    }
+    // ... and independently, the Table 2 branch followed back in time from 2π (≡ 0) is real all
+    // the way down to 3π/2 − t*, where it meets the other assembly (sin 2t = sin 2t* again).
+    let back: Vec<f64> = (0..=300)
+        .map(|k| std::f64::consts::TAU - std::f64::consts::PI * f64::from(k) / 400.0)
+        .collect();
+    let report = follow(&m, &start, paper_inputs, paper_input_rates, &back);
+    let TrajectoryEnd::Ceased { last: first, .. } = report.end else {
+        panic!("followed back past 5π/4: {:?}", report.end)
+    };
+    assert!(
+        (first - c).abs() < 1e-7,
+        "followed back to {first}, 3π/2 − t* = {c}"
+    );
 }
 
 #[test]

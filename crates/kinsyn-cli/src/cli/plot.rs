@@ -3,6 +3,7 @@
 use super::{CliError, json};
 use kinsyn::configurable::trajectory::{
     TrajectoryEnd, TrajectoryReport, assemble, follow, paper_input_rates, paper_inputs,
+    paper_recurring_intervals,
 };
 use kinsyn::configurable::{CentrePose, Configurable, CornerPose};
 use nalgebra::Vector2;
@@ -57,7 +58,10 @@ pub fn trajectory(out: &Path, steps: usize, as_json: bool) -> Result<String, Cli
             })).collect::<Vec<_>>(),
             "end": match &report.end {
                 TrajectoryEnd::Completed => serde_json::json!({"completed": true}),
-                TrajectoryEnd::Ceased { last, next, reason } => serde_json::json!({"completed": false, "last": last, "next": next, "reason": reason}),
+                TrajectoryEnd::Ceased { last, next, reason } => serde_json::json!({
+                    "completed": false, "last": last, "next": next, "reason": reason,
+                    "recurring_intervals_s": paper_recurring_intervals(*last),
+                }),
             },
         });
         return Ok(json(&v));
@@ -89,6 +93,13 @@ pub fn trajectory(out: &Path, steps: usize, as_json: bool) -> Result<String, Cli
                 "followed to t = {last:.6} s ({} instants); not beyond t = {next:.6} s: {reason}",
                 report.samples.len()
             );
+            if let Some([_, b, c]) = paper_recurring_intervals(*last) {
+                let _ = writeln!(
+                    text,
+                    "the inputs depend on t through sin 2t only: they take the values of [0, {last:.6}] again on [π/2 − t*, π + t*] = [{:.6}, {:.6}] and [3π/2 − t*, 2π] = [{:.6}, {:.6}] s (t* = {last:.6}); real assemblies exist there, none in between",
+                    b.0, b.1, c.0, c.1
+                );
+            }
         }
     }
     if let Some(s) = report.samples.last() {

@@ -35,6 +35,28 @@ pub fn paper_input_rates(t: f64) -> [f64; 4] {
     [-1.5 * d, -1.25 * d, -2.0 * d, 1.5 * d]
 }
 
+/// The instants of one period `[0, 2π]` s at which [`paper_inputs`] take a value they take on
+/// `[0, turning]`, where `turning` is the first instant after `t = 0` at which the followed real
+/// assembly is lost (a turning point). The inputs depend on `t` only through
+/// `sin t cos t = ½ sin 2t`, which rises from 0 on `[0, π/4]`; so they repeat the values of
+/// `[0, turning]` (`sin 2t ≤ sin 2·turning`, for `turning ≤ π/4`) exactly on
+/// `[0, turning] ∪ [π/2 − turning, π + turning] ∪ [3π/2 − turning, 2π]`, returned in that order.
+/// Whether the *whole* of those instants has real assemblies is a claim about the values of
+/// `sin 2t` below 0 as well, which a caller checks (the trajectory test follows the branch back
+/// in time from `2π` and counts assemblies on every interval).
+/// `None` unless `turning` is in `(0, π/4]`.
+#[must_use]
+pub fn paper_recurring_intervals(turning: f64) -> Option<[(f64, f64); 3]> {
+    use std::f64::consts::{FRAC_PI_2, FRAC_PI_4, PI, TAU};
+    (turning > 0.0 && turning <= FRAC_PI_4).then(|| {
+        [
+            (0.0, turning),
+            (FRAC_PI_2 - turning, PI + turning),
+            (3.0 * FRAC_PI_2 - turning, TAU),
+        ]
+    })
+}
+
 /// Method 2's position equations (eqs. 6, 13–15) with the elbows as parameters: unknowns
 /// [`UNKNOWNS`], then parameters `bx1, by1, …, bx4, by4`. The four equations
 /// `|C_i − B_i|² − b²` are linear in the parameters, so the family is polynomial in them.
@@ -245,8 +267,9 @@ fn step(
     y.iter().all(|c| c.im.abs() <= 1e-8 * size).then_some(y)
 }
 
-/// Narrows `[t0, t1]` (the assembly `x` real at `t0`, lost at `t1`) by bisection to the last
-/// instant reached and the first not, 1e-9 apart in `t` (or 40 halvings).
+/// Narrows `[t0, t1]` (the assembly `x` real at `t0`, lost at `t1`; `t1 < t0` when followed
+/// back in time) by bisection to the last instant reached and the first not, 1e-9 apart in `t`
+/// (or 40 halvings).
 fn bracket(
     family: &ParametrizedSystem,
     m: &Configurable,
@@ -257,7 +280,7 @@ fn bracket(
 ) -> (f64, f64) {
     let (mut lo, mut hi, mut at) = (t0, t1, x.to_vec());
     for _ in 0..40 {
-        if hi - lo < 1e-9 {
+        if (hi - lo).abs() < 1e-9 {
             break;
         }
         let mid = 0.5 * (lo + hi);
@@ -273,7 +296,8 @@ fn bracket(
 }
 
 /// Follows the assembly `start` (at the inputs `inputs(times[0])`) along the inputs
-/// `inputs(t)`, `t` over `times` in order, by parameter homotopy between successive instants.
+/// `inputs(t)`, `t` over `times` in order (increasing, or decreasing to follow it back in time),
+/// by parameter homotopy between successive instants.
 /// A step that fails, leaves the reals (imaginary parts above 1e-8 of the size) or ends on a
 /// Jacobian with inverse condition below 1e-10 ends the trajectory with
 /// [`TrajectoryEnd::Ceased`].
