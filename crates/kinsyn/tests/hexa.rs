@@ -61,9 +61,13 @@ fn eq5s_coefficients_are_those_of_eq4_with_theta_from_the_horizontal_about_plus_
                 let s = h.limb(i, theta, ci);
                 let eq4 = (ci - s.b).norm_squared() - h.l * h.l;
                 let eq5 = jj * theta.cos() + ii * theta.sin() + kk;
-                assert!((eq4 - eq5).abs() < 1e-9 * h.l * h.l, "limb {i}: {eq4} vs {eq5}");
+                assert!(
+                    (eq4 - eq5).abs() < 1e-9 * h.l * h.l,
+                    "limb {i}: {eq4} vs {eq5}"
+                );
                 let e = 1e-6;
-                let dv = (h.link_direction(i, theta + e) - h.link_direction(i, theta - e)) / (2.0 * e);
+                let dv =
+                    (h.link_direction(i, theta + e) - h.link_direction(i, theta - e)) / (2.0 * e);
                 assert!((dv - h.axis(i).cross(&s.v)).norm() < 1e-9);
             }
             assert!((h.link_direction(i, 0.0) - outward(i)).norm() < 1e-15);
@@ -84,7 +88,11 @@ fn eq5s_printed_root_fails_under_every_convention_for_theta() {
     let (ii, jj, kk) = h.coefficients(0, &far);
     assert!((far - h.base_joint(0)).norm() > h.b + h.l);
     assert!(ii * ii + jj * jj < kk * kk && h.inverse_limb(0, &far).is_none());
-    assert!(h.inverse_limb_as_printed(0, &far).iter().all(|t| t.is_finite()));
+    assert!(
+        h.inverse_limb_as_printed(0, &far)
+            .iter()
+            .all(|t| t.is_finite())
+    );
     // 2. Within reach: a convention is θ' = σ θ + δ (σ = ±1 the sense, δ the zero) relative to
     //    kinsyn's θ (σ, δ may even differ from limb to limb). For the printed roots to close a
     //    limb, one (σ, δ) must map each of them, at every pose, onto a true root: collect the δ
@@ -242,12 +250,15 @@ fn eq15_is_the_determinant_of_eq14s_a1_as_printed() {
             let rows = [(0, s1), (1, -s1), (2, -s1), (5, s1)];
             DMatrix::from_fn(4, 4, |r, k| {
                 let (i, s) = rows[r];
-                if k < 3 { w[i][k] } else { h.r[0] * w[i].dot(&s) }
+                if k < 3 {
+                    w[i][k]
+                } else {
+                    h.r[0] * w[i].dot(&s)
+                }
             })
         };
-        let eq15 = |s1: Vector3<f64>| {
-            2.0 * h.r[0] * w[0].cross(&w[5]).cross(&w[1].cross(&w[2])).dot(&s1)
-        };
+        let eq15 =
+            |s1: Vector3<f64>| 2.0 * h.r[0] * w[0].cross(&w[5]).cross(&w[1].cross(&w[2])).dot(&s1);
         let unit = rz(chi[3]) * Vector3::y();
         let det = a1(unit).determinant();
         assert!(
@@ -360,7 +371,10 @@ fn eq7a_is_the_four_bar_and_eqs_7b_7c_place_p2_at_the_coupler_middle() {
         }
     }
     assert!(assembled > 100, "{assembled} assemblies");
-    assert!(10 * flipped_open > 9 * assembled, "{flipped_open} of {assembled}");
+    assert!(
+        10 * flipped_open > 9 * assembled,
+        "{flipped_open} of {assembled}"
+    );
 }
 
 #[test]

@@ -148,9 +148,11 @@ pub enum SingularityCause {
 /// The ranks of a manipulator at generic configurations: at random assemblies of the same
 /// mechanism around the configuration analysed ([`crate::mechanism::Mechanism::random_assemblies`]).
 ///
-/// A rank of a matrix of fixed shape that depends analytically on the configuration can only
-/// drop at special configurations, so its generic value is its **largest** over the random
-/// assemblies: one assembly that happens to lie near a singular set (an ill-conditioned
+/// The assemblies are reached by continuation from the configuration, so they lie on its
+/// component of the configuration space (another component has ranks of its own). A rank of a
+/// matrix of fixed shape that depends analytically on the configuration can only drop at
+/// special configurations of a component, so its generic value is its **largest** over the
+/// random assemblies: one assembly that happens to lie near a singular set (an ill-conditioned
 /// sample, whose smallest kept singular value falls under the tolerance) cannot lower it, and
 /// no assembly can raise it. That is how `J_D`'s rank (leg-wrench Jacobians) and each leg's
 /// rank are decided. A dimension of an image of the compatible rates (the end-effector's
@@ -339,8 +341,11 @@ impl Manipulator {
         let leg_wrenches = self.has_leg_wrench_jacobians();
         let mut jd = 0;
         let mut legs = vec![0; self.legs.len()];
-        let (mut held_all, mut held_locked, mut inputs) =
-            (MaxImage::default(), MaxImage::default(), MaxImage::default());
+        let (mut held_all, mut held_locked, mut inputs) = (
+            MaxImage::default(),
+            MaxImage::default(),
+            MaxImage::default(),
+        );
         let mut per_sample = Vec::with_capacity(assemblies.len());
         for sample in &assemblies {
             let j = self.jacobians(sample, locked);
