@@ -37,22 +37,105 @@ fn angles(h: &Hexa, c: &[Vector3<f64>; 6]) -> [f64; 6] {
     std::array::from_fn(|i| h.inverse_limb(i, &c[i]).expect("within reach")[0])
 }
 
+/// `R_z(μ_i) j`, the horizontal direction away from the base centre at limb `i`.
+fn outward(i: usize) -> Vector3<f64> {
+    rz(kinsyn::hexa::mu(i)) * Vector3::y()
+}
+
+fn wrap(x: f64) -> f64 {
+    (x + std::f64::consts::PI).rem_euclid(std::f64::consts::TAU) - std::f64::consts::PI
+}
+
 #[test]
-fn the_corrected_eq5_closes_every_limb_and_the_printed_one_does_not() {
-    // Eq. 4: |c_i − b_i| = l. Both corrected roots close the limb to 1e-9 mm; the printed form
-    // (−I ± √(I² + J² + K²))/(K − I) misses by millimetres (a documented deviation).
+fn eq5s_coefficients_are_those_of_eq4_with_theta_from_the_horizontal_about_plus_u() {
+    // Eq. 5's I = −2b m_z, J = 2b(m_x sin μ − m_y cos μ), K = |m|² + b² − l², by hand:
+    // |m − b v|² − l² = K − 2b m·v, and with v = cos θ R_z(μ) j + sin θ k,
+    // −2b m·v = J cos θ + I sin θ. So eq. 4 reads J cos θ + I sin θ + K = 0 (kinsyn's
+    // convention), and v turns about +u_i: dv/dθ = u × v.
     let h = Hexa::paper001();
+    for chi in POSES {
+        let c = joints(&h, &chi, 0.5);
+        for (i, ci) in c.iter().enumerate() {
+            let (ii, jj, kk) = h.coefficients(i, ci);
+            for theta in [-1.3, -0.4, 0.2, 2.5] {
+                let s = h.limb(i, theta, ci);
+                let eq4 = (ci - s.b).norm_squared() - h.l * h.l;
+                let eq5 = jj * theta.cos() + ii * theta.sin() + kk;
+                assert!(
+                    (eq4 - eq5).abs() < 1e-9 * h.l * h.l,
+                    "limb {i}: {eq4} vs {eq5}"
+                );
+                let e = 1e-6;
+                let dv =
+                    (h.link_direction(i, theta + e) - h.link_direction(i, theta - e)) / (2.0 * e);
+                assert!((dv - h.axis(i).cross(&s.v)).norm() < 1e-9);
+            }
+            assert!((h.link_direction(i, 0.0) - outward(i)).norm() < 1e-15);
+        }
+    }
+}
+
+#[test]
+fn eq5s_printed_root_fails_under_every_convention_for_theta() {
+    // Eq. 5 as printed: θ = 2 atan((−I ± √(I² + J² + K²))/(K − I)). Two independent arguments
+    // that no convention for θ (from ±k or ±R_z(μ) j, about ±u_i, any fixed offset) makes it a
+    // root of eq. 4.
+    let h = Hexa::paper001();
+    // 1. Whatever the convention, eq. 4 has real roots only where I² + J² ≥ K² (|m·v| ≤ |m|).
+    //    Far below the reach (|m| > b + l) no active-link direction closes the limb, yet the
+    //    printed square root is real and the printed "roots" are finite.
+    let far = Vector3::new(0.0, 0.0, -2000.0);
+    let (ii, jj, kk) = h.coefficients(0, &far);
+    assert!((far - h.base_joint(0)).norm() > h.b + h.l);
+    assert!(ii * ii + jj * jj < kk * kk && h.inverse_limb(0, &far).is_none());
+    assert!(
+        h.inverse_limb_as_printed(0, &far)
+            .iter()
+            .all(|t| t.is_finite())
+    );
+    // 2. Within reach: a convention is θ' = σ θ + δ (σ = ±1 the sense, δ the zero) relative to
+    //    kinsyn's θ (σ, δ may even differ from limb to limb). For the printed roots to close a
+    //    limb, one (σ, δ) must map each of them, at every pose, onto a true root: collect the δ
+    //    each printed root needs and find none common to a limb's poses.
+    let mut needed: Vec<(usize, [f64; 4])> = Vec::new();
     let mut worst_printed: f64 = f64::INFINITY;
     for chi in POSES {
         let c = joints(&h, &chi, 0.5);
         for (i, ci) in c.iter().enumerate() {
-            for theta in h.inverse_limb(i, ci).unwrap() {
+            let true_roots = h.inverse_limb(i, ci).unwrap();
+            for theta in true_roots {
                 let s = h.limb(i, theta, ci);
                 assert!(((ci - s.b).norm() - h.l).abs() < 1e-9, "limb {i}");
             }
-            for theta in h.inverse_limb_as_printed(i, ci) {
-                let s = h.limb(i, theta, ci);
+            for printed in h.inverse_limb_as_printed(i, ci) {
+                let s = h.limb(i, printed, ci);
                 worst_printed = worst_printed.min(((ci - s.b).norm() - h.l).abs());
+                // δ for σ = +1 (two true roots), then for σ = −1.
+                needed.push((
+                    i,
+                    [
+                        wrap(true_roots[0] - printed),
+                        wrap(true_roots[1] - printed),
+                        wrap(true_roots[0] + printed),
+                        wrap(true_roots[1] + printed),
+                    ],
+                ));
+            }
+        }
+    }
+    for limb in 0..6 {
+        let mine: Vec<&[f64; 4]> = needed
+            .iter()
+            .filter(|(i, _)| *i == limb)
+            .map(|(_, d)| d)
+            .collect();
+        for sense in 0..2 {
+            for first in 0..2 {
+                let delta = mine[0][2 * sense + first];
+                let fits = mine
+                    .iter()
+                    .all(|d| (0..2).any(|k| wrap(d[2 * sense + k] - delta).abs() < 1e-6));
+                assert!(!fits, "limb {limb}, sense {sense}, δ = {delta}");
             }
         }
     }
@@ -63,10 +146,12 @@ fn the_corrected_eq5_closes_every_limb_and_the_printed_one_does_not() {
 }
 
 #[test]
-fn a_chi_dot_equals_b_theta_dot_by_finite_differences() {
+fn eq9_holds_as_printed_with_theta_about_plus_u_by_finite_differences() {
     // Eq. 9: A χ̇ = B θ̇, with θ̇ from central differences of the inverse geometry along a
-    // pose velocity χ̇ — an independent check of A (the rows e_i, the s_i, the column order)
-    // and of B = diag(h_i).
+    // pose velocity χ̇ — an independent check of A (the rows e_i, the s_i, the column order of
+    // eq. 10a) and of B = diag(h_i) (eq. 11). With θ about +u_i (kinsyn's convention, the
+    // one that also makes eq. 5's I, J, K the coefficients of eq. 4) it holds as printed; with
+    // θ about −u_i (θ' = −θ, e.g. v = cos θ k + sin θ R_z(μ) j) it would need −B.
     let h = Hexa::paper001();
     let gamma = 0.5;
     for chi in POSES {
@@ -98,17 +183,14 @@ fn a_chi_dot_equals_b_theta_dot_by_finite_differences() {
         let theta_dot = DVector::from_fn(6, |i, _| (plus[i] - minus[i]) / (2.0 * eps));
         let lhs = &a * DVector::from_column_slice(&chi_dot);
         let rhs = &b * &theta_dot;
-        // With θ in the sense that eq. 5's coefficients fix (v_i turning about −u_i), eq. 9
-        // holds as A χ̇ = −B θ̇; with θ about +u_i, as printed, eq. 5's J_i changes sign
-        // instead (docs/deviations.md). The printed sign is kept and shown to fail.
         assert!(
-            (&lhs + &rhs).norm() < 1e-6 * (1.0 + lhs.norm()),
-            "A χ̇ = {lhs:?}, −B θ̇ = {:?}",
-            -&rhs
+            (&lhs - &rhs).norm() < 1e-6 * (1.0 + lhs.norm()),
+            "A χ̇ = {lhs:?}, B θ̇ = {rhs:?}"
         );
+        // About −u_i the rates change sign and the printed sign fails by the full size.
         assert!(
-            (&lhs - &rhs).norm() > 1e-3 * lhs.norm(),
-            "eq. 9 with the printed sign"
+            (&lhs + &rhs).norm() > 1.0 * lhs.norm(),
+            "eq. 9 with θ about −u_i"
         );
         // Eq. 13: the input indices lie in [0, 1].
         for (i, state) in states.iter().enumerate() {
@@ -122,32 +204,82 @@ fn a_chi_dot_equals_b_theta_dot_by_finite_differences() {
 }
 
 #[test]
-fn eq15_against_the_determinant_of_a1() {
-    // Eq. 15: |A1| = 2 r1 ((w1 × w6) × (w2 × w3))·s1 for the rows 1, 2, 3, 6 of A in the
-    // columns x1, y1, z, φ1 (eq. 14), against the numerical determinant (Laplace's expansion
-    // done by LU).
+fn eq10a_fifth_coordinate_is_x2_under_every_reading() {
+    // Eq. 11's rows e_4, e_5 put w_ix in the fifth column of A. By finite differences of the
+    // inverse geometry, the rate of θ_4 per unit ẋ2 is w_4x/h_4 (the column is ẋ2's), while
+    // per unit rise of P2 alone (a separate ż2, the printed reading) it is w_4z/h_4 ≠ w_4x/h_4.
+    // Since p2 = (x2, y2, z) (§3.1), χ must hold ẋ2 and its only candidate is the fifth entry.
+    let h = Hexa::paper001();
+    for chi in POSES {
+        let c = joints(&h, &chi, 0.5);
+        let theta = angles(&h, &c);
+        let s4 = h.limb(3, theta[3], &c[3]);
+        let eps = 1e-4;
+        let rate = |dp: Vector3<f64>| {
+            let at = |k: f64| {
+                let roots = h.inverse_limb(3, &(c[3] + dp * k * eps)).unwrap();
+                *roots
+                    .iter()
+                    .min_by(|x, y| (*x - theta[3]).abs().total_cmp(&(*y - theta[3]).abs()))
+                    .unwrap()
+            };
+            (at(1.0) - at(-1.0)) / (2.0 * eps)
+        };
+        let h4 = h.h(3, &s4);
+        assert!((rate(Vector3::x()) - s4.w.x / h4).abs() < 1e-8);
+        assert!((rate(Vector3::z()) - s4.w.z / h4).abs() < 1e-8);
+        assert!((s4.w.x - s4.w.z).abs() > 0.1);
+    }
+}
+
+#[test]
+fn eq15_is_the_determinant_of_eq14s_a1_as_printed() {
+    // Eq. 15: |A1| = 2 r1 ((w1 × w6) × (w2 × w3))·s1 for eq. 14's A1, rows
+    // [w_iᵀ, r1 w_iᵀ s_i] (i = 1, 2, 3, 6), against the numerical determinant (Laplace's
+    // expansion done by LU). Eq. 14's rows are eq. 11's e_i when its s_i is the unit vector
+    // (s1 = Q1 j), and with that s eq. 15 holds as printed; eq. 16's σ = |cos ω| ∈ [0, 1] needs
+    // the unit s too. (With eq. 11's s_i = r1 Q1 j in both eq. 14 and eq. 15 the identity still
+    // holds, but A1 is then not eq. 11's and σ exceeds 1.)
     let h = Hexa::paper001();
     for chi in POSES {
         let c = joints(&h, &chi, 0.5);
         let theta = angles(&h, &c);
         let w: [Vector3<f64>; 6] = std::array::from_fn(|i| h.limb(i, theta[i], &c[i]).w);
-        let s1 = rz(chi[3]) * Vector3::y() * h.r[0];
-        let rows = [(0, s1), (1, -s1), (2, -s1), (5, s1)];
-        let a1 = DMatrix::from_fn(4, 4, |r, k| {
-            let (i, s) = rows[r];
-            if k < 3 { w[i][k] } else { w[i].dot(&s) }
-        });
-        let det = a1.determinant();
-        // Eq. 15 holds with s1 the unit vector Q1 j (as in eq. 14, whose rows carry r1 w_iᵀ s_i);
-        // with eq. 11's s1 = r1 Q1 j it would count r1 twice.
+        // Eq. 14's A1 for a given s1 (s2 = s3 = −s1, s6 = s1).
+        let a1 = |s1: Vector3<f64>| {
+            let rows = [(0, s1), (1, -s1), (2, -s1), (5, s1)];
+            DMatrix::from_fn(4, 4, |r, k| {
+                let (i, s) = rows[r];
+                if k < 3 {
+                    w[i][k]
+                } else {
+                    h.r[0] * w[i].dot(&s)
+                }
+            })
+        };
+        let eq15 =
+            |s1: Vector3<f64>| 2.0 * h.r[0] * w[0].cross(&w[5]).cross(&w[1].cross(&w[2])).dot(&s1);
         let unit = rz(chi[3]) * Vector3::y();
-        let printed = 2.0 * h.r[0] * w[0].cross(&w[5]).cross(&w[1].cross(&w[2])).dot(&unit);
+        let det = a1(unit).determinant();
         assert!(
-            (det - printed).abs() < 1e-9 * printed.abs().max(1.0),
-            "det A1 = {det}, eq. 15 = {printed}"
+            (det - eq15(unit)).abs() < 1e-9 * det.abs().max(1.0),
+            "det A1 = {det}, eq. 15 = {}",
+            eq15(unit)
         );
-        let with_eq11_s1 = printed * h.r[0];
-        assert!((det - with_eq11_s1).abs() > 0.5 * det.abs());
+        // With the unit s, A1 is rows 1, 2, 3, 6 of eq. 11's A (s_i = r1 Q1 j there), the
+        // Jacobian checked by finite differences above.
+        let s = h.s_vectors(chi[3], chi[6]);
+        let a = forward_jacobian(&w, &s);
+        for (r, i) in [0, 1, 2, 5].into_iter().enumerate() {
+            for k in 0..4 {
+                assert!((a1(unit)[(r, k)] - a[(i, k)]).abs() < 1e-12);
+            }
+        }
+        // Eq. 11's s in both: the identity holds (det scales by r1, eq. 15 too), σ does not.
+        let det11 = a1(unit * h.r[0]).determinant();
+        assert!((det11 - eq15(unit * h.r[0])).abs() < 1e-9 * det11.abs().max(1.0));
+        let n = w[0].cross(&w[5]).cross(&w[1].cross(&w[2]));
+        assert!(n.dot(&(unit * h.r[0])).abs() / n.norm() > 1.0);
     }
 }
 
@@ -187,7 +319,7 @@ fn eq7a_is_the_four_bar_and_eqs_7b_7c_place_p2_at_the_coupler_middle() {
     // both give P2.
     let h = Hexa::paper001();
     let (r3, r4) = (h.r[2], h.r[3]);
-    let mut assembled = 0;
+    let (mut assembled, mut flipped_open) = (0, 0);
     for (p1, phi1) in [
         (Vector3::new(0.0, 0.0, -600.0), 0.0),
         (Vector3::new(40.0, -30.0, -650.0), 0.4),
@@ -212,11 +344,37 @@ fn eq7a_is_the_four_bar_and_eqs_7b_7c_place_p2_at_the_coupler_middle() {
                 let eq7b = fb.c3 + r_eta(fb.eta) * (e(alpha) * r3 + e(pose.psi) * r4) - pose.p2;
                 let eq7c = fb.c6 + r_eta(fb.eta) * (e(beta) * r3 - e(pose.psi) * r4) - pose.p2;
                 assert!(eq7b.norm() < 1e-9 && eq7c.norm() < 1e-9, "α = {alpha}");
+                // Reading: R_η a rotation R_z(η) (det +1). Eqs. 7b–c still agree, on the mirror
+                // image of P2 across the ground line C3C6: the reflection only fixes the sense
+                // of α, β, ψ (away from end-effector 1), so eqs. 7–8 hold either way.
+                let by_rotation = |c: Vector3<f64>, crank: f64, sign: f64| {
+                    c + rz(fb.eta) * (e(crank) * r3 + e(pose.psi) * (sign * r4))
+                };
+                let (b_rot, c_rot) = (
+                    by_rotation(fb.c3, alpha, 1.0),
+                    by_rotation(fb.c6, beta, -1.0),
+                );
+                assert!((b_rot - c_rot).norm() < 1e-9);
+                let ground = (fb.c6 - fb.c3).normalize();
+                let rel = pose.p2 - fb.c3;
+                let mirror = fb.c3 + ground * (2.0 * rel.dot(&ground)) - rel;
+                assert!((b_rot - mirror).norm() < 1e-9);
+                // Reading: η the direction of C6 → C3 instead. Eqs. 7b–c then close only where
+                // |r3 (e(α) − e(β)) + d i| = 2 r4, Freudenstein's equation with k2, k3 negated,
+                // against eq. 8's k2 = k3 = d/r3 > 0: the α, β of eq. 7a miss it.
+                let flipped = ((e(alpha) - e(beta)) * r3 + Vector3::x() * fb.d).norm() - 2.0 * r4;
+                if flipped.abs() > 1e-6 {
+                    flipped_open += 1;
+                }
                 assembled += 1;
             }
         }
     }
     assert!(assembled > 100, "{assembled} assemblies");
+    assert!(
+        10 * flipped_open > 9 * assembled,
+        "{flipped_open} of {assembled}"
+    );
 }
 
 #[test]
@@ -367,16 +525,41 @@ fn end_effector_2_is_singular_on_the_mirror_plane_and_the_printed_eq17_misses_it
     let m = h.end_effector2_jacobian(&regular).unwrap();
     assert!(m.determinant().abs() > 1e-3 * m.norm_squared());
     assert!(h.indices(&regular).xi_min() > 1e-3);
-    // Eq. 17 as printed: ŝ_O ∘ ŝ_T = k · (b v_k × w_k) + r5 (Q2 i) · w_k. Its value at the
-    // singular pose is far from 0 for both limbs (on the scale b + r5 of its terms), so the
-    // printed screws cannot give an index that vanishes there (docs/deviations.md).
+    // Eq. 17: ŝ_O ∘ ŝ_T, the reciprocal product ω_O · m_T + v_O · f_T, under each reading of
+    // the printed screws ŝ_O = (k; r5 Q2 i), ŝ_T = (w_k; b v_k × w_k) (ŝ_T's moment is about
+    // A_k). An index that is 0 at singular configurations (§3.2) needs a product that
+    // vanishes at this singular pose; no normalisation turns a non-zero product into 0.
+    // (a) as printed; (b) r5 Q2 j for r5 Q2 i (the velocity of C5 under φ̇2, eq. 11's s5);
+    // (c) both referred to C_k: ŝ_T = (w_k; 0), ŝ_O = (k; s_k) (end-effector 2 turning about P2);
+    // (d) ŝ_T referred to P2, ŝ_O as printed; (e) ŝ_T referred to P2 and ŝ_O = (k; r5 Q2 j) read
+    // for each limb as (k; (c_k − p2) × k): the turn about C_k's own vertical, whose product
+    // with a force through C_k is 0 at every pose.
+    let (q2i, q2j) = (Vector3::x(), Vector3::y());
+    let readings = |conf: &kinsyn::hexa::Configuration, k: usize| {
+        let s = conf.limbs[k];
+        let s_k = if k == 3 { -q2j * h.r[4] } else { q2j * h.r[4] };
+        let about_p2 = (conf.joints[k] - conf.pose.p2()).cross(&s.w);
+        [
+            Vector3::z().dot(&(s.v * h.b).cross(&s.w)) + h.r[4] * q2i.dot(&s.w),
+            Vector3::z().dot(&(s.v * h.b).cross(&s.w)) + h.r[4] * q2j.dot(&s.w),
+            s_k.dot(&s.w),
+            Vector3::z().dot(&about_p2) + h.r[4] * q2i.dot(&s.w),
+            Vector3::z().dot(&about_p2)
+                + (conf.joints[k] - conf.pose.p2())
+                    .cross(&Vector3::z())
+                    .dot(&s.w),
+        ]
+    };
     for k in [3, 4] {
-        let s = singular.limbs[k];
-        let printed = Vector3::z().dot(&(s.v * h.b).cross(&s.w)) + h.r[4] * Vector3::x().dot(&s.w);
-        assert!(
-            printed.abs() > 0.05 * (h.b + h.r[4]),
-            "printed product {printed}"
-        );
+        let at_singular = readings(&singular, k);
+        for (name, value) in ["a", "b", "c", "d"].iter().zip(at_singular) {
+            assert!(
+                value.abs() > 0.02 * (h.b + h.r[4]),
+                "reading ({name}), limb {}: {value}",
+                k + 1
+            );
+        }
+        assert!(at_singular[4].abs() < 1e-9 && readings(&regular, k)[4].abs() < 1e-9);
     }
 }
 

@@ -1,8 +1,9 @@
-//! Paper 001's HEXA on the general mechanism graph (issue 15, items 1, 2, 3, 5):
+//! Paper 001's HEXA on the general mechanism graph:
 //! `mechanisms/6-ruu-hexa.json` as `Hexa::description` writes it, read back into the paper's
 //! dimensions; §2's displacement groups by the general machinery (mobility, motion patterns of
 //! whole and cut-down mechanisms); the inverse geometry by the general assembly solver against
-//! eq. 5; the loop-closure Jacobian's null space against eqs. 9–11 (`A χ̇ = −B θ̇`); and `ξ`
+//! eq. 5; the loop-closure Jacobian's null space against eqs. 9–11 (`A χ̇ = B θ̇` as printed,
+//! with `θ` about `+u_i`); and `ξ`
 //! (eq. 17 as redefined in `hexa/transmission.rs`) by a locked mechanism's one motion.
 //!
 //! Regenerate the committed file with `KINSYN_BLESS=1 cargo test -p kinsyn --test hexa_mechanism`.
@@ -265,6 +266,23 @@ fn section_2s_displacement_groups_by_the_general_machinery() {
     // branch through the identity), so the loop A4–B4–C4–C5–B5–A5 gives X(k), 4 dof, not the
     // six of T·S(N).
     assert_schoenflies(pattern("13-20,32-33", "ee2"), &k, "eq. 3");
+    // Eq. 3 read as printed: L45 is the bond of the closed loop A4–B4–C4–C5–B5–A5, the set of
+    // displacements its chain, cut at A5, can make. The chain has F = 10 freedoms (per limb
+    // R(A), R(B), the parallelogram's T, R(C) and the turn about k), and the loop's mobility is
+    // M = F − dim L45 (Chebychev–Grübler–Kutzbach over the loop's bond). The general machinery
+    // gives M = 4 (end-effector 2's X(k), no idle motion), so dim L45 = 6: the whole
+    // displacement group D = T·S(N), as printed. The paper's intersection
+    // X(k)·G(k) ∩ T·S(N) = X(k) then holds trivially.
+    let d = description();
+    let kept = d
+        .with_legs(
+            &parse_leg_list("13-20,32-33", d.legs.len()).unwrap(),
+            Some("ee2"),
+        )
+        .unwrap();
+    let loop45 = Manipulator::from_bodies(&kept).unwrap();
+    let q45 = loop45.reference();
+    assert_eq!(loop45.mechanism().mobility(&q45, &[]).dof, 4);
 }
 
 /// The frame of a body at a pose: origin and turn about `k`.
@@ -310,11 +328,11 @@ const POSES: [([f64; 3], f64, f64, f64); 4] = [
 ];
 
 /// `θ_i` in the sense of [`Hexa::link_direction`] at joint values `q`: the reference angle
-/// less the actuated joint's value (its file axis is `+u_i`, while θ turns `v_i` about `−u_i`).
+/// plus the actuated joint's value (its file axis is `+u_i`, and θ turns `v_i` about `+u_i`).
 fn thetas(m: &Manipulator, q: &[f64]) -> [f64; 6] {
     let h = Hexa::paper001();
     let reference = h.inverse(&reference()).unwrap();
-    std::array::from_fn(|i| reference.limbs[i].theta - q[m.actuators()[i].joint])
+    std::array::from_fn(|i| reference.limbs[i].theta + q[m.actuators()[i].joint])
 }
 
 fn wrap(x: f64) -> f64 {
@@ -417,11 +435,11 @@ fn the_closure_jacobians_null_space_satisfies_eqs_9_to_11() {
             let chi = DVector::from_vec(vec![
                 p1_rate.x, p1_rate.y, p1_rate.z, w1.z, p2_rate.x, p2_rate.y, w2.z,
             ]);
-            // θ̇ in the sense of eq. 5 (v_i turning about −u_i) is minus the joint rate.
-            let theta = DVector::from_fn(6, |i, _| -r[m.actuators()[i].joint]);
-            // Eq. 9 with this θ: A χ̇ = −B θ̇ (ḃ_i = −b θ̇_i u_i × v_i, docs/deviations.md).
+            // θ̇ about +u_i (kinsyn::hexa's convention, the file's actuated axis) is the joint
+            // rate, and eq. 9 holds as printed: A χ̇ = B θ̇ (ḃ_i = b θ̇_i u_i × v_i).
+            let theta = DVector::from_fn(6, |i, _| r[m.actuators()[i].joint]);
             let lhs = &a * &chi;
-            let rhs = -(&b * &theta);
+            let rhs = &b * &theta;
             let size = (a.norm() * chi.norm()).max(b.norm() * theta.norm());
             assert!(
                 (&lhs - &rhs).norm() < 1e-8 * size,

@@ -23,7 +23,7 @@
 //! `sub16 → crank6`, `crank6 → coupler`, `coupler → ee2`, `wrist4 → ee2`, `wrist5 → ee2`.
 //! Twenty-one moving bodies, 33 legs, 51 primitive joints. Lengths in mm, angles in degrees.
 //! The actuated joint's file axis is `+u_i`: a positive joint value turns the active link about
-//! `u_i`, that is by `−Δθ_i` in the sense of [`Hexa::link_direction`].
+//! `u_i`, that is by `+Δθ_i` in the sense of [`Hexa::link_direction`].
 
 use super::{Configuration, FourBarPose, Hexa, Pose, mu, rz};
 use crate::manipulator::file::{

@@ -1,31 +1,38 @@
 //! The **6-RUU HEXA with reconfigurable platforms** of paper 001 (Wu & Dong, *Kinematics of a
 //! 6-RUU parallel robot with reconfigurable platforms*, §2–3), by the paper's closed forms: the
 //! limbs' geometry (eq. 6), the inverse geometry of one limb (eqs. 4–5), the Jacobians
-//! `A χ̇ = B θ̇` (eqs. 9–11) and the transmission indices (eqs. 13, 15–16). Issue 15 builds
-//! the rest (the description file, the end-effector constraint of eqs. 7–8, workspace and maps);
-//! this module is the paper's second method beside it.
+//! `A χ̇ = B θ̇` (eqs. 9–11) and the transmission indices (eqs. 13, 15–17), with the
+//! description file, the end-effector constraint of eqs. 7–8, the workspace and the maps; this
+//! module is the paper's second method beside the general mechanism machinery.
 //!
 //! # Conventions (paper 001 §2–3; those the paper leaves implicit are stated here)
 //! Limb `i = 1 … 6` has its actuated revolute at `a_i = R_z(μ_i)[(−1)^{i+1} a i + R j]`
 //! (eq. 6a), about `u_i = R_z(μ_i) i` (the first two axes are parallel to x, §2). The active
 //! link `A_i B_i` of length `b` has the direction
-//! `v_i(θ_i) = cos θ_i k + sin θ_i R_z(μ_i) j` — the convention under which eq. 5's
-//! coefficients `I_i = −2b m_iz` and `J_i = 2b(m_ix sin μ_i − m_iy cos μ_i)` are those of
-//! `|c_i − b_i|² = l²` written as `I_i cos θ_i + J_i sin θ_i + K_i = 0`. The parallelogram
-//! `B_i C_i` has length `l` and direction `w_i = (c_i − b_i)/l`.
+//! `v_i(θ_i) = cos θ_i R_z(μ_i) j + sin θ_i k`: `θ_i` is measured from the horizontal, outward
+//! direction `R_z(μ_i) j` and turns `v_i` about `+u_i` (`dv_i/dθ_i = u_i × v_i`). Under it the
+//! paper's equations hold together: eq. 5's `I_i = −2b m_iz`,
+//! `J_i = 2b(m_ix sin μ_i − m_iy cos μ_i)`, `K_i = |m_i|² + b² − l²` are the coefficients of
+//! `|c_i − b_i|² = l²` written as `J_i cos θ_i + I_i sin θ_i + K_i = 0`, and eq. 9 holds with
+//! its printed sign, `A χ̇ = B θ̇` with `h_i = b w_iᵀ(u_i × v_i)`. Eq. 9's sign needs `θ` about
+//! `+u_i`; of the conventions that give it (`θ` from `±k` or `±R_z(μ_i) j`), this one and `θ`
+//! from `+k` (`v_i = cos θ k − sin θ R_z(μ_i) j`) bring eq. 5's printed root nearest to a
+//! true one, and this one is the HEXA's customary arm angle, from the base plane
+//! (`tests/hexa.rs`, docs/deviations.md). The
+//! parallelogram `B_i C_i` has length `l` and direction `w_i = (c_i − b_i)/l`. The working mode
+//! (active links pointing away from the base centre) is `cos θ_i > 0`.
 //!
 //! # Eq. 5 as printed
 //! The printed root `θ_i = 2 atan((−I_i ± √(I_i² + J_i² + K_i²))/(K_i − I_i))` does not solve
-//! eq. 4; the roots of `I cos θ + J sin θ + K = 0` are
-//! `θ = 2 atan((J ± √(I² + J² − K²))/(I − K))` ([`Hexa::inverse_limb`]). `tests/hexa.rs`
-//! shows the printed form leaving the limb open and the corrected one closing it;
-//! `docs/deviations.md` records it.
+//! eq. 4 under any convention for `θ`: its square root is real even where the limb cannot reach
+//! (`I² + J² < K²`). In this module's convention the roots are
+//! `θ = 2 atan((−I ± √(I² + J² − K²))/(K − J))` ([`Hexa::inverse_limb`]): the printed numerator,
+//! with `K − J` for the printed `K − I` and `−K²` for `+K²`. `tests/hexa.rs` shows the printed
+//! form leaving the limb open and this one closing it; `docs/deviations.md` records it.
 //!
-//! # Signs and factors of eqs. 9–15
-//! With θ in the sense eq. 5's coefficients fix (`v_i` turning about `−u_i`), eq. 9 holds as
-//! `A χ̇ = −B θ̇` (`ḃ_i = −b θ̇_i u_i × v_i`); the indices, absolute values, are unaffected.
-//! Eq. 15 holds with `s1` the unit vector `Q1 j` (eq. 14 writes the rows `r1 w_iᵀ s_i`), not
-//! eq. 11's `s1 = r1 Q1 j`. Both are checked in `tests/hexa.rs`.
+//! # Eq. 15
+//! Eqs. 14–16 use `s_i` as a unit vector (`s1 = Q1 j`; eq. 14's rows carry `r1 w_iᵀ s_i`),
+//! eq. 11 as `r1 Q1 j`: with eq. 14's `s_i`, eq. 15 holds as printed (`tests/hexa.rs`).
 
 use nalgebra::{Matrix3, Vector3};
 
@@ -109,14 +116,15 @@ impl Hexa {
         rz(mu(i)) * Vector3::x()
     }
 
-    /// `v_i(θ) = cos θ k + sin θ R_z(μ_i) j` (module documentation).
+    /// `v_i(θ) = cos θ R_z(μ_i) j + sin θ k`: `θ` from the horizontal, outward direction,
+    /// about `+u_i` (module documentation).
     #[must_use]
     pub fn link_direction(&self, i: usize, theta: f64) -> Vector3<f64> {
-        Vector3::z() * theta.cos() + rz(mu(i)) * Vector3::y() * theta.sin()
+        rz(mu(i)) * Vector3::y() * theta.cos() + Vector3::z() * theta.sin()
     }
 
     /// Eq. 5's coefficients `(I_i, J_i, K_i)` for the platform joint `c` of limb `i`: the limb
-    /// closes (`|c − b_i| = l`, eq. 4) where `I cos θ + J sin θ + K = 0`.
+    /// closes (`|c − b_i| = l`, eq. 4) where `J cos θ + I sin θ + K = 0`.
     #[must_use]
     pub fn coefficients(&self, i: usize, c: &Vector3<f64>) -> (f64, f64, f64) {
         self.coefficients_of(&(c - self.base_joint(i)), mu(i).sin_cos())
@@ -132,9 +140,10 @@ impl Hexa {
         )
     }
 
-    /// The two actuated angles that close limb `i` on the platform joint `c` (eq. 5,
-    /// corrected: module documentation), or `None` when `c` is out of the limb's reach
-    /// (`I² + J² < K²`).
+    /// The two actuated angles that close limb `i` on the platform joint `c`,
+    /// `θ = 2 atan((−I ± √(I² + J² − K²))/(K − J))` (eq. 5 with its denominator and the sign
+    /// under its root corrected: module documentation), or `None` when `c` is out of the
+    /// limb's reach (`I² + J² < K²`).
     #[must_use]
     pub fn inverse_limb(&self, i: usize, c: &Vector3<f64>) -> Option<[f64; 2]> {
         let (ii, jj, kk) = self.coefficients(i, c);
@@ -143,12 +152,12 @@ impl Hexa {
             return None;
         }
         let root = disc.sqrt();
-        // t = tan(θ/2): (K − I) t² + 2 J t + (K + I) = 0.
-        Some([jj + root, jj - root].map(|n| 2.0 * (n / (ii - kk)).atan()))
+        // t = tan(θ/2) in J cos θ + I sin θ + K = 0: (K − J) t² + 2 I t + (K + J) = 0.
+        Some([-ii + root, -ii - root].map(|n| 2.0 * (n / (kk - jj)).atan()))
     }
 
     /// Eq. 5 **as printed**, `2 atan((−I ± √(I² + J² + K²))/(K − I))`: kept to show that it
-    /// does not close the limb (`tests/hexa.rs`).
+    /// does not close the limb under any convention for `θ` (`tests/hexa.rs`).
     #[must_use]
     pub fn inverse_limb_as_printed(&self, i: usize, c: &Vector3<f64>) -> [f64; 2] {
         let (ii, jj, kk) = self.coefficients(i, c);
@@ -169,8 +178,8 @@ impl Hexa {
         }
     }
 
-    /// `h_i = b w_iᵀ(u_i × v_i)` (eq. 11): minus the rate of `w_i·c_i` per unit `θ̇_i` in this
-    /// module's sense of `θ` (module documentation).
+    /// `h_i = b w_iᵀ(u_i × v_i)` (eq. 11): the rate of `w_i·c_i` that limb `i` needs per unit
+    /// `θ̇_i` (`ḃ_i = b θ̇_i u_i × v_i`, module documentation).
     #[must_use]
     pub fn h(&self, i: usize, s: &LimbState) -> f64 {
         self.b * s.w.dot(&self.axis(i).cross(&s.v))
@@ -270,10 +279,8 @@ impl Hexa {
     #[must_use]
     pub fn working_root(&self, i: usize, c: &Vector3<f64>) -> Option<f64> {
         let roots = self.inverse_limb(i, c)?;
-        let reach = |theta: f64| {
-            self.link_direction(i, theta)
-                .dot(&(rz(mu(i)) * Vector3::y()))
-        };
+        // The outward reach of the active link, `v_i · R_z(μ_i) j = cos θ`.
+        let reach = f64::cos;
         Some(if reach(roots[0]) >= reach(roots[1]) {
             roots[0]
         } else {

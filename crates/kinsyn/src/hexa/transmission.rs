@@ -91,8 +91,8 @@ impl Hexa {
         [s1, -s1, -s1, -s5, s5, s1]
     }
 
-    /// `A` and `B = diag(h_i)` of eqs. 9–11 at a configuration (`A χ̇ = −B θ̇` in this module's
-    /// sense of `θ`: docs/deviations.md).
+    /// `A` and `B = diag(h_i)` of eqs. 9–11 at a configuration: `A χ̇ = B θ̇` as printed, with
+    /// `θ` about `+u_i` (the module [`super`]'s convention).
     #[must_use]
     pub fn jacobians(&self, conf: &Configuration) -> (DMatrix<f64>, DMatrix<f64>) {
         let w: [Vector3<f64>; 6] = std::array::from_fn(|i| conf.limbs[i].w);

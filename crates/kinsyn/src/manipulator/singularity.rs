@@ -10,7 +10,7 @@
 use super::Manipulator;
 use super::jacobian::Jacobians;
 use crate::linalg::Rank;
-use crate::mechanism::SampleSettings;
+use crate::mechanism::{ImageRanks, SampleSettings};
 use serde::Serialize;
 
 /// Which kind of singularity (Gosselin–Angeles, and Zlatanov's constraint singularity).
@@ -147,19 +147,60 @@ pub enum SingularityCause {
 
 /// The ranks of a manipulator at generic configurations: at random assemblies of the same
 /// mechanism around the configuration analysed ([`crate::mechanism::Mechanism::random_assemblies`]).
+///
+/// The assemblies are reached by continuation from the configuration, so they lie on its
+/// component of the configuration space (another component has ranks of its own). A rank of a
+/// matrix of fixed shape that depends analytically on the configuration can only drop at
+/// special configurations of a component, so its generic value is its **largest** over the
+/// random assemblies: one assembly that happens to lie near a singular set (an ill-conditioned
+/// sample, whose smallest kept singular value falls under the tolerance) cannot lower it, and
+/// no assembly can raise it. That is how `J_D`'s rank (leg-wrench Jacobians) and each leg's
+/// rank are decided. A dimension of an image of the compatible rates (the end-effector's
+/// freedom, the inputs' freedom with it held) is a difference of two such ranks
+/// ([`crate::mechanism::ImageRanks`]) and moves either way at special configurations; its
+/// generic value is the difference of the two ranks' largest values. `assemblies_below` counts
+/// the assemblies at which some rank fell short of its generic value: the ones a minimum or a
+/// majority would have let decide.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct GenericRanks {
     /// Random assemblies that closed (the ranks below are over them).
     pub assemblies: usize,
-    /// The largest rank of `J_D`.
+    /// The rank of `J_D`: the largest over the assemblies (leg-wrench Jacobians), or six less
+    /// the end-effector's generic freedom with every input held (loop-closure form).
     pub jd: usize,
-    /// The rank of the constraint rows found most often (the smaller on a tie).
+    /// The rank of the constraint rows: six less the end-effector's generic freedom with the
+    /// locked inputs held.
     pub constraint: usize,
     /// The largest rank of each leg's joint twists.
     pub legs: Vec<usize>,
-    /// The fewest independent rates the free inputs have with the end-effector held
-    /// ([`Analysis::inputs_with_end_effector_held`]).
+    /// The independent rates the free inputs have with the end-effector held at generic
+    /// configurations ([`Analysis::inputs_with_end_effector_held`]).
     pub inputs_with_end_effector_held: usize,
+    /// The assemblies at which some rank fell short of its generic value (near a singular set,
+    /// or at one): reported, not used.
+    pub assemblies_below: usize,
+}
+
+/// The largest rank of each part of an image's rank decisions, over samples.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+struct MaxImage {
+    equations: usize,
+    stacked: usize,
+}
+
+impl MaxImage {
+    fn add(&mut self, r: &ImageRanks) {
+        self.equations = self.equations.max(r.equations.rank);
+        self.stacked = self.stacked.max(r.stacked.rank);
+    }
+
+    fn below(&self, r: &ImageRanks) -> bool {
+        r.equations.rank < self.equations || r.stacked.rank < self.stacked
+    }
+
+    fn dimension(&self) -> usize {
+        self.stacked.saturating_sub(self.equations)
+    }
 }
 
 /// Jacobians, mobility and singularities of a manipulator at one configuration.
@@ -296,47 +337,87 @@ impl Manipulator {
         if assemblies.is_empty() {
             return Err(super::PositionError::NoGenericAssembly.into());
         }
+        let all: Vec<usize> = (0..self.actuators.len()).collect();
+        let leg_wrenches = self.has_leg_wrench_jacobians();
         let mut jd = 0;
         let mut legs = vec![0; self.legs.len()];
-        let mut constraint_counts = [0usize; 7];
-        let mut held_inputs = usize::MAX;
+        let (mut held_all, mut held_locked, mut inputs) = (
+            MaxImage::default(),
+            MaxImage::default(),
+            MaxImage::default(),
+        );
+        let mut per_sample = Vec::with_capacity(assemblies.len());
         for sample in &assemblies {
             let j = self.jacobians(sample, locked);
-            let (d, c) = self.output_ranks(sample, locked, &j);
-            jd = jd.max(d.rank);
-            constraint_counts[c.rank] += 1;
-            held_inputs = held_inputs.min(self.inputs_with_end_effector_held(sample, locked));
-            for (g, &r) in legs.iter_mut().zip(&j.leg_ranks) {
+            let leg_ranks = j.leg_ranks.clone();
+            let jd_here = if leg_wrenches {
+                self.output_ranks(sample, locked, &j).0.rank
+            } else {
+                0
+            };
+            let ranks = (
+                self.end_effector_freedom_ranks(sample, &all),
+                self.end_effector_freedom_ranks(sample, locked),
+                self.inputs_with_end_effector_held_ranks(sample, locked),
+            );
+            jd = jd.max(jd_here);
+            for (g, &r) in legs.iter_mut().zip(&leg_ranks) {
                 *g = (*g).max(r);
             }
+            held_all.add(&ranks.0);
+            held_locked.add(&ranks.1);
+            inputs.add(&ranks.2);
+            per_sample.push((jd_here, leg_ranks, ranks));
         }
-        let most = constraint_counts.iter().copied().max().unwrap_or(0);
-        let constraint = constraint_counts
+        let assemblies_below = per_sample
             .iter()
-            .position(|&c| c == most)
-            .unwrap_or(0);
+            .filter(|(jd_here, leg_ranks, (a, l, i))| {
+                (leg_wrenches && *jd_here < jd)
+                    || leg_ranks.iter().zip(&legs).any(|(r, g)| r < g)
+                    || held_all.below(a)
+                    || held_locked.below(l)
+                    || inputs.below(i)
+            })
+            .count();
+        if !leg_wrenches {
+            jd = 6usize.saturating_sub(held_all.dimension());
+        }
         Ok(GenericRanks {
             assemblies: assemblies.len(),
             jd,
-            constraint,
+            constraint: 6usize.saturating_sub(held_locked.dimension()),
             legs,
-            inputs_with_end_effector_held: held_inputs,
+            inputs_with_end_effector_held: inputs.dimension(),
+            assemblies_below,
         })
     }
 
-    /// How many independent rates the free inputs have at `q` with the `locked` inputs and the
-    /// end-effector held ([`crate::mechanism::Mechanism::joint_freedom_with_body_held`]).
-    fn inputs_with_end_effector_held(&self, q: &[f64], locked: &[usize]) -> usize {
+    /// The rank decisions behind the end-effector's freedom at `q` with the `locked` inputs
+    /// held ([`crate::mechanism::Mechanism::twist_space_ranks`]).
+    fn end_effector_freedom_ranks(&self, q: &[f64], locked: &[usize]) -> ImageRanks {
+        self.mechanism
+            .twist_space_ranks(self.platform, q, &self.lock_mask(locked))
+    }
+
+    /// The rank decisions behind [`Manipulator::inputs_with_end_effector_held`].
+    fn inputs_with_end_effector_held_ranks(&self, q: &[f64], locked: &[usize]) -> ImageRanks {
         let joints: Vec<usize> = (0..self.actuators.len())
             .filter(|a| !locked.contains(a))
             .map(|a| self.actuators[a].joint)
             .collect();
-        self.mechanism.joint_freedom_with_body_held(
+        self.mechanism.joint_freedom_ranks_with_body_held(
             self.platform,
             q,
             &self.lock_mask(locked),
             &joints,
         )
+    }
+
+    /// How many independent rates the free inputs have at `q` with the `locked` inputs and the
+    /// end-effector held ([`crate::mechanism::Mechanism::joint_freedom_with_body_held`]).
+    fn inputs_with_end_effector_held(&self, q: &[f64], locked: &[usize]) -> usize {
+        self.inputs_with_end_effector_held_ranks(q, locked)
+            .dimension()
     }
 
     /// The singularities at a configuration, from its ranks against the generic ones.

@@ -142,12 +142,38 @@ impl Mechanism {
     }
 }
 
+/// The two rank decisions behind the dimension of an image of the compatible joint rates
+/// ([`Mechanism::image_ranks`]): the rank of the equations that the rates keep, and of those
+/// equations stacked on the rows of the image. The dimension is their difference.
+///
+/// Each is the rank of a matrix of fixed shape that depends analytically on the configuration,
+/// so it can only drop at special configurations, never rise: its value at generic
+/// configurations is the largest over random assemblies. The difference can move either way
+/// at a special configuration (a drop of either rank), so a generic dimension is the
+/// difference of the two generic ranks, not the extreme of the differences.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ImageRanks {
+    /// The rank of the equations the rates keep (dimensionless loop closure over the free
+    /// joints, with any held rows).
+    pub equations: linalg::Rank,
+    /// The rank of the equations stacked on the image's rows.
+    pub stacked: linalg::Rank,
+}
+
+impl ImageRanks {
+    /// The dimension of the image: `stacked − equations`.
+    #[must_use]
+    pub fn dimension(&self) -> usize {
+        self.stacked.rank.saturating_sub(self.equations.rank)
+    }
+}
+
 impl Mechanism {
     /// How many independent rates the `joints` can have at `q` with the `locked` joints held and
-    /// `body` held still: the rank of their rates over the joint rates that keep every loop
-    /// closed and give `body` no twist (dimensionless, [`MOBILITY_TOLERANCE`]). For a
-    /// manipulator's inputs and its end-effector, a rank above the generic one is an inverse
-    /// (serial) singularity: inputs that move while the end-effector stays.
+    /// `body` held still: the dimension of their rates over the joint rates that keep every
+    /// loop closed and give `body` no twist ([`Mechanism::joint_freedom_ranks_with_body_held`]).
+    /// For a manipulator's inputs and its end-effector, more than at generic configurations is
+    /// an inverse (serial) singularity: inputs that move while the end-effector stays.
     #[must_use]
     pub fn joint_freedom_with_body_held(
         &self,
@@ -156,31 +182,71 @@ impl Mechanism {
         locked: &[bool],
         joints: &[usize],
     ) -> usize {
+        self.joint_freedom_ranks_with_body_held(body, q, locked, joints)
+            .dimension()
+    }
+
+    /// The rank decisions behind [`Mechanism::joint_freedom_with_body_held`]: with `C` the
+    /// dimensionless loop-closure Jacobian over the free joints, `B` the body's dimensionless
+    /// Jacobian and `E` the rows that pick the `joints`' rates, the rates of `joints` over
+    /// `null [C; B]` span `rank [C; B; E] − rank [C; B]` dimensions ([`MOBILITY_TOLERANCE`]).
+    #[must_use]
+    pub fn joint_freedom_ranks_with_body_held(
+        &self,
+        body: usize,
+        q: &[f64],
+        locked: &[bool],
+        joints: &[usize],
+    ) -> ImageRanks {
         let screws = self.joint_screws(q);
         let free = self.free(locked);
         let c = self.dimensionless(&self.closure_jacobian(&screws));
         let b = self.dimensionless(&self.body_jacobian(body, &screws));
-        let rows = c.nrows() + 6;
-        let a = DMatrix::from_fn(rows, free.len(), |r, k| {
+        let equations = DMatrix::from_fn(c.nrows() + 6, free.len(), |r, k| {
             if r < c.nrows() {
                 c[(r, free[k])]
             } else {
                 b[(r - c.nrows(), free[k])]
             }
         });
-        let (rates, _) = linalg::nullspace(&a, MOBILITY_TOLERANCE);
         let picked: Vec<usize> = joints
             .iter()
             .filter_map(|j| free.iter().position(|f| f == j))
             .collect();
-        if picked.is_empty() || rates.ncols() == 0 {
-            return 0;
+        let pick = DMatrix::from_fn(picked.len(), free.len(), |r, k| {
+            if picked[r] == k { 1.0 } else { 0.0 }
+        });
+        stacked_ranks(&equations, &pick)
+    }
+
+    /// The rank decisions behind the dimension of `body`'s twist space at `q` with the
+    /// `locked` joints held ([`Mechanism::twist_space`]): `rank [C; B] − rank C`, with `C` the
+    /// dimensionless loop-closure Jacobian over the free joints and `B` the body's
+    /// dimensionless Jacobian ([`MOBILITY_TOLERANCE`]).
+    #[must_use]
+    pub fn twist_space_ranks(&self, body: usize, q: &[f64], locked: &[bool]) -> ImageRanks {
+        let screws = self.joint_screws(q);
+        let free = self.free(locked);
+        let c = self.free_closure(&screws, &free);
+        let b = self.dimensionless(&self.body_jacobian(body, &screws));
+        let bf = DMatrix::from_fn(6, free.len(), |r, k| b[(r, free[k])]);
+        stacked_ranks(&c, &bf)
+    }
+}
+
+/// `rank a` and `rank [a; image]` at [`MOBILITY_TOLERANCE`] of each matrix's largest singular
+/// value.
+fn stacked_ranks(a: &DMatrix<f64>, image: &DMatrix<f64>) -> ImageRanks {
+    let stacked = DMatrix::from_fn(a.nrows() + image.nrows(), a.ncols(), |r, k| {
+        if r < a.nrows() {
+            a[(r, k)]
+        } else {
+            image[(r - a.nrows(), k)]
         }
-        let sub = DMatrix::from_fn(picked.len(), rates.ncols(), |r, k| rates[(picked[r], k)]);
-        // Rows of an orthonormal basis: the scale is 1.
-        linalg::span_basis_scaled(&sub, MOBILITY_TOLERANCE, Some(1.0))
-            .1
-            .rank
+    });
+    ImageRanks {
+        equations: linalg::rank(a, MOBILITY_TOLERANCE),
+        stacked: linalg::rank(&stacked, MOBILITY_TOLERANCE),
     }
 }
 

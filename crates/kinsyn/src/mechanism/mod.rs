@@ -59,8 +59,8 @@ mod relative;
 
 pub use assembly::{ASSEMBLY_STEPS, ASSEMBLY_TOLERANCE, AssemblySettings, Coordinate, Goal};
 pub use joint::JointSpec;
-pub use mobility::Mobility;
-pub use motion::{MotionSample, SampleSettings};
+pub use mobility::{ImageRanks, Mobility};
+pub use motion::{MotionSample, RANDOM_ASSEMBLY_STEPS, SampleSettings};
 
 use crate::notation::Primitive;
 use crate::screw;

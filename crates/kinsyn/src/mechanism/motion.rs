@@ -53,6 +53,9 @@ impl Default for SampleSettings {
     }
 }
 
+/// The continuation steps by which [`Mechanism::random_assemblies`] reaches each assembly.
+pub const RANDOM_ASSEMBLY_STEPS: usize = 8;
+
 /// Walks tried per sample before a sample too close to the others is accepted (and the group
 /// claim refused).
 const WALK_ATTEMPTS: usize = 16;
@@ -258,9 +261,17 @@ impl Mechanism {
 
     /// Assemblies of the mechanism scattered around `start`: the free joints moved by
     /// independent normal amounts of standard deviation `spread` (radians; prismatic values over
-    /// the length scale), then closed by Newton's method. Those that do not close are dropped.
-    /// These are the generic configurations against which a configuration's ranks are judged: a
-    /// singular set has measure zero, so random assemblies miss it.
+    /// the length scale), the loops closed by Newton's method along the way. Those that do not
+    /// close are dropped. These are the generic configurations against which a configuration's
+    /// ranks are judged: a singular set has measure zero, so random assemblies miss it.
+    ///
+    /// Each assembly is reached by continuation from `start`, in
+    /// [`RANDOM_ASSEMBLY_STEPS`] equal parts of its displacement, each closed before the next,
+    /// so that it stays on `start`'s component of the configuration space (its assembly mode).
+    /// Closing the whole displacement at once can land on another component with other ranks:
+    /// the HEXA of paper 001 (`mechanisms/6-ruu-hexa.json`), whose joints moved by 0.3 rad
+    /// closed one parallelogram in about one draw in thirty as an anti-parallelogram, a
+    /// component of mobility 5 instead of 6.
     #[must_use]
     pub fn random_assemblies(
         &self,
@@ -272,13 +283,21 @@ impl Mechanism {
     ) -> Vec<Vec<f64>> {
         let mut rng = ChaCha8Rng::seed_from_u64(seed);
         let free = self.free(locked);
+        let parts = RANDOM_ASSEMBLY_STEPS as f64;
         (0..count)
             .filter_map(|_| {
+                let step: Vec<f64> = free
+                    .iter()
+                    .map(|&j| spread * rng.sample::<f64, _>(StandardNormal) * self.unit(j) / parts)
+                    .collect();
                 let mut q = start.to_vec();
-                for &j in &free {
-                    q[j] += spread * rng.sample::<f64, _>(StandardNormal) * self.unit(j);
+                for _ in 0..RANDOM_ASSEMBLY_STEPS {
+                    for (&j, d) in free.iter().zip(&step) {
+                        q[j] += d;
+                    }
+                    q = self.assemble(&q, locked, None).ok()?;
                 }
-                self.assemble(&q, locked, None).ok()
+                Some(q)
             })
             .collect()
     }

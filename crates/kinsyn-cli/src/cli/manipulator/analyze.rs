@@ -364,6 +364,7 @@ fn analysis_json(
         "constraint_rank": rank_json(&a.constraint_rank, Some(a.generic.constraint)),
         "leg_ranks": a.leg_ranks.iter().zip(&a.generic.legs).map(|(r, &g)| rank_json(r, Some(g))).collect::<Vec<_>>(),
         "generic_assemblies": a.generic.assemblies,
+        "generic_assemblies_below": a.generic.assemblies_below,
         "singularities": a.singularities,
         "warnings": warnings,
         "end_effector": m.bodies()[m.end_effector()].name,
