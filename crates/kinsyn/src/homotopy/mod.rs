@@ -69,7 +69,8 @@ pub const INFINITY_TOLERANCE: f64 = 1e-8;
 ///
 /// The inverse condition is `σ_min / σ_max` of the system's Jacobian at the endpoint with each
 /// equation's row divided by the size of its terms there (the gradient of `Σ |c_α| z^α` at
-/// `|z|`, [`crate::poly::Poly::magnitudes`]), in projective coordinates restricted to the
+/// `|z|`, [`crate::poly::Poly::magnitudes`], coordinates below 1e-3 of the largest counted as
+/// 1e-3 of it), in projective coordinates restricted to the
 /// point's orthogonal complement (the patch row of each variable group is the unit normal
 /// `z̄ / |z|` of the group's coordinates scaled to largest modulus 1). It therefore does not
 /// depend on the scale of an equation, on the degree of a homogenised equation, on the
@@ -533,6 +534,24 @@ fn track_path(
         failure: None,
         retracked: false,
     }
+}
+
+/// In the size of an equation's terms (the row scale of [`SINGULAR_TOLERANCE`]), a coordinate
+/// smaller than this fraction of the point's largest (1 for affine points) counts as this
+/// fraction. A coordinate that small is not trusted to scale a row down: at an approximate
+/// double root of `x² = 0` (`x` about 1e-13) the row `2x` stays small against the others and
+/// the root singular, where the size `2|x|` of the row's one term would have made it look
+/// regular.
+pub(crate) const TERM_SIZE_FLOOR: f64 = 1e-3;
+
+/// The moduli of the coordinates of `z`, each at least [`TERM_SIZE_FLOOR`] times `unit` (the
+/// largest modulus of a projective group, or `max(1, |z|∞)` for an affine point), as complex
+/// numbers: the point at which the magnitude polynomials ([`crate::poly::Poly::magnitudes`])
+/// give the size of each equation's terms.
+pub(crate) fn floored_moduli(z: &[C64], unit: f64) -> Vec<C64> {
+    z.iter()
+        .map(|c| C64::new(c.norm().max(TERM_SIZE_FLOOR * unit), 0.0))
+        .collect()
 }
 
 /// `σ_min / σ_max` of `jacobian` with row `i` divided by `scales[i]` (the size of equation

@@ -206,7 +206,8 @@ impl Homotopy for Segment<'_> {
         let mut hz = DMatrix::zeros(n, n);
         let (mut h, mut ht) = (DVector::zeros(n), DVector::zeros(n));
         self.evaluate(z, C64::from(0.0), ws, &mut h, &mut hz, &mut ht);
-        let moduli: Vec<C64> = ws.point.iter().map(|c| C64::new(c.norm(), 0.0)).collect();
+        let unit = ws.point.iter().map(|c| c.norm()).fold(1.0, f64::max);
+        let moduli = super::floored_moduli(&ws.point, unit);
         let mut values = vec![C64::from(0.0); n];
         let mut jacobian = vec![C64::from(0.0); n * total];
         self.family.magnitudes.evaluate_with_jacobian(

@@ -488,7 +488,8 @@ fn regular_root(equations: &[Poly], x: &[C64]) -> Option<Vec<C64>> {
         let j = DMatrix::from_row_slice(n, n, &jacobian);
         // Well-conditioned with each equation's row scaled by the size of its terms, as the
         // endpoints of the tracker ([`super::SINGULAR_TOLERANCE`]).
-        let moduli: Vec<C64> = z.iter().map(|c| C64::new(c.norm(), 0.0)).collect();
+        let unit = z.iter().map(|c| c.norm()).fold(1.0, f64::max);
+        let moduli = super::floored_moduli(z.as_slice(), unit);
         magnitudes.evaluate_with_jacobian(
             &moduli,
             &mut sizes,

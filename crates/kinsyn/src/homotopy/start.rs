@@ -398,7 +398,7 @@ impl Homotopy for ProjectiveHomotopy {
             &mut ws.jacobian,
             &mut ws.program,
         );
-        let moduli: Vec<C64> = w.iter().map(|c| C64::new(c.norm(), 0.0)).collect();
+        let moduli = super::floored_moduli(w.as_slice(), 1.0);
         self.magnitudes.evaluate_with_jacobian(
             &moduli,
             &mut ws.magnitude_values,
