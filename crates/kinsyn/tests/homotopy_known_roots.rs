@@ -14,7 +14,12 @@ use std::f64::consts::TAU;
 /// The `n` roots of `x^n = c` for real `c > 0`: `c^{1/n} e^{2πik/n}`.
 fn roots_of(n: u32, c: f64) -> Vec<C64> {
     (0..n)
-        .map(|k| C64::from_polar(c.powf(1.0 / f64::from(n)), TAU * f64::from(k) / f64::from(n)))
+        .map(|k| {
+            C64::from_polar(
+                c.powf(1.0 / f64::from(n)),
+                TAU * f64::from(k) / f64::from(n),
+            )
+        })
         .collect()
 }
 
@@ -22,8 +27,18 @@ fn roots_of(n: u32, c: f64) -> Vec<C64> {
 /// regular solution within `1e-9` of its own size), of which `real` are real, and nothing
 /// else: no singular solution, no failed path, every other path at infinity.
 fn assert_exactly(report: &SolveReport, expected: &[Vec<C64>], real: usize, what: &str) {
-    assert_eq!(report.failed(), 0, "{what}: no failed path ({})", report.summary());
-    assert_eq!(report.singular(), 0, "{what}: every root is simple ({})", report.summary());
+    assert_eq!(
+        report.failed(),
+        0,
+        "{what}: no failed path ({})",
+        report.summary()
+    );
+    assert_eq!(
+        report.singular(),
+        0,
+        "{what}: every root is simple ({})",
+        report.summary()
+    );
     assert_eq!(
         report.nonsingular(),
         expected.len(),
@@ -37,7 +52,12 @@ fn assert_exactly(report: &SolveReport, expected: &[Vec<C64>], real: usize, what
         "{what}: every root certified ({})",
         report.summary()
     );
-    assert_eq!(report.real(), real, "{what}: {real} real roots ({})", report.summary());
+    assert_eq!(
+        report.real(),
+        real,
+        "{what}: {real} real roots ({})",
+        report.summary()
+    );
     assert_eq!(
         report.certified_real(),
         real,
@@ -154,7 +174,12 @@ fn products_of_roots_of_unity_factors() {
                 ..SolveSettings::default()
             };
             let report = solve(&system, &settings).unwrap();
-            assert_exactly(&report, &expected, 2, &format!("x^{n} = 1, y^{m} = 3, {start:?}"));
+            assert_exactly(
+                &report,
+                &expected,
+                2,
+                &format!("x^{n} = 1, y^{m} = 3, {start:?}"),
+            );
         }
     }
 
@@ -167,7 +192,10 @@ fn products_of_roots_of_unity_factors() {
     let v = &x - &(y.clone() * 2.0);
     let system = System::new(
         vec!["x".into(), "y".into()],
-        vec![u.pow(12) - Poly::real(2, 1.0), v.pow(5) - Poly::real(2, 1.0)],
+        vec![
+            u.pow(12) - Poly::real(2, 1.0),
+            v.pow(5) - Poly::real(2, 1.0),
+        ],
     )
     .unwrap();
     let mut expected = Vec::new();
@@ -207,7 +235,12 @@ fn roots_twelve_orders_of_magnitude_apart() {
         expected.push(vec![C64::from(a), C64::from(1e4)]);
     }
     let report = solve(&system, &SolveSettings::default()).unwrap();
-    assert_exactly(&report, &expected, 6, "roots from 1e-10 to 1e6 in two variables");
+    assert_exactly(
+        &report,
+        &expected,
+        6,
+        "roots from 1e-10 to 1e6 in two variables",
+    );
 }
 
 /// A complex number of modulus between 0.1 and 10 (log-uniform) and any argument, or a real

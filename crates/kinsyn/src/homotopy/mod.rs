@@ -563,12 +563,19 @@ pub(crate) fn scaled_inverse_condition(mut jacobian: DMatrix<C64>, scales: &[f64
             jacobian.row_mut(i).unscale_mut(*s);
         }
     }
-    if !jacobian.iter().all(|c| c.re.is_finite() && c.im.is_finite()) {
+    if !jacobian
+        .iter()
+        .all(|c| c.re.is_finite() && c.im.is_finite())
+    {
         return 0.0;
     }
     let sv = jacobian.singular_values();
     let largest = sv.max();
-    if largest > 0.0 { sv.min() / largest } else { 0.0 }
+    if largest > 0.0 {
+        sv.min() / largest
+    } else {
+        0.0
+    }
 }
 
 /// `|a − b| / (1 + |a|)`: how far apart two points are, relative to the first one's size.

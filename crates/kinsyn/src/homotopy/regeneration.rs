@@ -498,7 +498,12 @@ fn regular_root(equations: &[Poly], x: &[C64]) -> Option<Vec<C64>> {
         );
         let scales: Vec<f64> = size_jacobian
             .chunks(n)
-            .map(|row| row.iter().map(nalgebra::Complex::norm_sqr).sum::<f64>().sqrt())
+            .map(|row| {
+                row.iter()
+                    .map(nalgebra::Complex::norm_sqr)
+                    .sum::<f64>()
+                    .sqrt()
+            })
             .collect();
         if super::scaled_inverse_condition(j.clone(), &scales) <= 1e-8 {
             return None;

@@ -853,9 +853,7 @@ impl ExprParser<'_> {
     /// `p` if every coefficient is finite; else the error naming the expression from `start`
     /// to here (the first place where a value overflowed or became NaN).
     fn finite(&self, p: Poly, start: usize, line: usize) -> Result<Poly, BertiniError> {
-        if p.terms()
-            .all(|(_, c)| c.re.is_finite() && c.im.is_finite())
-        {
+        if p.terms().all(|(_, c)| c.re.is_finite() && c.im.is_finite()) {
             Ok(p)
         } else {
             Err(err(

@@ -368,8 +368,9 @@ impl Mul<&Poly> for &Poly {
         for (e, c) in &self.terms {
             for (f, d) in &rhs.terms {
                 let sum = e.iter().zip(f).map(|(a, b)| {
-                    a.checked_add(*b)
-                        .expect("an exponent beyond u32::MAX (readers refuse degrees beyond MAX_DEGREE)")
+                    a.checked_add(*b).expect(
+                        "an exponent beyond u32::MAX (readers refuse degrees beyond MAX_DEGREE)",
+                    )
                 });
                 out.add_term(sum.collect(), c * d);
             }
