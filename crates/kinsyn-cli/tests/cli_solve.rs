@@ -403,28 +403,6 @@ fn bad_solve_input_is_one_line_and_exit_2() {
     let constant = bertini("constant.bertini", "  f = x^2 - 1;\n  g = 3;\n");
     let zero = bertini("zero.bertini", "  f = x^2 - 1;\n  g = y - y;\n");
     let overflow = bertini("overflow.bertini", "  f = 1e300*1e300*x^2 - 1;\n  g = y;\n");
-    // inf·0 is NaN: once dropped as a zero coefficient, so that x − c gave x = 0.
-    let nan = write(
-        d,
-        "nan.bertini",
-        b"INPUT\n  variable_group x;\n  function f;\n  constant c;\n  c = (1e308*1e308)*0;\n  f = x - c;\nEND;\n",
-    );
-    let nan_difference = bertini(
-        "nandiff.bertini",
-        "  f = (1e200*1e200 - 1e200*1e200)*x;\n  g = y;\n",
-    );
-    // x^65536 raised to 65535 has degree 4294901760, and times x^65537 it wrapped round u32 to
-    // degree 1 (a certified x = 2).
-    let wrap = write(
-        d,
-        "wrap.bertini",
-        b"INPUT\n  variable_group x;\n  function f;\n  s1 = x^65535*x;\n  s2 = s1^65535;\n  f = s2*s1*x - 2;\nEND;\n",
-    );
-    // Degree 2^20 + 1 by products within the exponent limit.
-    let product = bertini(
-        "product.bertini",
-        "  s = x^65535*x;\n  f = s*s*s*s*s*s*s*s*s*s*s*s*s*s*s*s*x - 1;\n  g = y;\n",
-    );
     let fewer = write(
         d,
         "fewer.bertini",
@@ -481,6 +459,64 @@ fn bad_solve_input_is_one_line_and_exit_2() {
                 "not finite in double precision",
             ],
         ),
+        (vec![&huge], vec!["more than 10^38 paths", "1048576"]),
+        (
+            vec![&huge_groups, "--start", "multi-homogeneous"],
+            vec!["multi-homogeneous start system has more than 10^38 paths"],
+        ),
+        (vec![circle, "--runs", "0"], vec!["--runs 0", "1 to 64"]),
+        (vec![circle, "--runs", "65"], vec!["--runs 65", "1 to 64"]),
+        (vec![circle, "--threads", "0"], vec!["--threads 0"]),
+        (
+            vec![circle, "--start", "random"],
+            vec!["'random'", "--start", "total-degree, multi-homogeneous"],
+        ),
+        (vec![circle, "--show", "some"], vec!["'some'"]),
+    ];
+    for (args, needles) in cases {
+        let mut all = vec!["solve"];
+        all.extend(&args);
+        assert_refused(&kinsyn(&all), &format!("{args:?}"), &needles);
+    }
+}
+
+/// Values that are not finite and degrees beyond `poly::MAX_DEGREE` (2^20) are refused where
+/// they are written, in one line with exit 2: they once gave wrong certified answers.
+#[test]
+fn non_finite_values_and_degrees_beyond_the_limit_are_refused() {
+    assert_eq!(kinsyn::poly::MAX_DEGREE, 1 << 20);
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let bertini = |name: &str, body: &str| {
+        write(
+            d,
+            name,
+            format!("INPUT\n  variable_group x, y;\n  function f, g;\n{body}END;\n").as_bytes(),
+        )
+    };
+    // inf·0 is NaN: once dropped as a zero coefficient, so that x − c gave x = 0.
+    let nan = write(
+        d,
+        "nan.bertini",
+        b"INPUT\n  variable_group x;\n  function f;\n  constant c;\n  c = (1e308*1e308)*0;\n  f = x - c;\nEND;\n",
+    );
+    let nan_difference = bertini(
+        "nandiff.bertini",
+        "  f = (1e200*1e200 - 1e200*1e200)*x;\n  g = y;\n",
+    );
+    // x^65536 raised to 65535 has degree 4294901760, and times x^65537 it wrapped round u32 to
+    // degree 1 (a certified x = 2).
+    let wrap = write(
+        d,
+        "wrap.bertini",
+        b"INPUT\n  variable_group x;\n  function f;\n  s1 = x^65535*x;\n  s2 = s1^65535;\n  f = s2*s1*x - 2;\nEND;\n",
+    );
+    // Degree 2^20 + 1 by products within the exponent limit.
+    let product = bertini(
+        "product.bertini",
+        "  s = x^65535*x;\n  f = s*s*s*s*s*s*s*s*s*s*s*s*s*s*s*s*x - 1;\n  g = y;\n",
+    );
+    let cases: Vec<(Vec<&str>, Vec<&str>)> = vec![
         (
             vec![&nan],
             vec!["line 5", "'1e308*1e308' in c", "not finite"],
@@ -502,19 +538,6 @@ fn bad_solve_input_is_one_line_and_exit_2() {
             vec![&product],
             vec!["line 5", "in f", "1048577", "limit of 1048576"],
         ),
-        (vec![&huge], vec!["more than 10^38 paths", "1048576"]),
-        (
-            vec![&huge_groups, "--start", "multi-homogeneous"],
-            vec!["multi-homogeneous start system has more than 10^38 paths"],
-        ),
-        (vec![circle, "--runs", "0"], vec!["--runs 0", "1 to 64"]),
-        (vec![circle, "--runs", "65"], vec!["--runs 65", "1 to 64"]),
-        (vec![circle, "--threads", "0"], vec!["--threads 0"]),
-        (
-            vec![circle, "--start", "random"],
-            vec!["'random'", "--start", "total-degree, multi-homogeneous"],
-        ),
-        (vec![circle, "--show", "some"], vec!["'some'"]),
     ];
     for (args, needles) in cases {
         let mut all = vec!["solve"];

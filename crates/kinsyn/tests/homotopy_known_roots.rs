@@ -95,7 +95,7 @@ fn roots_of_unity(n: u32) {
     )
     .unwrap();
     let expected: Vec<Vec<C64>> = roots_of(n, 1.0).into_iter().map(|r| vec![r]).collect();
-    let real = if n % 2 == 0 { 2 } else { 1 };
+    let real = if n.is_multiple_of(2) { 2 } else { 1 };
     assert_exactly(&report, &expected, real, &format!("x^{n} - 1"));
     assert_eq!(report.paths(), n as usize, "Bézout's n paths");
 }
