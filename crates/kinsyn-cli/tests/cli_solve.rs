@@ -331,6 +331,35 @@ fn a_double_root_is_singular_with_multiplicity_2_and_no_certificate() {
     );
 }
 
+/// `x^16 − 1` has the 16 sixteenth roots of unity, all simple (the derivative `16x^15` does
+/// not vanish on them), two of them real (±1): 16 non-singular, none singular, all certified.
+/// (The solver once called two of them singular: its singular test was not scale-free.)
+#[test]
+fn the_sixteenth_roots_of_unity_are_sixteen_regular_certified_roots() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = write(
+        dir.path(),
+        "unity16.bertini",
+        b"INPUT\n  variable_group x;\n  function f;\n  f = x^16 - 1;\nEND;\n",
+    );
+    let v = json(&["solve", &file, "--json"]);
+    assert_eq!(count(&v, "paths"), 16);
+    assert_eq!(count(&v, "nonsingular"), 16);
+    assert_eq!(count(&v, "singular"), 0);
+    assert_eq!(count(&v, "real"), 2);
+    assert_eq!(count(&v, "certified"), 16);
+    assert_eq!(count(&v, "certified_real"), 2);
+    let expected: Vec<Vec<C64>> = (0..16)
+        .map(|k| {
+            vec![C64::from_polar(
+                1.0,
+                std::f64::consts::TAU * f64::from(k) / 16.0,
+            )]
+        })
+        .collect();
+    assert!(same_set(&solutions(&v), &expected, 1e-12), "{v:#}");
+}
+
 /// A Bertini file with `n` equations `x_i^degree − 1` in `n` variables, in one group or one
 /// group per variable.
 fn power_system(n: usize, degree: u32, groups: bool) -> String {
@@ -422,7 +451,14 @@ fn bad_solve_input_is_one_line_and_exit_2() {
             vec!["equation g is the non-zero constant 3"],
         ),
         (vec![&zero], vec!["equation g is identically zero"]),
-        (vec![&overflow], vec!["equation f", "double precision"]),
+        (
+            vec![&overflow],
+            vec![
+                "line 4",
+                "'1e300*1e300' in f",
+                "not finite in double precision",
+            ],
+        ),
         (vec![&huge], vec!["more than 10^38 paths", "1048576"]),
         (
             vec![&huge_groups, "--start", "multi-homogeneous"],
@@ -436,6 +472,72 @@ fn bad_solve_input_is_one_line_and_exit_2() {
             vec!["'random'", "--start", "total-degree, multi-homogeneous"],
         ),
         (vec![circle, "--show", "some"], vec!["'some'"]),
+    ];
+    for (args, needles) in cases {
+        let mut all = vec!["solve"];
+        all.extend(&args);
+        assert_refused(&kinsyn(&all), &format!("{args:?}"), &needles);
+    }
+}
+
+/// Values that are not finite and degrees beyond `poly::MAX_DEGREE` (2^20) are refused where
+/// they are written, in one line with exit 2: they once gave wrong certified answers.
+#[test]
+fn non_finite_values_and_degrees_beyond_the_limit_are_refused() {
+    assert_eq!(kinsyn::poly::MAX_DEGREE, 1 << 20);
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let bertini = |name: &str, body: &str| {
+        write(
+            d,
+            name,
+            format!("INPUT\n  variable_group x, y;\n  function f, g;\n{body}END;\n").as_bytes(),
+        )
+    };
+    // inf·0 is NaN: once dropped as a zero coefficient, so that x − c gave x = 0.
+    let nan = write(
+        d,
+        "nan.bertini",
+        b"INPUT\n  variable_group x;\n  function f;\n  constant c;\n  c = (1e308*1e308)*0;\n  f = x - c;\nEND;\n",
+    );
+    let nan_difference = bertini(
+        "nandiff.bertini",
+        "  f = (1e200*1e200 - 1e200*1e200)*x;\n  g = y;\n",
+    );
+    // x^65536 raised to 65535 has degree 4294901760, and times x^65537 it wrapped round u32 to
+    // degree 1 (a certified x = 2).
+    let wrap = write(
+        d,
+        "wrap.bertini",
+        b"INPUT\n  variable_group x;\n  function f;\n  s1 = x^65535*x;\n  s2 = s1^65535;\n  f = s2*s1*x - 2;\nEND;\n",
+    );
+    // Degree 2^20 + 1 by products within the exponent limit.
+    let product = bertini(
+        "product.bertini",
+        "  s = x^65535*x;\n  f = s*s*s*s*s*s*s*s*s*s*s*s*s*s*s*s*x - 1;\n  g = y;\n",
+    );
+    let cases: Vec<(Vec<&str>, Vec<&str>)> = vec![
+        (
+            vec![&nan],
+            vec!["line 5", "'1e308*1e308' in c", "not finite"],
+        ),
+        (
+            vec![&nan_difference],
+            vec!["line 4", "in f", "not finite", "NaN"],
+        ),
+        (
+            vec![&wrap],
+            vec![
+                "line 5",
+                "'s1^65535' in s2",
+                "4294901760",
+                "beyond the limit of 1048576 (2^20)",
+            ],
+        ),
+        (
+            vec![&product],
+            vec!["line 5", "in f", "1048577", "limit of 1048576"],
+        ),
     ];
     for (args, needles) in cases {
         let mut all = vec!["solve"];

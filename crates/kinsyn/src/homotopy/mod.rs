@@ -48,7 +48,7 @@ pub use witness::{
 use crate::certify::{Certificate, Reality, certify_roots};
 pub use crate::poly::C64;
 use crate::poly::System;
-use nalgebra::DVector;
+use nalgebra::{DMatrix, DVector};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 use rayon::prelude::*;
@@ -64,8 +64,19 @@ pub const MAX_PATHS: u128 = 1 << 20;
 /// group's coordinates.
 pub const INFINITY_TOLERANCE: f64 = 1e-8;
 
-/// An endpoint is singular when the smallest singular value of the homotopy's Jacobian at
-/// `t = 0` is below this fraction of the largest (or its winding number exceeds 1).
+/// An endpoint is singular when its inverse condition ([`PathEnd::inverse_condition`]) is
+/// below this (or its winding number exceeds 1).
+///
+/// The inverse condition is `σ_min / σ_max` of the system's Jacobian at the endpoint with each
+/// equation's row divided by the size of its terms there (the gradient of `Σ |c_α| z^α` at
+/// `|z|`, [`crate::poly::Poly::magnitudes`], coordinates below 1e-3 of the largest counted as
+/// 1e-3 of it), in projective coordinates restricted to the
+/// point's orthogonal complement (the patch row of each variable group is the unit normal
+/// `z̄ / |z|` of the group's coordinates scaled to largest modulus 1). It therefore does not
+/// depend on the scale of an equation, on the degree of a homogenised equation, on the
+/// random patch, or on where the endpoint lies relative to the patch: `x^1024 − 1` has
+/// inverse condition about 1 at each root of unity, and a double root has 0 up to the
+/// endpoint's accuracy.
 pub const SINGULAR_TOLERANCE: f64 = 1e-9;
 
 /// A solution is real when each imaginary part is below this fraction of `1 + |x|`.
@@ -145,7 +156,10 @@ pub struct PathEnd {
     pub x: Option<Vec<C64>>,
     /// The winding number of the endgame (the cycle number of the path's Puiseux series).
     pub winding: usize,
-    /// `σ_min / σ_max` of the homotopy's Jacobian at the endpoint (its inverse condition).
+    /// The endpoint's inverse condition: `σ_min / σ_max` of the system's Jacobian there, rows
+    /// scaled by the size of each equation's terms, in projective coordinates restricted to
+    /// the point's orthogonal complement ([`SINGULAR_TOLERANCE`]); 0 for paths at infinity
+    /// and failed ones.
     pub inverse_condition: f64,
     /// Steps taken, accepted or not.
     pub steps: usize,
@@ -487,9 +501,7 @@ fn track_path(
             retracked: false,
         };
     }
-    let jacobian = tracker.jacobian(&point, C64::from(0.0));
-    let sv = jacobian.singular_values();
-    let inverse_condition = sv.min() / sv.max();
+    let inverse_condition = tracker.inverse_condition(&point);
     let regular = end.winding == 1 && inverse_condition > SINGULAR_TOLERANCE;
     if regular {
         tracker.refine(&mut point, C64::from(0.0), 1e-14);
@@ -521,6 +533,48 @@ fn track_path(
         steps: tracker.steps,
         failure: None,
         retracked: false,
+    }
+}
+
+/// In the size of an equation's terms (the row scale of [`SINGULAR_TOLERANCE`]), a coordinate
+/// smaller than this fraction of the point's largest (1 for affine points) counts as this
+/// fraction. A coordinate that small is not trusted to scale a row down: at an approximate
+/// double root of `x² = 0` (`x` about 1e-13) the row `2x` stays small against the others and
+/// the root singular, where the size `2|x|` of the row's one term would have made it look
+/// regular.
+pub(crate) const TERM_SIZE_FLOOR: f64 = 1e-3;
+
+/// The moduli of the coordinates of `z`, each at least [`TERM_SIZE_FLOOR`] times `unit` (the
+/// largest modulus of a projective group, or `max(1, |z|∞)` for an affine point), as complex
+/// numbers: the point at which the magnitude polynomials ([`crate::poly::Poly::magnitudes`])
+/// give the size of each equation's terms.
+pub(crate) fn floored_moduli(z: &[C64], unit: f64) -> Vec<C64> {
+    z.iter()
+        .map(|c| C64::new(c.norm().max(TERM_SIZE_FLOOR * unit), 0.0))
+        .collect()
+}
+
+/// `σ_min / σ_max` of `jacobian` with row `i` divided by `scales[i]` (the size of equation
+/// `i`'s terms at the point; rows of zero or non-finite scale are left as they are): the
+/// inverse condition of an endpoint ([`SINGULAR_TOLERANCE`]). 0 when the matrix is not finite.
+pub(crate) fn scaled_inverse_condition(mut jacobian: DMatrix<C64>, scales: &[f64]) -> f64 {
+    for (i, s) in scales.iter().enumerate() {
+        if *s > 0.0 && s.is_finite() {
+            jacobian.row_mut(i).unscale_mut(*s);
+        }
+    }
+    if !jacobian
+        .iter()
+        .all(|c| c.re.is_finite() && c.im.is_finite())
+    {
+        return 0.0;
+    }
+    let sv = jacobian.singular_values();
+    let largest = sv.max();
+    if largest > 0.0 {
+        sv.min() / largest
+    } else {
+        0.0
     }
 }
 

@@ -50,6 +50,9 @@ pub struct ParametrizedSystem {
     system: System,
     unknowns: usize,
     program: Program,
+    /// The family with every coefficient replaced by its modulus (the scale of each
+    /// equation's row in the endpoint condition).
+    magnitudes: Program,
 }
 
 impl ParametrizedSystem {
@@ -67,10 +70,19 @@ impl ParametrizedSystem {
             });
         }
         let program = system.program();
+        let magnitudes = Program::new(
+            &system
+                .equations()
+                .iter()
+                .map(Poly::magnitudes)
+                .collect::<Vec<_>>(),
+            system.nvars(),
+        );
         Ok(Self {
             system,
             unknowns,
             program,
+            magnitudes,
         })
     }
 
@@ -167,6 +179,7 @@ struct SegmentWorkspace {
     point: Vec<C64>,
     values: Vec<C64>,
     jacobian: Vec<C64>,
+    magnitude_program: Workspace<C64>,
 }
 
 impl Homotopy for Segment<'_> {
@@ -183,7 +196,36 @@ impl Homotopy for Segment<'_> {
             point: vec![C64::from(0.0); n],
             values: vec![C64::from(0.0); self.family.unknowns],
             jacobian: vec![C64::from(0.0); self.family.unknowns * n],
+            magnitude_program: self.family.magnitudes.workspace(),
         }
+    }
+
+    fn inverse_condition(&self, z: &DVector<C64>, ws: &mut SegmentWorkspace) -> f64 {
+        let n = self.family.unknowns;
+        let total = self.family.system.nvars();
+        let mut hz = DMatrix::zeros(n, n);
+        let (mut h, mut ht) = (DVector::zeros(n), DVector::zeros(n));
+        self.evaluate(z, C64::from(0.0), ws, &mut h, &mut hz, &mut ht);
+        let unit = ws.point.iter().map(|c| c.norm()).fold(1.0, f64::max);
+        let moduli = super::floored_moduli(&ws.point, unit);
+        let mut values = vec![C64::from(0.0); n];
+        let mut jacobian = vec![C64::from(0.0); n * total];
+        self.family.magnitudes.evaluate_with_jacobian(
+            &moduli,
+            &mut values,
+            &mut jacobian,
+            &mut ws.magnitude_program,
+        );
+        let scales: Vec<f64> = (0..n)
+            .map(|i| {
+                jacobian[i * total..i * total + n]
+                    .iter()
+                    .map(nalgebra::Complex::norm_sqr)
+                    .sum::<f64>()
+                    .sqrt()
+            })
+            .collect();
+        super::scaled_inverse_condition(hz, &scales)
     }
 
     fn evaluate(
@@ -299,8 +341,7 @@ pub(crate) fn track_parameters_to_end(
             if !point.iter().all(|c| c.re.is_finite() && c.im.is_finite()) {
                 return Err(PathFailure::NotFinite);
             }
-            let sv = tracker.jacobian(&point, C64::from(0.0)).singular_values();
-            if end.winding == 1 && sv.min() > super::SINGULAR_TOLERANCE * sv.max() {
+            if end.winding == 1 && tracker.inverse_condition(&point) > super::SINGULAR_TOLERANCE {
                 tracker.refine(&mut point, C64::from(0.0), 1e-14);
                 Ok(FamilyEnd::Regular(point.iter().copied().collect()))
             } else if end.converged {

@@ -41,7 +41,7 @@ use super::witness::{
     random_combinations, vanishes,
 };
 use super::{C64, relative_distance};
-use crate::poly::{Poly, System};
+use crate::poly::{Poly, Program, System};
 use nalgebra::{DMatrix, DVector};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
@@ -473,15 +473,39 @@ fn regular_root(equations: &[Poly], x: &[C64]) -> Option<Vec<C64>> {
     )
     .ok()?;
     let program = system.program();
+    let magnitudes = Program::new(
+        &equations.iter().map(Poly::magnitudes).collect::<Vec<_>>(),
+        n,
+    );
     let mut ws = program.workspace();
+    let mut magnitude_ws = magnitudes.workspace();
     let (mut values, mut jacobian) = (vec![C64::from(0.0); n], vec![C64::from(0.0); n * n]);
+    let (mut sizes, mut size_jacobian) = (vec![C64::from(0.0); n], vec![C64::from(0.0); n * n]);
     let mut z = DVector::from_column_slice(x);
     let mut last = f64::INFINITY;
     for _ in 0..8 {
         program.evaluate_with_jacobian(z.as_slice(), &mut values, &mut jacobian, &mut ws);
         let j = DMatrix::from_row_slice(n, n, &jacobian);
-        let sv = j.singular_values();
-        if sv.min() <= 1e-8 * sv.max() {
+        // Well-conditioned with each equation's row scaled by the size of its terms, as the
+        // endpoints of the tracker ([`super::SINGULAR_TOLERANCE`]).
+        let unit = z.iter().map(|c| c.norm()).fold(1.0, f64::max);
+        let moduli = super::floored_moduli(z.as_slice(), unit);
+        magnitudes.evaluate_with_jacobian(
+            &moduli,
+            &mut sizes,
+            &mut size_jacobian,
+            &mut magnitude_ws,
+        );
+        let scales: Vec<f64> = size_jacobian
+            .chunks(n)
+            .map(|row| {
+                row.iter()
+                    .map(nalgebra::Complex::norm_sqr)
+                    .sum::<f64>()
+                    .sqrt()
+            })
+            .collect();
+        if super::scaled_inverse_condition(j.clone(), &scales) <= 1e-8 {
             return None;
         }
         let dz = j.lu().solve(&DVector::from_column_slice(&values))?;

@@ -55,18 +55,30 @@ pub(crate) struct ProjectiveHomotopy {
     n: usize,
     /// Each group's coordinates in `z`: its variables then its homogenising coordinate.
     groups: Vec<Vec<usize>>,
+    /// The random patches of the start solutions; each path then carries its own chart
+    /// ([`ProjectiveWorkspace::patches`]).
     patches: Vec<Vec<C64>>,
     target: Program,
+    /// The homogenised target with every coefficient replaced by its modulus: the size of each
+    /// equation's terms, which scales its row in the endpoint condition.
+    magnitudes: Program,
     start: Start,
     gamma: C64,
 }
 
-/// The scratch of one evaluation of a [`ProjectiveHomotopy`].
+/// The scratch of one path of a [`ProjectiveHomotopy`]: the evaluation buffers and the path's
+/// chart.
 pub(crate) struct ProjectiveWorkspace {
     program: Workspace<C64>,
     values: Vec<C64>,
     jacobian: Vec<C64>,
     start: Vec<C64>,
+    /// The path's patch per group (`patches[j] · z_j = 1`): the random one at the start, then
+    /// the unit normal of the point ([`Homotopy::rechart`]).
+    patches: Vec<Vec<C64>>,
+    magnitude_program: Workspace<C64>,
+    magnitude_values: Vec<C64>,
+    magnitude_jacobian: Vec<C64>,
 }
 
 impl ProjectiveHomotopy {
@@ -84,6 +96,13 @@ impl ProjectiveHomotopy {
             .map(|p| p.homogenize(&variable_groups))
             .collect();
         let target = Program::new(&homogenised, n + variable_groups.len());
+        let magnitudes = Program::new(
+            &homogenised
+                .iter()
+                .map(crate::poly::Poly::magnitudes)
+                .collect::<Vec<_>>(),
+            n + variable_groups.len(),
+        );
         let groups: Vec<Vec<usize>> = variable_groups
             .iter()
             .enumerate()
@@ -123,6 +142,7 @@ impl ProjectiveHomotopy {
             groups,
             patches,
             target,
+            magnitudes,
             start,
             gamma,
         }
@@ -335,7 +355,75 @@ impl Homotopy for ProjectiveHomotopy {
             values: vec![C64::from(0.0); n],
             jacobian: vec![C64::from(0.0); n * self.dim()],
             start: vec![C64::from(0.0); n],
+            patches: self.patches.clone(),
+            magnitude_program: self.magnitudes.workspace(),
+            magnitude_values: vec![C64::from(0.0); n],
+            magnitude_jacobian: vec![C64::from(0.0); n * self.dim()],
         }
+    }
+
+    fn rechart(&self, z: &mut DVector<C64>, ws: &mut ProjectiveWorkspace) {
+        for (g, patch) in self.groups.iter().zip(&mut ws.patches) {
+            let largest = g.iter().map(|i| z[*i].norm()).fold(0.0, f64::max);
+            if !(largest > 0.0 && largest.is_finite()) {
+                continue;
+            }
+            for i in g {
+                z[*i] /= largest;
+            }
+            let size = g.iter().map(|i| z[*i].norm_sqr()).sum::<f64>();
+            for (a, i) in patch.iter_mut().zip(g) {
+                *a = z[*i].conj() / size;
+            }
+        }
+    }
+
+    fn inverse_condition(&self, z: &DVector<C64>, ws: &mut ProjectiveWorkspace) -> f64 {
+        let dim = self.dim();
+        // The same projective point with each group scaled to largest modulus 1: the
+        // homogeneous rows only change by a factor, which the row scaling removes, and no
+        // power of a coordinate overflows.
+        let mut w = z.clone();
+        for g in &self.groups {
+            let largest = g.iter().map(|i| w[*i].norm()).fold(0.0, f64::max);
+            if largest > 0.0 && largest.is_finite() {
+                for i in g {
+                    w[*i] /= largest;
+                }
+            }
+        }
+        self.target.evaluate_with_jacobian(
+            w.as_slice(),
+            &mut ws.values,
+            &mut ws.jacobian,
+            &mut ws.program,
+        );
+        let moduli = super::floored_moduli(w.as_slice(), 1.0);
+        self.magnitudes.evaluate_with_jacobian(
+            &moduli,
+            &mut ws.magnitude_values,
+            &mut ws.magnitude_jacobian,
+            &mut ws.magnitude_program,
+        );
+        let mut m = DMatrix::zeros(dim, dim);
+        let mut scales = vec![1.0; dim];
+        for i in 0..self.n {
+            for c in 0..dim {
+                m[(i, c)] = ws.jacobian[i * dim + c];
+            }
+            scales[i] = ws.magnitude_jacobian[i * dim..(i + 1) * dim]
+                .iter()
+                .map(nalgebra::Complex::norm_sqr)
+                .sum::<f64>()
+                .sqrt();
+        }
+        for (j, g) in self.groups.iter().enumerate() {
+            let size = g.iter().map(|i| w[*i].norm_sqr()).sum::<f64>().sqrt();
+            for i in g {
+                m[(self.n + j, *i)] = w[*i].conj() / size;
+            }
+        }
+        super::scaled_inverse_condition(m, &scales)
     }
 
     fn evaluate(
@@ -366,7 +454,7 @@ impl Homotopy for ProjectiveHomotopy {
                 hz[(i, c)] = one_minus_t * ws.jacobian[i * dim + c] + gt * hz[(i, c)];
             }
         }
-        for (j, (grp, a)) in self.groups.iter().zip(&self.patches).enumerate() {
+        for (j, (grp, a)) in self.groups.iter().zip(&ws.patches).enumerate() {
             let row = self.n + j;
             h[row] = grp.iter().zip(a).map(|(i, ai)| ai * z[*i]).sum::<C64>() - C64::from(1.0);
             ht[row] = C64::from(0.0);

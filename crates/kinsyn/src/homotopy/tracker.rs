@@ -37,6 +37,16 @@ pub(crate) trait Homotopy: Sync {
     fn infinity_measure(&self, _z: &DVector<C64>) -> Option<f64> {
         None
     }
+    /// The inverse condition of `z` as a solution of `H(·, 0) = 0`, the target system: the
+    /// scale-free measure of [`super::SINGULAR_TOLERANCE`] that decides regular or singular.
+    fn inverse_condition(&self, z: &DVector<C64>, ws: &mut Self::Workspace) -> f64;
+    /// For homotopies in projective coordinates: moves `z` to the chart in which it is best
+    /// represented (each group's coordinates scaled to largest modulus 1, on the patch normal
+    /// to them), the same projective point. Called between the steps of the tracker, so that
+    /// the coordinates stay of unit size along the whole path (a fixed patch puts some points
+    /// of a high-degree system at coordinates whose powers overflow). Affine homotopies keep
+    /// their coordinates (the default).
+    fn rechart(&self, _z: &mut DVector<C64>, _ws: &mut Self::Workspace) {}
 }
 
 /// The settings of one path: tolerances are relative to `1 + |z|`.
@@ -154,6 +164,9 @@ pub(crate) struct Tracker<'a, H: Homotopy> {
     ht: DVector<C64>,
     /// Steps taken (accepted and rejected).
     pub steps: usize,
+    /// Whether the chart follows the point ([`Homotopy::rechart`]); off in the Cauchy
+    /// endgame, whose averages and comparisons need one fixed chart.
+    recharting: bool,
 }
 
 /// A segment of the continuation path: `t(s)` for `s ∈ [0, 1]`.
@@ -197,6 +210,7 @@ impl<'a, H: Homotopy> Tracker<'a, H> {
             hz: DMatrix::zeros(n, n),
             ht: DVector::zeros(n),
             steps: 0,
+            recharting: true,
         }
     }
 
@@ -257,11 +271,22 @@ impl<'a, H: Homotopy> Tracker<'a, H> {
         )
     }
 
-    /// Whether `∂H/∂z` at `(z, 0)` has `σ_min / σ_max` above the singular tolerance.
+    /// Whether `z` is a well-conditioned solution of the target: its inverse condition
+    /// ([`Homotopy::inverse_condition`]) above the singular tolerance.
     fn well_conditioned(&mut self, z: &DVector<C64>) -> bool {
-        self.eval(z, C64::from(0.0));
-        let sv = self.hz.clone().singular_values();
-        sv.min() > super::SINGULAR_TOLERANCE * sv.max()
+        self.inverse_condition(z) > super::SINGULAR_TOLERANCE
+    }
+
+    /// The inverse condition of `z` as a solution of the target ([`Homotopy::inverse_condition`]).
+    pub(crate) fn inverse_condition(&mut self, z: &DVector<C64>) -> f64 {
+        self.homotopy.inverse_condition(z, &mut self.ws)
+    }
+
+    /// [`Homotopy::rechart`] on straight segments while recharting is on.
+    fn rechart(&mut self, z: &mut DVector<C64>, seg: Segment) {
+        if self.recharting && matches!(seg, Segment::Line(..)) {
+            self.homotopy.rechart(z, &mut self.ws);
+        }
     }
 
     /// [`Self::follow`] with a largest step (a fraction of the segment) and a budget of steps.
@@ -277,6 +302,7 @@ impl<'a, H: Homotopy> Tracker<'a, H> {
         let mut ds = first_step.min(max_step);
         let mut successes = 0;
         let limit = (self.steps + budget).min(self.settings.max_steps);
+        self.rechart(z, seg);
         while s < 1.0 {
             if self.steps >= limit {
                 return Err(PathFailure::TooManySteps);
@@ -299,6 +325,7 @@ impl<'a, H: Homotopy> Tracker<'a, H> {
             match accepted {
                 Some(y) if y.iter().all(|c| c.re.is_finite() && c.im.is_finite()) => {
                     *z = y;
+                    self.rechart(z, seg);
                     s += step;
                     successes += 1;
                     if successes >= 3 {
@@ -455,6 +482,10 @@ impl<'a, H: Homotopy> Tracker<'a, H> {
         mut r: f64,
     ) -> Result<Endpoint, PathFailure> {
         const SAMPLES: usize = 8;
+        // One chart for the loops: their averages and the comparison of successive estimates
+        // are taken in it.
+        self.rechart(z, Segment::Line(C64::from(r), C64::from(0.0)));
+        self.recharting = false;
         let mut previous: Option<DVector<C64>> = None;
         let mut last_winding = 0;
         for _ in 0..12 {
@@ -526,12 +557,6 @@ impl<'a, H: Homotopy> Tracker<'a, H> {
                 diverges: false,
             })
             .ok_or(PathFailure::Endgame)
-    }
-
-    /// The Jacobian `∂H/∂z` at `(z, t)`, for the classification of endpoints.
-    pub(crate) fn jacobian(&mut self, z: &DVector<C64>, t: C64) -> DMatrix<C64> {
-        self.eval(z, t);
-        self.hz.clone()
     }
 
     /// Newton refinement at fixed `t`; true when it converged.

@@ -32,13 +32,17 @@
 //! expressions with `+ - * / ^`, parentheses, unary minus, decimal numbers in any float
 //! notation, `I` (the imaginary unit) and `Pi`. Division only by constants, powers only with
 //! constant non-negative integer exponents: anything else is not a polynomial and is refused,
-//! as are `sin`, `exp` and the other functions. Refused with an explanation: `pathvariable`
-//! and `parameter` (Bertini's user-defined homotopies: kinsyn's parameter homotopy takes its
-//! parameters as data of the family, not from the file) and `random`/`random_real`
+//! as are `sin`, `exp` and the other functions. Every step of an expression is checked: a
+//! product or power whose total degree would exceed [`MAX_DEGREE`] is refused before it is
+//! expanded (degrees computed in `u64`, so they never wrap), and so is a value or coefficient
+//! that becomes infinite or NaN in double precision (`1e308*1e308`, and so `(1e308*1e308)*0`).
+//! Refused with an explanation: `pathvariable` and `parameter` (Bertini's user-defined
+//! homotopies: kinsyn's parameter homotopy takes its parameters as data of the family, not from
+//! the file) and `random`/`random_real`
 //! (constants drawn anew by every run: a file read twice would give two different systems;
 //! write the drawn value as a `constant`).
 
-use super::{C64, Poly, PolyError, System};
+use super::{C64, MAX_DEGREE, Poly, PolyError, System};
 use std::collections::HashMap;
 use std::fmt::Write as _;
 
@@ -94,6 +98,29 @@ pub enum BertiniErrorKind {
         context: String,
         /// What kinsyn accepts instead.
         why: String,
+    },
+    /// A product or power whose total degree exceeds [`MAX_DEGREE`] (computed without
+    /// overflow, in `u64`): refused where it is written, before it is expanded.
+    #[error(
+        "the degree of '{found}' in {context} is {degree}, beyond the limit of {MAX_DEGREE} (2^20)"
+    )]
+    Degree {
+        /// The expression, as written.
+        found: String,
+        /// The function, constant or subfunction being defined.
+        context: String,
+        /// Its total degree.
+        degree: u64,
+    },
+    /// An expression whose value (or a coefficient of its expansion) is infinite or NaN in
+    /// double precision: an overflow such as `1e308*1e308`, or what follows from one
+    /// (`(1e308*1e308)*0` is NaN).
+    #[error("'{found}' in {context} is not finite in double precision (infinite or NaN)")]
+    NotFinite {
+        /// The expression, as written.
+        found: String,
+        /// The function, constant or subfunction being defined.
+        context: String,
     },
     /// A Bertini construct kinsyn does not read, with the reason.
     #[error("{0}")]
@@ -823,15 +850,56 @@ impl ExprParser<'_> {
         )
     }
 
+    /// `p` if every coefficient is finite; else the error naming the expression from `start`
+    /// to here (the first place where a value overflowed or became NaN).
+    fn finite(&self, p: Poly, start: usize, line: usize) -> Result<Poly, BertiniError> {
+        if p.terms().all(|(_, c)| c.re.is_finite() && c.im.is_finite()) {
+            Ok(p)
+        } else {
+            Err(err(
+                line,
+                BertiniErrorKind::NotFinite {
+                    found: self.source(start),
+                    context: self.context.to_string(),
+                },
+            ))
+        }
+    }
+
+    /// The error for an expression from `start` to here of total degree `degree`, if it
+    /// exceeds [`MAX_DEGREE`].
+    fn degree_within_limit(
+        &self,
+        degree: u64,
+        start: usize,
+        line: usize,
+    ) -> Result<(), BertiniError> {
+        if degree <= u64::from(MAX_DEGREE) {
+            return Ok(());
+        }
+        Err(err(
+            line,
+            BertiniErrorKind::Degree {
+                found: self.source(start),
+                context: self.context.to_string(),
+                degree,
+            },
+        ))
+    }
+
     fn expression(&mut self) -> Result<Poly, BertiniError> {
+        let start = self.pos;
+        let line = self.current_line();
         let mut acc = self.term()?;
         loop {
             if self.peek_sym('+') {
                 self.pos += 1;
-                acc = acc + self.term()?;
+                let rhs = self.term()?;
+                acc = self.finite(acc + rhs, start, line)?;
             } else if self.peek_sym('-') {
                 self.pos += 1;
-                acc = acc - self.term()?;
+                let rhs = self.term()?;
+                acc = self.finite(acc - rhs, start, line)?;
             } else {
                 return Ok(acc);
             }
@@ -839,11 +907,16 @@ impl ExprParser<'_> {
     }
 
     fn term(&mut self) -> Result<Poly, BertiniError> {
+        let start = self.pos;
+        let line = self.current_line();
         let mut acc = self.unary()?;
         loop {
             if self.peek_sym('*') {
                 self.pos += 1;
-                acc = acc * self.unary()?;
+                let rhs = self.unary()?;
+                let degree = u64::from(acc.total_degree()) + u64::from(rhs.total_degree());
+                self.degree_within_limit(degree, start, line)?;
+                acc = self.finite(acc * rhs, start, line)?;
             } else if self.peek_sym('/') {
                 let line = self.current_line();
                 self.pos += 1;
@@ -864,7 +937,7 @@ impl ExprParser<'_> {
                             format!("division by zero ('{found}') in {}", self.context),
                         ));
                     }
-                    Some(c) => acc = divide(&acc, c),
+                    Some(c) => acc = self.finite(divide(&acc, c), start, line)?,
                 }
             } else {
                 return Ok(acc);
@@ -896,6 +969,7 @@ impl ExprParser<'_> {
     }
 
     fn power(&mut self) -> Result<Poly, BertiniError> {
+        let whole = self.pos;
         let base = self.primary()?;
         if !self.peek_sym('^') {
             return Ok(base);
@@ -912,7 +986,14 @@ impl ExprParser<'_> {
             integral.then_some(k)
         });
         match k {
-            Some(k) => Ok(base.pow(k)),
+            Some(k) => {
+                self.degree_within_limit(
+                    u64::from(base.total_degree()) * u64::from(k),
+                    whole,
+                    line,
+                )?;
+                self.finite(base.pow(k), whole, line)
+            }
             None => Err(self.not_polynomial(
                 line,
                 format!("the power '^{found}'"),

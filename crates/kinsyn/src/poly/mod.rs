@@ -37,6 +37,13 @@ use std::ops::{Add, Mul, Neg, Sub};
 /// A complex number in double precision: the coefficients and values of polynomials.
 pub type C64 = nalgebra::Complex<f64>;
 
+/// The largest total degree of a polynomial the readers ([`bertini::parse`]) accept, for every
+/// expression on the way (a product or power beyond it is refused where it is written): 2²⁰,
+/// the degree of a univariate equation whose total-degree homotopy already has
+/// [`crate::homotopy::MAX_PATHS`] paths. Degrees are computed in `u64` against it, so they
+/// never wrap.
+pub const MAX_DEGREE: u32 = 1 << 20;
+
 /// Why polynomials or a system cannot be formed.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
 pub enum PolyError {
@@ -166,12 +173,13 @@ impl Poly {
         self.terms.values().all(|c| c.im == 0.0)
     }
 
-    /// The total degree (0 for constants and for the zero polynomial).
+    /// The total degree (0 for constants and for the zero polynomial); saturates at
+    /// `u32::MAX` (the readers of this module keep degrees within [`MAX_DEGREE`]).
     #[must_use]
     pub fn total_degree(&self) -> u32 {
         self.terms
             .keys()
-            .map(|e| e.iter().sum::<u32>())
+            .map(|e| e.iter().fold(0u32, |d, k| d.saturating_add(*k)))
             .max()
             .unwrap_or(0)
     }
@@ -237,6 +245,20 @@ impl Poly {
     #[must_use]
     pub fn pow(&self, k: u32) -> Self {
         (0..k).fold(Self::real(self.nvars, 1.0), |acc, _| acc * self)
+    }
+
+    /// The polynomial with every coefficient replaced by its modulus, `Σ |c_α| x^α`: at the
+    /// moduli of a point, its value and gradient bound those of `p` term by term, and measure
+    /// the size of the terms that cancel at a root (the scale of an equation's row in the
+    /// endpoint condition of [`crate::homotopy`]).
+    #[must_use]
+    pub fn magnitudes(&self) -> Self {
+        Self::from_terms(
+            self.nvars,
+            self.terms
+                .iter()
+                .map(|(e, c)| (e.clone(), C64::new(c.norm(), 0.0))),
+        )
     }
 
     /// `c · p`.
@@ -345,7 +367,12 @@ impl Mul<&Poly> for &Poly {
         let mut out = Poly::zero(self.nvars);
         for (e, c) in &self.terms {
             for (f, d) in &rhs.terms {
-                out.add_term(e.iter().zip(f).map(|(a, b)| a + b).collect(), c * d);
+                let sum = e.iter().zip(f).map(|(a, b)| {
+                    a.checked_add(*b).expect(
+                        "an exponent beyond u32::MAX (readers refuse degrees beyond MAX_DEGREE)",
+                    )
+                });
+                out.add_term(sum.collect(), c * d);
             }
         }
         out

@@ -169,10 +169,17 @@ impl Program {
                 .get(i + 1)
                 .copied()
                 .unwrap_or(self.power_len);
-            let mut acc = S::one();
-            for slot in &mut ws.powers[start..end] {
-                acc = acc * *xi;
-                *slot = acc;
+            // x^k = x^⌊k/2⌋ · x^⌈k/2⌉: a product tree of depth log₂ k rather than a chain of k
+            // products. Over intervals this matters: each complex rectangle product widens its
+            // operands' relative radius by up to √2 (the wrapping effect), geometrically along
+            // a chain (x^62 of a root of unity: enclosures 2^31 times too wide, and no
+            // certificate) but only polynomially, by about k^1.5, along the tree.
+            for k in 1..=end - start {
+                ws.powers[start + k - 1] = if k == 1 {
+                    *xi
+                } else {
+                    ws.powers[start + k / 2 - 1] * ws.powers[start + (k - k / 2) - 1]
+                };
             }
         }
         for (slot, (a, b)) in ws.monomials.iter_mut().zip(&self.monomials) {
