@@ -172,48 +172,8 @@ pub fn analyse_placed(
     let mut study_lines = String::new();
     let mut study_json = Vec::new();
     let (q, steps, continuous) = if !placement.study.is_empty() {
-        let sets = placement
-            .study
-            .iter()
-            .map(|t| {
-                Manipulator::parse_study(t).map_err(|e| CliError::Input(format!("--study: {e}")))
-            })
-            .collect::<Result<Vec<_>, _>>()?;
-        for (body, s) in m.bodies().iter().zip(&sets) {
-            let residual = kinsyn::spatial::study::relative_quadric_residual(s);
-            let _ = writeln!(
-                study_lines,
-                "--study {:?}: relative Study quadric residual |x·y|/(|x| |y|) = {residual:.3e} (tolerance {:.0e}, values printed to two decimals)",
-                body.name, PRINTED_STUDY_TOLERANCE
-            );
-            study_json.push(serde_json::json!({
-                "body": body.name,
-                "parameters": s,
-                "relative_quadric_residual": residual,
-                "tolerance": PRINTED_STUDY_TOLERANCE,
-            }));
-        }
-        if let Some(rounding) = placement.nearest {
-            let q = nearest_study(
-                m,
-                &start,
-                &sets,
-                rounding,
-                &mut study_lines,
-                &mut study_json,
-            )?;
-            (q, 0, true)
-        } else {
-            let frames = m
-                .frames_from_study(&sets, PRINTED_STUDY_TOLERANCE)
-                .map_err(|e| CliError::Input(format!("--study: {e}")))?;
-            let q = m.solve_poses(&start, &frames).map_err(|e| {
-                CliError::Input(format!(
-                    "--study: {e} (--nearest takes the nearest assembly of rounded values)"
-                ))
-            })?;
-            (q, 0, true)
-        }
+        let q = study_configuration(m, placement, &start, &mut study_lines, &mut study_json)?;
+        (q, 0, true)
     } else if request.inputs.is_empty() && request.platform.is_none() {
         (start, 0, true)
     } else {
@@ -243,6 +203,49 @@ pub fn analyse_placed(
     })
 }
 
+/// `--study` (with `--nearest`): the configuration of the Study poses reached from `start`,
+/// with the report's lines and JSON entries.
+fn study_configuration(
+    m: &Manipulator,
+    placement: &Placement<'_>,
+    start: &[f64],
+    study_lines: &mut String,
+    study_json: &mut Vec<serde_json::Value>,
+) -> Result<Vec<f64>, CliError> {
+    let sets = placement
+        .study
+        .iter()
+        .map(|t| Manipulator::parse_study(t).map_err(|e| CliError::Input(format!("--study: {e}"))))
+        .collect::<Result<Vec<_>, _>>()?;
+    for (body, s) in m.bodies().iter().zip(&sets) {
+        let residual = kinsyn::spatial::study::relative_quadric_residual(s);
+        let _ = writeln!(
+            study_lines,
+            "--study {:?}: relative Study quadric residual |x·y|/(|x| |y|) = {residual:.3e} (tolerance {:.0e}, values printed to two decimals)",
+            body.name, PRINTED_STUDY_TOLERANCE
+        );
+        study_json.push(serde_json::json!({
+            "body": body.name,
+            "parameters": s,
+            "relative_quadric_residual": residual,
+            "tolerance": PRINTED_STUDY_TOLERANCE,
+        }));
+    }
+    if let Some(rounding) = placement.nearest {
+        nearest_study(m, start, &sets, rounding, study_lines, study_json)
+    } else {
+        let frames = m
+            .frames_from_study(&sets, PRINTED_STUDY_TOLERANCE)
+            .map_err(|e| CliError::Input(format!("--study: {e}")))?;
+        let q = m.solve_poses(start, &frames).map_err(|e| {
+            CliError::Input(format!(
+                "--study: {e} (--nearest takes the nearest assembly of rounded values)"
+            ))
+        })?;
+        Ok(q)
+    }
+}
+
 /// `--study … --nearest`: the assembly nearest to the Study poses, with a line and a JSON
 /// entry per body on how far it moved (the file's units) and how far the rounding explains;
 /// refused in one line when a body moved further.
@@ -252,7 +255,7 @@ fn nearest_study(
     sets: &[kinsyn::spatial::study::StudyParameters],
     rounding: f64,
     lines: &mut String,
-    entries: &mut Vec<serde_json::Value>,
+    entries: &mut [serde_json::Value],
 ) -> Result<Vec<f64>, CliError> {
     if !(rounding.is_finite() && rounding > 0.0) {
         return Err(CliError::Input(format!(
