@@ -78,9 +78,11 @@ for body in ("ee1", "ee2"):
 # ## Paper 002: the 3-RPS-3-SPR series-parallel manipulator (Nayak, Caro, Wenger)
 #
 # Six dof at a general configuration (§4–5). Table 1, row 1, places both platforms by their
-# Study parameters (`analyze --study`); there kinsyn finds twist-system order 3 where the
-# paper prints 5 (docs/deviations.md, "Paper 002": both modules' constraint forces are the
-# same three lines).
+# Study parameters (`analyze --study`); for this file, the text's mechanism (the 3-SPR's
+# spherical joints on the coupler), kinsyn finds twist-system order 3 where the paper prints 5:
+# both modules' constraint forces are the same three lines. Table 1's data describe a
+# 3-RPS-3-RPS (multibody/3-rps-3-rps-table-1.json), which gives the printed 5
+# (docs/deviations.md, "Paper 002").
 
 # %%
 spm = kinsyn.Manipulator.from_file(MECHANISMS / "multibody" / "3-rps-3-spr.json")
@@ -88,7 +90,7 @@ general = spm.analyze()
 print(f"paper 002: end-effector dof at a general configuration: kinsyn {general.dof}, paper 6")
 row1 = spm.analyze(study=["1:0:0:0:0:0:0:0.75", "1:0:0:0:0:0:0:0.8"])
 order = row1.report["series_parallel"]["twist_system_order"]["rank"]
-print(f"Table 1 row 1: twist-system order {order}, printed 5 (a deviation, docs/deviations.md)")
+print(f"Table 1 row 1, text's mechanism: twist-system order {order}, printed 5 (the table's 3-RPS-3-RPS gives it)")
 print("J_S-PM (eqs. 7–8) there:")
 print(np.asarray(row1.report["series_parallel"]["jacobian"]).round(4) + 0.0)
 

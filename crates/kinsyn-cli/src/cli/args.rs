@@ -168,6 +168,20 @@ pub(super) enum Command {
         /// residual.
         #[arg(long, value_name = "X0:…:Y3", allow_hyphen_values = true, conflicts_with_all = ["pose", "inputs"])]
         study: Vec<String>,
+        /// With --study: analyse the assembled configuration nearest to the Study poses instead of
+        /// refusing poses that miss every assembly, as rounded printed values do (paper 002
+        /// Table 1: two decimals miss by about 1e-2). The nearest assembly closes every loop and
+        /// puts the bodies as near their poses as the loops allow (least squares, Gauss–Newton);
+        /// how far it moved each body is reported (translation in the file's length unit,
+        /// rotation in its angle unit) beside how far the rounding alone can move it (to first
+        /// order, every parameter changed by --rounding). A body moved further is refused:
+        /// the values are no rounded configuration of this mechanism.
+        #[arg(long, requires = "study")]
+        nearest: bool,
+        /// With --nearest: how far each printed Study parameter may lie from the exact one, half
+        /// a unit of its last printed place (0.005 for two decimals, 0.0005 for three).
+        #[arg(long, value_name = "HALF_UNIT", default_value_t = kinsyn::manipulator::PRINTED_ROUNDING)]
+        rounding: f64,
         /// A moving body of a kinsyn-manipulator/2 file to analyse instead of the end-effector
         /// (its pose is then the one --pose, --from and P refer to).
         #[arg(long, value_name = "NAME")]

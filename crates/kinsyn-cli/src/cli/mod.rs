@@ -185,6 +185,8 @@ fn execute(command: Command) -> Result<String, CliError> {
             body,
             relative_to,
             study,
+            nearest,
+            rounding,
             seed,
             json: as_json,
             ..
@@ -196,6 +198,7 @@ fn execute(command: Command) -> Result<String, CliError> {
                 from: from.as_deref(),
                 body: body.as_deref(),
                 study: &study,
+                nearest: nearest.then_some(rounding),
                 relative_to: relative_to.as_deref(),
             },
             lock.as_deref(),

@@ -44,7 +44,7 @@ pub use polynomial::{
     FreeRevolute, InputValues, LegConstraint, LegKind, LegResidual, PositionSystem,
     PositionSystemError,
 };
-pub use poses::PRINTED_STUDY_TOLERANCE;
+pub use poses::{NearestPoses, PRINTED_ROUNDING, PRINTED_STUDY_TOLERANCE, PoseChange};
 pub use position::{CONTINUATION_TRIES, PlatformGoal, Position, PositionRequest};
 pub use request::{ContinuationFailure, PositionError, RequestError};
 pub use singularity::{

@@ -11,9 +11,14 @@
 //! constraint manifold by about 1e-2 — are refused with
 //! [`PositionError::PosesNotAssembled`], which carries the residual where the solver stopped.
 
+use super::position::LARGEST_JOINT_STEP;
+use super::{CONTINUATION_TRIES, ContinuationFailure};
 use super::{Manipulator, ManipulatorError, PositionError, RequestError};
 use crate::chain::Displacement;
-use crate::mechanism::{ASSEMBLY_TOLERANCE, Goal, MechanismError, compose, exp, inverse, log};
+use crate::mechanism::{
+    ASSEMBLY_TOLERANCE, AssemblySettings, Goal, MechanismError, compose, exp, inverse, log,
+    rotation_log,
+};
 use crate::screw::Twist;
 use crate::spatial::study::{self, StudyParameters};
 
@@ -24,6 +29,39 @@ use crate::spatial::study::{self, StudyParameters};
 /// `0.01 (1/|y| + 1/|x|)`: below 2e-2 whenever `|x|, |y| ≥ 1`, the case of every row of the
 /// table. Exact parameters pass [`study::QUADRIC_TOLERANCE`].
 pub const PRINTED_STUDY_TOLERANCE: f64 = 2e-2;
+
+/// The rounding of parameters printed to two decimals: each lies within half a unit of the
+/// last printed place, 0.005, of the value printed (paper 002 Table 1). The default of
+/// [`Manipulator::nearest_study`]'s bound.
+pub const PRINTED_ROUNDING: f64 = 5e-3;
+
+/// How far the nearest configuration puts one moving body from the pose asked for, and (for
+/// rounded data) how far the rounding alone could have moved it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PoseChange {
+    /// The body, an index into [`Manipulator::bodies`].
+    pub body: usize,
+    /// The distance between its frame's origin and the one asked for (the description's length
+    /// unit).
+    pub translation: f64,
+    /// The angle of the rotation between its frame and the one asked for (radians).
+    pub rotation: f64,
+    /// The largest `translation` the rounding explains (first order, [`Manipulator::study_rounding_bounds`]);
+    /// infinite when no bound applies.
+    pub translation_bound: f64,
+    /// The largest `rotation` the rounding explains (radians); infinite when no bound applies.
+    pub rotation_bound: f64,
+}
+
+/// The assembled configuration nearest to poses that may lie off the constraint set
+/// ([`Manipulator::nearest_poses`], [`Manipulator::nearest_study`]).
+#[derive(Debug, Clone, PartialEq)]
+pub struct NearestPoses {
+    /// Its joint values: every loop closed.
+    pub q: Vec<f64>,
+    /// How far it puts each body asked for from its pose, in the order asked.
+    pub changes: Vec<PoseChange>,
+}
 
 impl Manipulator {
     /// Parses Study parameters written `x0:x1:x2:x3:y0:y1:y2:y3` (paper 004 eqs. 4–7, any
@@ -105,22 +143,7 @@ impl Manipulator {
             .iter()
             .map(|&(k, _)| self.body_frame(k, start))
             .collect();
-        let goal_at = |t: f64| {
-            Goal::All(
-                frames
-                    .iter()
-                    .zip(&start_frames)
-                    .map(|(&(k, target), from)| {
-                        let screw = log(&compose(&target, &inverse(from))).to_vector() * t;
-                        let frame = compose(&exp(&Twist::from_vector(&screw)), from);
-                        Goal::Pose {
-                            body: self.bodies[k].body,
-                            displacement: compose(&frame, &inverse(&self.bodies[k].frame)),
-                        }
-                    })
-                    .collect(),
-            )
-        };
+        let goal_at = |t: f64| self.poses_goal(frames, &start_frames, t);
         let (q, t) =
             match self.continue_along(start, &unlocked, |t, q| (q.to_vec(), Some(goal_at(t)))) {
                 Ok((q, _)) => return Ok(q),
@@ -140,6 +163,184 @@ impl Manipulator {
             }
             Err(e) => Err(e.into()),
         }
+    }
+
+    /// The goal of the bodies' frames a fraction `t` of the way from `from` to the `frames`
+    /// asked for, each along the screw between the two poses; a body's pose in the mechanism is
+    /// its displacement from its reference, `frame ∘ reference_frame⁻¹`.
+    fn poses_goal(&self, frames: &[(usize, Displacement)], from: &[Displacement], t: f64) -> Goal {
+        Goal::All(
+            frames
+                .iter()
+                .zip(from)
+                .map(|(&(k, target), from)| {
+                    let screw = log(&compose(&target, &inverse(from))).to_vector() * t;
+                    let frame = compose(&exp(&Twist::from_vector(&screw)), from);
+                    Goal::Pose {
+                        body: self.bodies[k].body,
+                        displacement: compose(&frame, &inverse(&self.bodies[k].frame)),
+                    }
+                })
+                .collect(),
+        )
+    }
+
+    /// The assembled configuration nearest to the frames asked for (index into
+    /// [`Manipulator::bodies`], frame pose in the ground frame), which need not be assemblable:
+    /// every loop closed, and the bodies' frames as near the poses as the loops allow (least
+    /// squares of the dimensionless pose errors, rotations in radians and lengths over the
+    /// mechanism's characteristic length; [`crate::mechanism::Mechanism::assemble_nearest`]).
+    /// Reached by continuation from `start`: the frames asked for are approached along the
+    /// screws from the start's, in steps that halve when one fails or jumps. Each
+    /// [`PoseChange`] has infinite bounds (see [`Manipulator::nearest_study`] for rounded data).
+    ///
+    /// # Errors
+    /// [`ManipulatorError::Position`] with [`PositionError::NotReached`] when the continuation
+    /// stops (a step that cannot be made small enough, or too many steps).
+    pub fn nearest_poses(
+        &self,
+        start: &[f64],
+        frames: &[(usize, Displacement)],
+    ) -> Result<NearestPoses, ManipulatorError> {
+        let m = &self.mechanism;
+        let unlocked = vec![false; start.len()];
+        let start_frames: Vec<Displacement> = frames
+            .iter()
+            .map(|&(k, _)| self.body_frame(k, start))
+            .collect();
+        let settings = AssemblySettings::default();
+        let mut q = start.to_vec();
+        let (mut t, mut dt) = (0.0_f64, 0.25_f64);
+        let mut tries = 0;
+        while t < 1.0 {
+            tries += 1;
+            if tries > CONTINUATION_TRIES {
+                return Err(
+                    PositionError::NotReached(ContinuationFailure::TooManySteps { done: t }).into(),
+                );
+            }
+            let next = (t + dt).min(1.0);
+            let goal = self.poses_goal(frames, &start_frames, next);
+            let solved = m.assemble_nearest(&q, &unlocked, &goal, &settings);
+            let jump = |s: &[f64]| {
+                (0..q.len())
+                    .map(|j| (s[j] - q[j]).abs() / m.unit(j))
+                    .fold(0.0, f64::max)
+            };
+            match solved {
+                Ok(s) if jump(&s) <= LARGEST_JOINT_STEP => {
+                    q = s;
+                    t = next;
+                    dt = (dt * 2.0).min(0.25);
+                }
+                other => {
+                    dt /= 2.0;
+                    if dt < 1e-6 {
+                        let why = match other {
+                            Err(e) => e.to_string(),
+                            Ok(_) => "a joint jumps between assemblies".to_string(),
+                        };
+                        return Err(PositionError::NotReached(ContinuationFailure::Stopped {
+                            done: t,
+                            why,
+                        })
+                        .into());
+                    }
+                }
+            }
+        }
+        let changes = frames
+            .iter()
+            .map(|&(k, target)| {
+                let reached = self.body_frame(k, &q);
+                PoseChange {
+                    body: k,
+                    translation: (reached.translation.vector - target.translation.vector).norm(),
+                    rotation: rotation_log(&(reached.rotation * target.rotation.inverse())).norm(),
+                    translation_bound: f64::INFINITY,
+                    rotation_bound: f64::INFINITY,
+                }
+            })
+            .collect();
+        Ok(NearestPoses { q, changes })
+    }
+
+    /// How far each moving body's frame can move when every Study parameter of `sets` (as
+    /// [`Manipulator::frames_from_study`]) changes by at most `rounding`: to first order, the
+    /// sum over the parameters of `|∂(origin)/∂s| · rounding` and `|∂(rotation)/∂s| · rounding`
+    /// (central differences), the worst case of the rounding box. Returns (translation in the
+    /// description's length unit, rotation in radians) per body, in body order. Body k's frame
+    /// is the composition of sets 1 … k, so its bound gathers their parameters.
+    ///
+    /// # Errors
+    /// As [`Manipulator::frames_from_study`] (the quadric is not checked here).
+    pub fn study_rounding_bounds(
+        &self,
+        sets: &[StudyParameters],
+        rounding: f64,
+    ) -> Result<Vec<(f64, f64)>, RequestError> {
+        // Any eight numbers with x ≠ 0 give a matrix; the relative residual is at most 1.
+        let frames = |s: &[StudyParameters]| self.frames_from_study(s, 1.0);
+        frames(sets)?;
+        let h = 1e-6;
+        let mut bounds = vec![(0.0, 0.0); sets.len()];
+        for set in 0..sets.len() {
+            for c in 0..8 {
+                let (mut up, mut down) = (sets.to_vec(), sets.to_vec());
+                up[set][c] += h;
+                down[set][c] -= h;
+                let (fu, fd) = (frames(&up)?, frames(&down)?);
+                for (k, bound) in bounds.iter_mut().enumerate() {
+                    let (a, b) = (fu[k].1, fd[k].1);
+                    let dt = (a.translation.vector - b.translation.vector).norm() / (2.0 * h);
+                    let dr = rotation_log(&(a.rotation * b.rotation.inverse())).norm() / (2.0 * h);
+                    bound.0 += dt * rounding;
+                    bound.1 += dr * rounding;
+                }
+            }
+        }
+        Ok(bounds)
+    }
+
+    /// The assembled configuration nearest to the poses of rounded Study parameters (as
+    /// [`Manipulator::frames_from_study`], one set per moving body in series order, each on the
+    /// quadric within `tolerance`), accepted only when no body moves further than rounding
+    /// each parameter by `rounding` explains ([`Manipulator::study_rounding_bounds`];
+    /// [`PRINTED_ROUNDING`] for values printed to two decimals). This is how a printed table
+    /// such as paper 002's Table 1 is checked: a row within its rounding is a configuration of
+    /// the mechanism, analysed at the nearest assembly; a row beyond it is not one.
+    ///
+    /// # Errors
+    /// As [`Manipulator::frames_from_study`] and [`Manipulator::nearest_poses`], and
+    /// [`PositionError::BeyondRounding`] for the first body moved further than the rounding
+    /// explains.
+    pub fn nearest_study(
+        &self,
+        start: &[f64],
+        sets: &[StudyParameters],
+        tolerance: f64,
+        rounding: f64,
+    ) -> Result<NearestPoses, ManipulatorError> {
+        let frames = self.frames_from_study(sets, tolerance)?;
+        let bounds = self.study_rounding_bounds(sets, rounding)?;
+        let mut nearest = self.nearest_poses(start, &frames)?;
+        for change in &mut nearest.changes {
+            (change.translation_bound, change.rotation_bound) = bounds[change.body];
+            if change.translation > change.translation_bound
+                || change.rotation > change.rotation_bound
+            {
+                return Err(PositionError::BeyondRounding {
+                    body: self.bodies[change.body].name.clone(),
+                    translation: change.translation,
+                    rotation: change.rotation,
+                    translation_bound: change.translation_bound,
+                    rotation_bound: change.rotation_bound,
+                    rounding,
+                }
+                .into());
+            }
+        }
+        Ok(nearest)
     }
 
     /// [`Manipulator::frames_from_study`] then [`Manipulator::solve_poses`]: the configuration

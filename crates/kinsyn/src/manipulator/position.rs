@@ -74,7 +74,7 @@ pub struct Position {
 /// The most a joint may move in one continuation step (radians, or lengths over the
 /// mechanism's characteristic length): small enough that a step stays on the branch it starts
 /// from, since two assemblies for nearby values differ by finite joint motions.
-const LARGEST_JOINT_STEP: f64 = 0.5;
+pub(super) const LARGEST_JOINT_STEP: f64 = 0.5;
 
 /// The most continuation steps tried (kept or halved) before the path is given up: values far
 /// from the start (a slider extended a thousand lengths) would otherwise take thousands.

@@ -141,6 +141,27 @@ pub enum PositionError {
         /// The fraction of the path from the start poses done.
         done: f64,
     },
+    /// The nearest configuration to poses given by rounded data
+    /// ([`super::Manipulator::nearest_study`]) moves a body further than the rounding can:
+    /// the data are no rounded configuration of this mechanism (another reading of the
+    /// mechanism, or a misprint).
+    #[error(
+        "the nearest assembly moves {body:?} by {translation:.3e} (length) and {rotation:.3e} rad, more than rounding the parameters by {rounding} explains ({translation_bound:.3e} and {rotation_bound:.3e} rad): no rounded configuration of this mechanism"
+    )]
+    BeyondRounding {
+        /// The body moved too far.
+        body: String,
+        /// How far its frame's origin moved (the description's length unit).
+        translation: f64,
+        /// By how much its frame turned (radians).
+        rotation: f64,
+        /// The most its origin can move when each parameter changes by the rounding.
+        translation_bound: f64,
+        /// The most it can turn when each parameter changes by the rounding (radians).
+        rotation_bound: f64,
+        /// The half unit of the last printed place of each parameter.
+        rounding: f64,
+    },
 }
 
 /// Where a continuation stopped.

@@ -350,6 +350,86 @@ impl Mechanism {
         })
     }
 
+    /// The assembly nearest to a goal that may lie off the constraint set: joint values that
+    /// close every loop **exactly** (within `settings.tolerance`) and meet `goal` in the
+    /// least-squares sense, the sum of squares of its dimensionless errors (radians, lengths
+    /// over [`Mechanism::scale`]) smallest among the assemblies near `q`. This is the projection
+    /// of rounded data (e.g. Study parameters printed to two decimals, paper 002 Table 1) onto
+    /// the constraint set; when the goal can be met, the result is [`Mechanism::assemble_to`]'s.
+    ///
+    /// Gauss–Newton on the constrained problem: at each step the loops' linearised equations
+    /// `C Δ = ε` are met by their least-norm solution `Δ₀ = C⁺ ε`, and the goal's `G Δ ≈ e` in
+    /// least squares over the rest, `Δ = Δ₀ + N z`, `N` a basis of the null space of `C`
+    /// (`z = (G N)⁺ (e − G Δ₀)`). It stops when a step is below `settings.tolerance`
+    /// (dimensionless) and the loops are closed.
+    ///
+    /// # Errors
+    /// [`MechanismError::NotAssembled`] when the loops are not closed within
+    /// `settings.max_steps` steps or the steps do not settle.
+    pub fn assemble_nearest(
+        &self,
+        q: &[f64],
+        locked: &[bool],
+        goal: &Goal,
+        settings: &AssemblySettings,
+    ) -> Result<Vec<f64>, MechanismError> {
+        let free = self.free(locked);
+        let mut q = q.to_vec();
+        let goal_rows = goal.equations();
+        let mut closure = f64::INFINITY;
+        for _ in 0..settings.max_steps {
+            let (rows, residual) = self.equations(&q, Some(goal));
+            let loops = rows.nrows() - goal_rows;
+            let a = DMatrix::from_fn(rows.nrows(), free.len(), |r, k| rows[(r, free[k])]);
+            let c = a.rows(0, loops).into_owned();
+            let g = a.rows(loops, goal_rows).into_owned();
+            let ec = residual.rows(0, loops).into_owned();
+            let eg = residual.rows(loops, goal_rows).into_owned();
+            closure = ec.amax();
+            let (base, null) = if loops == 0 {
+                (
+                    DVector::zeros(free.len()),
+                    DMatrix::identity(free.len(), free.len()),
+                )
+            } else {
+                let d = linalg::svd(&c);
+                let top = d.singular_values.first().copied().unwrap_or(0.0);
+                let cutoff = linalg::DEFAULT_RANK_TOLERANCE * top;
+                let fit = linalg::least_squares(&c, &ec, cutoff);
+                let (null, _) = linalg::nullspace(&c, linalg::DEFAULT_RANK_TOLERANCE);
+                (fit.x, null)
+            };
+            let mut step = base.clone();
+            if null.ncols() > 0 && goal_rows > 0 {
+                let gn = &g * &null;
+                let top = linalg::svd(&gn)
+                    .singular_values
+                    .first()
+                    .copied()
+                    .unwrap_or(0.0);
+                let rest = linalg::least_squares(
+                    &gn,
+                    &(eg - &g * &base),
+                    linalg::DEFAULT_RANK_TOLERANCE * top,
+                );
+                step += &null * rest.x;
+            }
+            clamp_step(&mut step);
+            let size = step.amax();
+            q = self.stepped(&q, &free, &step);
+            if !q.iter().all(|x| x.is_finite()) {
+                break;
+            }
+            if size < settings.tolerance && closure < settings.tolerance {
+                return Ok(q);
+            }
+        }
+        Err(MechanismError::NotAssembled {
+            residual: closure,
+            iterations: settings.max_steps,
+        })
+    }
+
     /// The joint values `q` moved by the dimensionless Newton `step` of the `free` joints (the
     /// step is subtracted: it is the change that cancels the residual's linear part).
     fn stepped(&self, q: &[f64], free: &[usize], step: &DVector<f64>) -> Vec<f64> {

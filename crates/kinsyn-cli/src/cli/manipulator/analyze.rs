@@ -3,6 +3,7 @@
 
 use super::{clean, leg_warnings, load_with_body, warn};
 use crate::cli::{CliError, json};
+use kinsyn::manipulator::file::AngleUnit;
 use kinsyn::manipulator::{
     Analysis, ContinuationFailure, Manipulator, ManipulatorError, PRINTED_STUDY_TOLERANCE,
     PositionError, PositionRequest, RowKind, rank_text,
@@ -58,6 +59,9 @@ pub struct Placement<'a> {
     pub body: Option<&'a str>,
     /// `--study`: one set of Study parameters per moving body, in series order from the ground.
     pub study: &'a [String],
+    /// `--nearest` with its `--rounding`: analyse the assembly nearest to the `--study` poses,
+    /// refused when a body moves further than rounding each parameter by this explains.
+    pub nearest: Option<f64>,
     /// `--relative-to`: a moving body from which the analysed body's motion is also reported.
     pub relative_to: Option<&'a str>,
 }
@@ -168,33 +172,7 @@ pub fn analyse_placed(
     let mut study_lines = String::new();
     let mut study_json = Vec::new();
     let (q, steps, continuous) = if !placement.study.is_empty() {
-        let sets = placement
-            .study
-            .iter()
-            .map(|t| {
-                Manipulator::parse_study(t).map_err(|e| CliError::Input(format!("--study: {e}")))
-            })
-            .collect::<Result<Vec<_>, _>>()?;
-        for (body, s) in m.bodies().iter().zip(&sets) {
-            let residual = kinsyn::spatial::study::relative_quadric_residual(s);
-            let _ = writeln!(
-                study_lines,
-                "--study {:?}: relative Study quadric residual |x·y|/(|x| |y|) = {residual:.3e} (tolerance {:.0e}, values printed to two decimals)",
-                body.name, PRINTED_STUDY_TOLERANCE
-            );
-            study_json.push(serde_json::json!({
-                "body": body.name,
-                "parameters": s,
-                "relative_quadric_residual": residual,
-                "tolerance": PRINTED_STUDY_TOLERANCE,
-            }));
-        }
-        let frames = m
-            .frames_from_study(&sets, PRINTED_STUDY_TOLERANCE)
-            .map_err(|e| CliError::Input(format!("--study: {e}")))?;
-        let q = m
-            .solve_poses(&start, &frames)
-            .map_err(|e| CliError::Input(format!("--study: {e}")))?;
+        let q = study_configuration(m, placement, &start, &mut study_lines, &mut study_json)?;
         (q, 0, true)
     } else if request.inputs.is_empty() && request.platform.is_none() {
         (start, 0, true)
@@ -223,6 +201,118 @@ pub fn analyse_placed(
         study_lines,
         study_json,
     })
+}
+
+/// `--study` (with `--nearest`): the configuration of the Study poses reached from `start`,
+/// with the report's lines and JSON entries.
+fn study_configuration(
+    m: &Manipulator,
+    placement: &Placement<'_>,
+    start: &[f64],
+    study_lines: &mut String,
+    study_json: &mut Vec<serde_json::Value>,
+) -> Result<Vec<f64>, CliError> {
+    let sets = placement
+        .study
+        .iter()
+        .map(|t| Manipulator::parse_study(t).map_err(|e| CliError::Input(format!("--study: {e}"))))
+        .collect::<Result<Vec<_>, _>>()?;
+    for (body, s) in m.bodies().iter().zip(&sets) {
+        let residual = kinsyn::spatial::study::relative_quadric_residual(s);
+        let _ = writeln!(
+            study_lines,
+            "--study {:?}: relative Study quadric residual |x·y|/(|x| |y|) = {residual:.3e} (tolerance {:.0e}, values printed to two decimals)",
+            body.name, PRINTED_STUDY_TOLERANCE
+        );
+        study_json.push(serde_json::json!({
+            "body": body.name,
+            "parameters": s,
+            "relative_quadric_residual": residual,
+            "tolerance": PRINTED_STUDY_TOLERANCE,
+        }));
+    }
+    if let Some(rounding) = placement.nearest {
+        nearest_study(m, start, &sets, rounding, study_lines, study_json)
+    } else {
+        let frames = m
+            .frames_from_study(&sets, PRINTED_STUDY_TOLERANCE)
+            .map_err(|e| CliError::Input(format!("--study: {e}")))?;
+        let q = m.solve_poses(start, &frames).map_err(|e| {
+            CliError::Input(format!(
+                "--study: {e} (--nearest takes the nearest assembly of rounded values)"
+            ))
+        })?;
+        Ok(q)
+    }
+}
+
+/// `--study … --nearest`: the assembly nearest to the Study poses, with a line and a JSON
+/// entry per body on how far it moved (the file's units) and how far the rounding explains;
+/// refused in one line when a body moved further.
+fn nearest_study(
+    m: &Manipulator,
+    start: &[f64],
+    sets: &[kinsyn::spatial::study::StudyParameters],
+    rounding: f64,
+    lines: &mut String,
+    entries: &mut [serde_json::Value],
+) -> Result<Vec<f64>, CliError> {
+    if !(rounding.is_finite() && rounding > 0.0) {
+        return Err(CliError::Input(format!(
+            "--rounding {rounding}: give a positive half unit of the last printed place, e.g. 0.005"
+        )));
+    }
+    let units = m.units();
+    let angle = units.angle;
+    let angle_name = match angle {
+        AngleUnit::Deg => "deg",
+        AngleUnit::Rad => "rad",
+    };
+    let length = units.length.clone();
+    let nearest = match m.nearest_study(start, sets, PRINTED_STUDY_TOLERANCE, rounding) {
+        Ok(n) => n,
+        Err(ManipulatorError::Position(PositionError::BeyondRounding {
+            body,
+            translation,
+            rotation,
+            translation_bound,
+            rotation_bound,
+            rounding,
+        })) => {
+            return Err(CliError::Input(format!(
+                "--study --nearest: the nearest assembly moves {body:?} by {translation:.4} {length} and {:.4} {angle_name}, more than rounding each parameter by {rounding} explains ({translation_bound:.4} {length}, {:.4} {angle_name}): no rounded configuration of this mechanism (--rounding to allow more)",
+                angle.from_radians(rotation),
+                angle.from_radians(rotation_bound),
+            )));
+        }
+        Err(e) => return Err(CliError::Input(format!("--study --nearest: {e}"))),
+    };
+    let mut moved = Vec::new();
+    for c in &nearest.changes {
+        let name = &m.bodies()[c.body].name;
+        let _ = writeln!(
+            lines,
+            "--nearest {name:?}: moved {:.3e} {length} and {:.3e} {angle_name} from its --study pose (rounding each parameter by {rounding} explains up to {:.3e} {length} and {:.3e} {angle_name})",
+            c.translation,
+            angle.from_radians(c.rotation),
+            c.translation_bound,
+            angle.from_radians(c.rotation_bound),
+        );
+        moved.push(serde_json::json!({
+            "body": name,
+            "translation": c.translation,
+            "rotation": angle.from_radians(c.rotation),
+            "translation_bound": c.translation_bound,
+            "rotation_bound": angle.from_radians(c.rotation_bound),
+            "length_unit": length,
+            "angle_unit": angle_name,
+            "rounding": rounding,
+        }));
+    }
+    for (entry, change) in entries.iter_mut().zip(moved) {
+        entry["nearest"] = change;
+    }
+    Ok(nearest.q)
 }
 
 /// The analysed body's instantaneous motion relative to the body of `--relative-to`.
