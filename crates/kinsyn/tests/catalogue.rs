@@ -161,7 +161,7 @@ fn from_json_checks_the_format_version() {
         other => panic!("expected a format error, got {:?}", other.err()),
     }
     // Another version whose shape differs is still named as another version.
-    let future = r#"{"format": "kinsyn-catalogue/3", "chains": []}"#;
+    let future = r#"{"format": "kinsyn-catalogue/4", "chains": []}"#;
     assert!(matches!(
         Catalogue::from_json(future),
         Err(LoadError::Format { .. })
