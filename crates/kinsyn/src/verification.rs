@@ -282,7 +282,11 @@ pub fn rank_check(chain: &SerialChain, settings: &Settings, seed: u64) -> RankCh
 }
 
 /// [`rank_check`] from the Jacobians at the sampled configurations.
-fn rank_check_at(chain: &SerialChain, jacobians: &[DMatrix<f64>], settings: &Settings) -> RankCheck {
+fn rank_check_at(
+    chain: &SerialChain,
+    jacobians: &[DMatrix<f64>],
+    settings: &Settings,
+) -> RankCheck {
     let n = chain.len();
     let ranks: Vec<linalg::Rank> = jacobians
         .iter()

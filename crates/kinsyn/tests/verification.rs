@@ -187,7 +187,11 @@ fn two_guides_left_parallel_by_locks_are_one_translation() {
 
 /// σ_min/σ_max of the finite-difference Jacobian of a chain at `count` random configurations
 /// (seeded): an independent rank test, the forward kinematics differentiated numerically.
-fn finite_difference_ratios(chain: &kinsyn::chain::SerialChain, seed: u64, count: usize) -> Vec<f64> {
+fn finite_difference_ratios(
+    chain: &kinsyn::chain::SerialChain,
+    seed: u64,
+    count: usize,
+) -> Vec<f64> {
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
     (0..count)
         .map(|_| {
@@ -235,7 +239,12 @@ fn four_printed_chains_are_3t3r_in_another_reading_of_their_row() {
             "T1-055",
             "RCRPP",
             "Table 1 row 16",
-            &[("xyyzxy", false), ("xyyzxz", true), ("xyyzyx", false), ("xyyzyz", true)],
+            &[
+                ("xyyzxy", false),
+                ("xyyzxz", true),
+                ("xyyzyx", false),
+                ("xyyzyz", true),
+            ],
             "xyyzxz",
         ),
         (
@@ -256,7 +265,12 @@ fn four_printed_chains_are_3t3r_in_another_reading_of_their_row() {
             "T1-061",
             "UPRPP",
             "Table 1 row 19",
-            &[("xyxzxy", false), ("xyxzxz", true), ("xyxzyx", false), ("xyxzyz", true)],
+            &[
+                ("xyxzxy", false),
+                ("xyxzxz", true),
+                ("xyxzyx", false),
+                ("xyxzyz", true),
+            ],
             "xyxzxz",
         ),
         (
@@ -290,9 +304,15 @@ fn four_printed_chains_are_3t3r_in_another_reading_of_their_row() {
             let chain = e.reading_chain(r, VERIFICATION_SEED).unwrap();
             for ratio in finite_difference_ratios(&chain, 7, 3) {
                 if is_3t3r {
-                    assert!(ratio > 1e-4, "{id} {a}: finite differences give σ6/σ1 = {ratio}");
+                    assert!(
+                        ratio > 1e-4,
+                        "{id} {a}: finite differences give σ6/σ1 = {ratio}"
+                    );
                 } else {
-                    assert!(ratio < 1e-8, "{id} {a}: finite differences give σ6/σ1 = {ratio}");
+                    assert!(
+                        ratio < 1e-8,
+                        "{id} {a}: finite differences give σ6/σ1 = {ratio}"
+                    );
                 }
             }
         }
@@ -306,8 +326,15 @@ fn four_printed_chains_are_3t3r_in_another_reading_of_their_row() {
         assert!(v.gap > 1e-3 && v.gap < 1.0, "{id}: gap {}", v.gap);
         let sv = &v.singular_values;
         assert_eq!(sv.len(), 6);
-        assert!((sv[5] / sv[0] - v.gap).abs() < 1e-4 * v.gap.max(1e-3), "{id}: {sv:?}");
-        assert!(e.reading_note().contains("the first 3T3R one"), "{}", e.reading_note());
+        assert!(
+            (sv[5] / sv[0] - v.gap).abs() < 1e-4 * v.gap.max(1e-3),
+            "{id}: {sv:?}"
+        );
+        assert!(
+            e.reading_note().contains("the first 3T3R one"),
+            "{}",
+            e.reading_note()
+        );
     }
 }
 
@@ -329,7 +356,8 @@ fn readings_by_brute_force(notation: &str) -> BTreeSet<(String, String)> {
                     }
                 }
                 counts.sort_unstable_by(|a, b| b.cmp(a));
-                if counts != table.axis_counts || !rules::violations(&word, &axes, &options).is_empty()
+                if counts != table.axis_counts
+                    || !rules::violations(&word, &axes, &options).is_empty()
                 {
                     continue;
                 }
@@ -367,7 +395,10 @@ fn rejected_entries_have_no_3t3r_reading() {
         let v = e.verification.as_ref().unwrap();
         if v.is_3t3r {
             // The reading kept is the first 3T3R one.
-            let first = e.readings.iter().position(|r| r.check.as_ref().unwrap().is_3t3r);
+            let first = e
+                .readings
+                .iter()
+                .position(|r| r.check.as_ref().unwrap().is_3t3r);
             assert_eq!(first, Some(e.reading - 1), "{}", e.id);
             continue;
         }
@@ -375,7 +406,12 @@ fn rejected_entries_have_no_3t3r_reading() {
         assert_eq!(e.reading, 1, "{}", e.id);
         for r in &e.readings {
             let check = r.check.as_ref().unwrap();
-            assert!(!check.is_3t3r && check.dropped < 1e-12, "{} {}: {check:?}", e.id, r.axes);
+            assert!(
+                !check.is_3t3r && check.dropped < 1e-12,
+                "{} {}: {check:?}",
+                e.id,
+                r.axes
+            );
             let chain = e.reading_chain(r, VERIFICATION_SEED).unwrap();
             for ratio in finite_difference_ratios(&chain, 11, 3) {
                 assert!(
@@ -410,7 +446,11 @@ fn reading_verdicts_do_not_depend_on_the_seed() {
                 let want = r.check.as_ref().unwrap().is_3t3r;
                 let chain = e.reading_chain(r, seed).unwrap();
                 let got = rank_check(&chain, &settings, e.sample_seed(seed));
-                assert_eq!(got.is_3t3r, want, "{} {} seed {seed}: {got:?}", e.id, r.axes);
+                assert_eq!(
+                    got.is_3t3r, want,
+                    "{} {} seed {seed}: {got:?}",
+                    e.id, r.axes
+                );
                 if got.rank == 6 {
                     smallest_kept = smallest_kept.min(got.gap);
                 } else {
@@ -430,7 +470,9 @@ fn entries_verified_with_another_reading_are_documented() {
         "/../../docs/deviations.md"
     ))
     .unwrap();
-    let begin = doc.find("<!-- other-reading:begin -->").expect("begin marker");
+    let begin = doc
+        .find("<!-- other-reading:begin -->")
+        .expect("begin marker");
     let end = doc.find("<!-- other-reading:end -->").expect("end marker");
     let documented: Vec<&str> = doc[begin..end]
         .lines()
