@@ -173,7 +173,8 @@ fn from_json_checks_the_format_version() {
     let err = Catalogue::from_json(&damaged).unwrap_err();
     assert!(matches!(err, LoadError::Parse(_)), "{err}");
     assert!(
-        err.to_string().contains("entries[0].readings[0].check.rank"),
+        err.to_string()
+            .contains("entries[0].readings[0].check.rank"),
         "{err}"
     );
     let err = Catalogue::from_json(&COMMITTED_JSON[..1000]).unwrap_err();

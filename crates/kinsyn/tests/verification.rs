@@ -185,8 +185,8 @@ fn two_guides_left_parallel_by_locks_are_one_translation() {
     );
 }
 
-/// σ_min/σ_max of the finite-difference Jacobian of a chain at `count` random configurations
-/// (seeded): an independent rank test, the forward kinematics differentiated numerically.
+// σ_min/σ_max of the finite-difference Jacobian of a chain at `count` random configurations
+// (seeded): an independent rank test, the forward kinematics differentiated numerically.
 fn finite_difference_ratios(
     chain: &kinsyn::chain::SerialChain,
     seed: u64,
@@ -202,39 +202,51 @@ fn finite_difference_ratios(
         .collect()
 }
 
-/// Paper 000, Appendix Table 1 rows 16, 18, 19 and Table 2 row 8 (sub-row 3) print RCRPP,
-/// UPPRP, UPRPP and UPPRR. The first axis assignment the enumeration meets for each is rank 5,
-/// and they were once rejected with "no reading of the printed name is 3T3R"; other
-/// assignments of the same row, which the rules of §2 read as the same letters and marks, are
-/// 3T3R, and the entry must keep the first of them.
-///
-/// Hand derivation. In Table 1 the three revolutes lie along x, y, z, so their rotation parts
-/// are independent at a generic configuration and the Jacobian `[ω_R 0; v_R d_P]` has rank
-/// 3 + the rank of the three guide directions `d_P`, each carried by the revolutes before it.
-/// With R_u(θ) a rotation about u and the rotation of the revolutes before the first guide
-/// taken away:
-/// - RCRPP, word RPRRPP (row 16): R1 x, C = P2 R3 along y, R4 z; P5 ∉ {z} (no C with R4), P6 ≠
-///   P5. Guides y, R_y R_z a5, R_y R_z a6. For {a5, a6} = {x, y} the last two span R_y(xy plane),
-///   which holds y: rank 5. For (x, z): det[y, c4 R_y x + s4 y, R_y z] = ±c4 ≠ 0; for (y, z):
-///   ±s4 ≠ 0: rank 6. Guides in lexicographic order: xyyzxy ✗, xyyzxz ✓, xyyzyx ✗, xyyzyz ✓.
-/// - UPPRP, word RRPPRP (row 18): U = R1 R2 along x, y, R5 z; P3 ∈ {x, z}, P4 ∉ {P3, z}, P6 ∉
-///   {z}. Guides a3, a4, R_z a6: with a3 = x, a4 = y all three lie in the xy plane (rank 5);
-///   with a3 = z, a4 ∈ {x, y}, R_z a6 is not along a4 at a generic θ5 (rank 6): xyxyzx ✗,
-///   xyxyzy ✗, xyzxzx ✓, xyzxzy ✓, xyzyzx ✓, xyzyzy ✓.
-/// - UPRPP, word RRPRPP (row 19): U = R1 R2 along x, y, P3 along x (not y or z: no C), R4 z,
-///   P5 ∉ {z}, P6 ≠ P5. Guides x, R_z a5, R_z a6: {a5, a6} = {x, y} stays in the xy plane
-///   (rank 5); with a6 = z rank 6: xyxzxy ✗, xyxzxz ✓, xyxzyx ✗, xyxzyz ✓.
-/// - UPPRaRa, word RRPPRR (Table 2 row 8, R5 ∥ R6 along z): the difference of the two parallel
-///   twists is a translation (p5 − p6) × ω5, normal to z and turning with θ5, so the rank is
-///   6 exactly when a3, a4 and that translation (in the xy plane after the U) are independent:
-///   P3 ∈ {x, z}, P4 ∉ {P3, z}; xyxyzz ✗ (x, y and the translation all in the xy plane),
-///   xyzxzz ✓, xyzyzz ✓.
-///
-/// Each verdict is confirmed by the finite-difference Jacobian: σ6/σ1 above 1e-4 for the 3T3R
-/// readings, below 1e-8 (round-off) for the others.
+// Paper 000, Appendix Table 1 rows 16, 18, 19 and Table 2 row 8 (sub-row 3) print RCRPP,
+// UPPRP, UPRPP and UPPRR. The first axis assignment the enumeration meets for each is rank 5,
+// and they were once rejected with "no reading of the printed name is 3T3R"; other
+// assignments of the same row, which the rules of §2 read as the same letters and marks, are
+// 3T3R, and the entry must keep the first of them.
+//
+// Hand derivation. In Table 1 the three revolutes lie along x, y, z, so their rotation parts
+// are independent at a generic configuration and the Jacobian `[ω_R 0; v_R d_P]` has rank
+// 3 + the rank of the three guide directions `d_P`, each carried by the revolutes before it.
+// With R_u(θ) a rotation about u and the rotation of the revolutes before the first guide
+// taken away:
+// - RCRPP, word RPRRPP (row 16): R1 x, C = P2 R3 along y, R4 z; P5 ∉ {z} (no C with R4), P6 ≠
+//   P5. Guides y, R_y R_z a5, R_y R_z a6. For {a5, a6} = {x, y} the last two span R_y(xy plane),
+//   which holds y: rank 5. For (x, z): det[y, c4 R_y x + s4 y, R_y z] = ±c4 ≠ 0; for (y, z):
+//   ±s4 ≠ 0: rank 6. Guides in lexicographic order: xyyzxy ✗, xyyzxz ✓, xyyzyx ✗, xyyzyz ✓.
+// - UPPRP, word RRPPRP (row 18): U = R1 R2 along x, y, R5 z; P3 ∈ {x, z}, P4 ∉ {P3, z}, P6 ∉
+//   {z}. Guides a3, a4, R_z a6: with a3 = x, a4 = y all three lie in the xy plane (rank 5);
+//   with a3 = z, a4 ∈ {x, y}, R_z a6 is not along a4 at a generic θ5 (rank 6): xyxyzx ✗,
+//   xyxyzy ✗, xyzxzx ✓, xyzxzy ✓, xyzyzx ✓, xyzyzy ✓.
+// - UPRPP, word RRPRPP (row 19): U = R1 R2 along x, y, P3 along x (not y or z: no C), R4 z,
+//   P5 ∉ {z}, P6 ≠ P5. Guides x, R_z a5, R_z a6: {a5, a6} = {x, y} stays in the xy plane
+//   (rank 5); with a6 = z rank 6: xyxzxy ✗, xyxzxz ✓, xyxzyx ✗, xyxzyz ✓.
+// - UPPRaRa, word RRPPRR (Table 2 row 8, R5 ∥ R6 along z): the difference of the two parallel
+//   twists is a translation (p5 − p6) × ω5, normal to z and turning with θ5, so the rank is
+//   6 exactly when a3, a4 and that translation (in the xy plane after the U) are independent:
+//   P3 ∈ {x, z}, P4 ∉ {P3, z}; xyxyzz ✗ (x, y and the translation all in the xy plane),
+//   xyzxzz ✓, xyzyzz ✓.
+//
+// Each verdict is confirmed by the finite-difference Jacobian: σ6/σ1 above 1e-4 for the 3T3R
+// readings, below 1e-8 (round-off) for the others.
 #[test]
+#[expect(
+    clippy::too_many_lines,
+    reason = "four hand-derived cases written out as data, each checked the same way"
+)]
 fn four_printed_chains_are_3t3r_in_another_reading_of_their_row() {
-    let cases: [(&str, &str, &str, &[(&str, bool)], &str); 4] = [
+    // (id, notation, the paper's row, the row's readings with their hand verdicts, the reading kept)
+    type Case = (
+        &'static str,
+        &'static str,
+        &'static str,
+        &'static [(&'static str, bool)],
+        &'static str,
+    );
+    let cases: [Case; 4] = [
         (
             "T1-055",
             "RCRPP",
@@ -338,9 +350,9 @@ fn four_printed_chains_are_3t3r_in_another_reading_of_their_row() {
     }
 }
 
-/// Every axis assignment the rules of §2 read as an entry's letters and marks, found
-/// independently of the enumeration's order and deduplication: every canonical assignment of
-/// every row's word whose revolutes follow the table's pattern and that breaks no rule.
+// Every axis assignment the rules of §2 read as an entry's letters and marks, found
+// independently of the enumeration's order and deduplication: every canonical assignment of
+// every row's word whose revolutes follow the table's pattern and that breaks no rule.
 fn readings_by_brute_force(notation: &str) -> BTreeSet<(String, String)> {
     use kinsyn::synthesis::{TABLES, all_assignments, parse_word, rules};
     let options = Options::default();
@@ -376,10 +388,10 @@ fn readings_by_brute_force(notation: &str) -> BTreeSet<(String, String)> {
     out
 }
 
-/// A chain is rejected only when no reading of its notation is 3T3R: for every entry the
-/// readings are all the assignments the rules admit (checked by brute force over all axis
-/// words), and for a rejected entry each of them is rank deficient by the code's SVD and by
-/// the finite-difference Jacobian (σ6/σ1 below 1e-8 at three random configurations).
+// A chain is rejected only when no reading of its notation is 3T3R: for every entry the
+// readings are all the assignments the rules admit (checked by brute force over all axis
+// words), and for a rejected entry each of them is rank deficient by the code's SVD and by
+// the finite-difference Jacobian (σ6/σ1 below 1e-8 at three random configurations).
 #[test]
 fn rejected_entries_have_no_3t3r_reading() {
     let cat = catalogue();
@@ -427,13 +439,13 @@ fn rejected_entries_have_no_3t3r_reading() {
     assert!(rejected > 0);
 }
 
-/// The verdict of every reading does not depend on the seed: ten other seeds of the geometry
-/// and of the sampled configurations give the same 3T3R or not for every reading of every
-/// entry. The two kinds stay apart on either side of the tolerance (1e-9 of the largest
-/// singular value): a rank-deficient reading drops its sixth value to round-off (below 1e-12),
-/// and the smallest kept σ6/σ1 of a 3T3R reading stays above 1e-8 (seed 3 puts a sample of
-/// T7-019 URS near a singular configuration: 2.3e-8; over 100 seeds no verdict changes and
-/// nothing comes closer).
+// The verdict of every reading does not depend on the seed: ten other seeds of the geometry
+// and of the sampled configurations give the same 3T3R or not for every reading of every
+// entry. The two kinds stay apart on either side of the tolerance (1e-9 of the largest
+// singular value): a rank-deficient reading drops its sixth value to round-off (below 1e-12),
+// and the smallest kept σ6/σ1 of a 3T3R reading stays above 1e-8 (seed 3 puts a sample of
+// T7-019 URS near a singular configuration: 2.3e-8; over 100 seeds no verdict changes and
+// nothing comes closer).
 #[test]
 fn reading_verdicts_do_not_depend_on_the_seed() {
     use kinsyn::verification::{Settings, rank_check};
