@@ -239,23 +239,55 @@ pub fn configurations(chain: &SerialChain, settings: &Settings, seed: u64) -> Ve
     out
 }
 
-/// Verifies a chain (up to 31 joints): rank, idle joints and the patterns of all lock subsets.
+/// The rank part of a verification: is the chain's Jacobian of rank 6 at every sampled
+/// configuration, with no idle joint, and how far is that decision from the tolerance.
 ///
-/// # Complexity
-/// Exponential in the number of joints n: every one of the 2^n lock subsets is classified
-/// ([`locked_motion`]: Jacobian ranks and brackets at `settings.samples` configurations), and
-/// the minimal lock sets of each pattern are found by comparing its subsets pairwise, up to
-/// 4^n comparisons. A 6-joint leg of the catalogue has 64 subsets (about 1.7 ms,
-/// `cargo bench --bench verification`); each joint more doubles the classifications, so the
-/// 31 joints the `u32` masks allow are a bound on representation, not a practical size.
-#[must_use]
-pub fn verify(chain: &SerialChain, settings: &Settings, seed: u64) -> Verification {
+/// The decision is [`linalg::rank`] with the explicit relative tolerance
+/// `settings.rank_tolerance` (of the largest singular value); `gap` and `dropped` say how far
+/// the kept and the dropped singular values are from it, so that a near-singular case is
+/// visible in the files.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct RankCheck {
+    /// Generic rank of the chain Jacobian (the largest over the samples).
+    pub rank: usize,
+    /// Singular values at the sample where the smallest kept one is smallest (rounded to 6
+    /// significant digits; those the rank drops, round-off, written as 0).
+    pub singular_values: Vec<f64>,
+    /// The smallest kept singular value over the largest, at that sample.
+    pub gap: f64,
+    /// The largest dropped singular value over the largest, over all samples (0 below 1e-12).
+    pub dropped: f64,
+    /// Joints (1-based) whose removal does not lower the rank at any sample.
+    pub idle_joints: Vec<usize>,
+    /// Rank 6 at every sample and no idle joint.
+    pub is_3t3r: bool,
+}
+
+/// The Jacobians of `chain` at the configurations [`verify`] samples for `seed`.
+fn sampled_jacobians(chain: &SerialChain, configurations: &[Vec<f64>]) -> Vec<DMatrix<f64>> {
     let n = chain.len();
-    let configurations = configurations(chain, settings, seed);
-    let jacobians: Vec<DMatrix<f64>> = configurations
+    configurations
         .iter()
         .map(|q| DMatrix::from_column_slice(6, n, chain.jacobian(q).as_slice()))
-        .collect();
+        .collect()
+}
+
+/// The rank check of a chain alone (no lock patterns): what [`verify`] decides 3T3R by, at the
+/// same configurations for the same `seed`. Cheap (a few SVDs of 6×6 matrices), so that every
+/// reading of a catalogue entry can be checked ([`crate::catalogue::Catalogue::verify`]).
+#[must_use]
+pub fn rank_check(chain: &SerialChain, settings: &Settings, seed: u64) -> RankCheck {
+    let configurations = configurations(chain, settings, seed);
+    rank_check_at(chain, &sampled_jacobians(chain, &configurations), settings)
+}
+
+/// [`rank_check`] from the Jacobians at the sampled configurations.
+fn rank_check_at(
+    chain: &SerialChain,
+    jacobians: &[DMatrix<f64>],
+    settings: &Settings,
+) -> RankCheck {
+    let n = chain.len();
     let ranks: Vec<linalg::Rank> = jacobians
         .iter()
         .map(|j| linalg::rank(j, settings.rank_tolerance))
@@ -281,6 +313,42 @@ pub fn verify(chain: &SerialChain, settings: &Settings, seed: u64) -> Verificati
         .map(|i| i + 1)
         .collect();
     let is_3t3r = ranks.iter().all(|r| r.rank == 6) && idle_joints.is_empty();
+    RankCheck {
+        rank,
+        // Values the rank drops are round-off: written as 0 so that files carry no noise.
+        singular_values: worst
+            .singular_values
+            .iter()
+            .enumerate()
+            .map(|(k, &s)| {
+                if k < worst.rank {
+                    round_significant(s, 6)
+                } else {
+                    0.0
+                }
+            })
+            .collect(),
+        gap: round_significant(worst.gap().0, 6),
+        dropped: round_off_to_zero(ranks.iter().map(|r| r.gap().1).fold(0.0, f64::max)),
+        idle_joints,
+        is_3t3r,
+    }
+}
+
+/// Verifies a chain (up to 31 joints): rank, idle joints and the patterns of all lock subsets.
+///
+/// # Complexity
+/// Exponential in the number of joints n: every one of the 2^n lock subsets is classified
+/// ([`locked_motion`]: Jacobian ranks and brackets at `settings.samples` configurations), and
+/// the minimal lock sets of each pattern are found by comparing its subsets pairwise, up to
+/// 4^n comparisons. A 6-joint leg of the catalogue has 64 subsets (about 1.7 ms,
+/// `cargo bench --bench verification`); each joint more doubles the classifications, so the
+/// 31 joints the `u32` masks allow are a bound on representation, not a practical size.
+#[must_use]
+pub fn verify(chain: &SerialChain, settings: &Settings, seed: u64) -> Verification {
+    let n = chain.len();
+    let configurations = configurations(chain, settings, seed);
+    let check = rank_check_at(chain, &sampled_jacobians(chain, &configurations), settings);
 
     // Every lock subset, then the minimal lock sets of each pattern.
     let mut by_pattern: BTreeMap<PatternName, Vec<u32>> = BTreeMap::new();
@@ -301,24 +369,12 @@ pub fn verify(chain: &SerialChain, settings: &Settings, seed: u64) -> Verificati
         .collect();
     Verification {
         seed,
-        rank,
-        // Values the rank drops are round-off: written as 0 so that files carry no noise.
-        singular_values: worst
-            .singular_values
-            .iter()
-            .enumerate()
-            .map(|(k, &s)| {
-                if k < worst.rank {
-                    round_significant(s, 6)
-                } else {
-                    0.0
-                }
-            })
-            .collect(),
-        gap: round_significant(worst.gap().0, 6),
-        dropped: round_off_to_zero(ranks.iter().map(|r| r.gap().1).fold(0.0, f64::max)),
-        idle_joints,
-        is_3t3r,
+        rank: check.rank,
+        singular_values: check.singular_values,
+        gap: check.gap,
+        dropped: check.dropped,
+        idle_joints: check.idle_joints,
+        is_3t3r: check.is_3t3r,
         patterns,
     }
 }

@@ -161,7 +161,7 @@ fn from_json_checks_the_format_version() {
         other => panic!("expected a format error, got {:?}", other.err()),
     }
     // Another version whose shape differs is still named as another version.
-    let future = r#"{"format": "kinsyn-catalogue/3", "chains": []}"#;
+    let future = r#"{"format": "kinsyn-catalogue/4", "chains": []}"#;
     assert!(matches!(
         Catalogue::from_json(future),
         Err(LoadError::Format { .. })
@@ -173,7 +173,8 @@ fn from_json_checks_the_format_version() {
     let err = Catalogue::from_json(&damaged).unwrap_err();
     assert!(matches!(err, LoadError::Parse(_)), "{err}");
     assert!(
-        err.to_string().contains("entries[0].verification.rank"),
+        err.to_string()
+            .contains("entries[0].readings[0].check.rank"),
         "{err}"
     );
     let err = Catalogue::from_json(&COMMITTED_JSON[..1000]).unwrap_err();

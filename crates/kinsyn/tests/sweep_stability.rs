@@ -25,7 +25,7 @@ fn row(d: &Design, seed: u64) -> DesignRow {
     })
 }
 
-/// The 3-UCU with the U's two revolutes actuated (design 5760): with the second revolutes
+/// The 3-UCU with the U's two revolutes actuated (design 5865): with the second revolutes
 /// locked, the reference is where a translational branch (T3: the platform's twists have
 /// rotation parts of 1e-13) meets a branch with rotations, so walks from it gave T3 for one
 /// seed and 0T3R for three. The 3-PCRC with joints 2 and 3 actuated (design 200): with

@@ -518,8 +518,9 @@ pub(super) enum CatalogueCommand {
         #[command(flatten)]
         reading: Reading,
     },
-    /// The entries the numerical check rejects (not 3T3R), with rank, singular values and idle
-    /// joints (the table kept in docs/deviations.md).
+    /// The entries the numerical check rejects (no reading of the notation is 3T3R), with rank,
+    /// singular values, idle joints and readings tried; then the entries verified with another
+    /// reading than their first (the tables kept in docs/deviations.md).
     Rejected {
         #[command(flatten)]
         reading: Reading,

@@ -142,7 +142,7 @@ pub(super) fn catalogue(command: CatalogueCommand) -> Result<String, CliError> {
             reading,
         } => list(family.as_deref(), table, &reading, as_json),
         CatalogueCommand::Site { out, reading } => super::site::site(&out, &reading),
-        CatalogueCommand::Rejected { reading } => Ok(reading.catalogue()?.not_3t3r_markdown()),
+        CatalogueCommand::Rejected { reading } => rejected(&reading),
         CatalogueCommand::Show {
             query,
             lock,
@@ -154,6 +154,17 @@ pub(super) fn catalogue(command: CatalogueCommand) -> Result<String, CliError> {
             reading,
         } => compare(&reading, as_json),
     }
+}
+
+/// `catalogue rejected`: the entries no reading of which is 3T3R, then the entries verified
+/// with another reading than their first (the two tables kept in docs/deviations.md).
+fn rejected(reading: &Reading) -> Result<String, CliError> {
+    let cat = reading.catalogue()?;
+    Ok(format!(
+        "{}\nVerified with another reading than their first (the first axis assignment is rank deficient):\n\n{}",
+        cat.not_3t3r_markdown(),
+        cat.other_reading_markdown()
+    ))
 }
 
 /// `catalogue generate`: the catalogue files written to `out`.
@@ -424,6 +435,10 @@ fn describe(cat: &Catalogue, e: &Entry) -> String {
             (false, false) => "not printed in the Appendix",
         }
     );
+    let note = e.reading_note();
+    if !note.is_empty() {
+        let _ = writeln!(s, "reading      {note}");
+    }
     if let Some(v) = &e.verification {
         let _ = writeln!(
             s,

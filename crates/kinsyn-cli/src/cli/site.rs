@@ -275,6 +275,10 @@ fn entry_page(e: &Entry) -> Result<String, CliError> {
             }
         ),
     );
+    let note = e.reading_note();
+    if !note.is_empty() {
+        fact("reading", &escape(&note));
+    }
     let mut locks = String::new();
     if let Some(v) = &e.verification {
         fact(

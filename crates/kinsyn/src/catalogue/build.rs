@@ -2,10 +2,10 @@
 //! parallel marks) in the paper's table order becomes an entry with its provenance, and each
 //! table counts what is new to it.
 
-use super::{Catalogue, Composition, Entry, Provenance, TableCount};
+use super::{Catalogue, Composition, Entry, Provenance, Reading, TableCount};
 use crate::paper;
 use crate::synthesis::{Candidate, Options, TABLES, Table};
-use std::collections::BTreeSet;
+use std::collections::{BTreeMap, BTreeSet};
 
 /// The chains the printed Appendix names, by letters (misprints included).
 struct Printed {
@@ -96,6 +96,8 @@ impl Seen {
                     variant: c.variant,
                     variant_label: c.variant_label.clone(),
                 },
+                reading: 1,
+                readings: vec![Reading::of(c)],
                 verification: None,
             });
         }
@@ -105,6 +107,29 @@ impl Seen {
             }
         }
         (count, entries)
+    }
+}
+
+/// Gives each entry every reading of its notation: the candidates that deduplication drops
+/// (same letters and marks, another axis assignment, in this row or a later one) are kept as
+/// the entry's further readings, in enumeration order, each axis assignment of a word once.
+fn attach_readings(entries: &mut [Entry], candidates: &[Candidate]) {
+    let by_notation: BTreeMap<String, usize> = entries
+        .iter()
+        .enumerate()
+        .map(|(k, e)| (e.notation.clone(), k))
+        .collect();
+    for c in candidates {
+        let Some(&k) = by_notation.get(&c.chain.to_string()) else {
+            continue;
+        };
+        let readings = &mut entries[k].readings;
+        if !readings
+            .iter()
+            .any(|r| r.word == c.word && r.axes == c.axes)
+        {
+            readings.push(Reading::of(c));
+        }
     }
 }
 
@@ -123,6 +148,7 @@ impl Catalogue {
             counts.push(count);
             entries.extend(new);
         }
+        attach_readings(&mut entries, candidates);
         Catalogue {
             options,
             entries,

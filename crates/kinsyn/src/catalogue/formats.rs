@@ -10,6 +10,24 @@ use serde::{Deserialize, Serialize};
 use std::fmt::Write as _;
 use std::path::Path;
 
+/// How many readings an entry has and how many of them the rank check finds 3T3R: `4, all
+/// rank 5` for a rejected entry, `4, 3 are 3T3R`.
+fn readings_text(readings: &[super::Reading]) -> String {
+    let n = readings.len();
+    let good = readings.iter().filter(|r| r.is_3t3r()).count();
+    let ranks: std::collections::BTreeSet<usize> = readings
+        .iter()
+        .filter_map(|r| r.check.as_ref().map(|c| c.rank))
+        .collect();
+    if good == 0 {
+        let ranks: Vec<String> = ranks.iter().map(ToString::to_string).collect();
+        let all = if n == 1 { "" } else { "all " };
+        format!("{n}, {all}rank {}", ranks.join("/"))
+    } else {
+        format!("{n}, {good} 3T3R")
+    }
+}
+
 /// Parallel groups as text: `3 4; 5 6`.
 fn groups_text(groups: &[Vec<usize>]) -> String {
     groups
@@ -125,7 +143,7 @@ impl Catalogue {
     #[must_use]
     pub fn to_csv(&self) -> String {
         let mut s = String::from(
-            "id,notation,letters,family,word,axes,parallel_groups,p,r,c,u,s,table,row,variant,variant_label,first_with_letters,printed_in_row,printed_in_appendix,rank,gap,idle_joints,is_3t3r,group_patterns\n",
+            "id,notation,letters,family,word,axes,parallel_groups,p,r,c,u,s,table,row,variant,variant_label,first_with_letters,printed_in_row,printed_in_appendix,rank,gap,idle_joints,is_3t3r,group_patterns,reading,readings,readings_3t3r\n",
         );
         for e in &self.entries {
             let c = e.composition;
@@ -150,7 +168,7 @@ impl Catalogue {
             };
             let _ = writeln!(
                 s,
-                "{},\"{}\",{},{},{},{},\"{}\",{},{},{},{},{},{},{},{},\"{}\",{},{},{},{},{},\"{}\",{},\"{}\"",
+                "{},\"{}\",{},{},{},{},\"{}\",{},{},{},{},{},{},{},{},\"{}\",{},{},{},{},{},\"{}\",{},\"{}\",{},{},{}",
                 e.id,
                 e.notation,
                 e.letters,
@@ -174,7 +192,10 @@ impl Catalogue {
                 gap,
                 idle,
                 is_3t3r,
-                groups
+                groups,
+                e.reading,
+                e.readings.len(),
+                e.readings.iter().filter(|r| r.is_3t3r()).count()
             );
         }
         s
@@ -256,7 +277,7 @@ impl Catalogue {
     #[must_use]
     pub fn not_3t3r_markdown(&self) -> String {
         let mut s = String::from(
-            "| id | chain | from | axes | rank | singular values | idle joints | printed | same letters, 3T3R |\n|---|---|---|---|---:|---|---|---|---|\n",
+            "| id | chain | from | axes | rank | singular values | idle joints | readings | printed | same letters, 3T3R |\n|---|---|---|---|---:|---|---|---|---|---|\n",
         );
         for e in &self.entries {
             let Some(v) = e.verification.as_ref().filter(|v| !v.is_3t3r) else {
@@ -281,7 +302,7 @@ impl Catalogue {
             };
             let _ = writeln!(
                 s,
-                "| {} | {} | Table {} row {} | {} | {} | {} | {} | {printed} | {} |",
+                "| {} | {} | Table {} row {} | {} | {} | {} | {} | {} | {printed} | {} |",
                 e.id,
                 e.notation,
                 e.provenance.table,
@@ -294,11 +315,51 @@ impl Catalogue {
                     .map(ToString::to_string)
                     .collect::<Vec<_>>()
                     .join(" "),
+                readings_text(&e.readings),
                 if same.is_empty() {
                     "none".to_string()
                 } else {
                     same.join(" ")
                 }
+            );
+        }
+        s
+    }
+
+    /// The entries verified with another reading than their first (the first is rank
+    /// deficient, a later axis assignment of the same notation is 3T3R), as the Markdown table
+    /// kept in docs/deviations.md: each reading's rank and smallest/largest singular value.
+    #[must_use]
+    pub fn other_reading_markdown(&self) -> String {
+        let mut s = String::from(
+            "| id | chain | from | reading kept | from | axes | σ6/σ1 | readings (axes: rank, smallest kept σ / largest) |\n|---|---|---|---|---|---|---:|---|\n",
+        );
+        for e in &self.entries {
+            if e.reading <= 1 || e.verification.is_none() {
+                continue;
+            }
+            let kept = &e.readings[e.reading - 1];
+            let gap = kept.check.as_ref().map_or(0.0, |c| c.gap);
+            let _ = writeln!(
+                s,
+                "| {} | {} | Table {} row {} | {} of {} | Table {} row {} | {} | {gap:.3e} | {} |",
+                e.id,
+                e.notation,
+                e.provenance.table,
+                e.provenance.row,
+                e.reading,
+                e.readings.len(),
+                kept.table,
+                kept.row,
+                kept.axes,
+                e.readings
+                    .iter()
+                    .map(|r| match &r.check {
+                        Some(c) => format!("{}: {}, {:.2e}", r.axes, c.rank, c.gap),
+                        None => format!("{}: —", r.axes),
+                    })
+                    .collect::<Vec<_>>()
+                    .join("; ")
             );
         }
         s
@@ -329,12 +390,22 @@ impl Catalogue {
                 .filter(|e| e.verification.as_ref().is_some_and(|v| !v.is_3t3r))
                 .map(|e| e.id.as_str())
                 .collect();
+            let other: Vec<String> = self
+                .entries
+                .iter()
+                .filter(|e| e.reading > 1 && e.verification.is_some())
+                .map(|e| format!("{} (reading {} of {})", e.id, e.reading, e.readings.len()))
+                .collect();
+            let readings: usize = self.entries.iter().map(|e| e.readings.len()).sum();
             let _ = write!(
                 s,
-                "\n## Numerical verification\n\nEvery entry's Jacobian was evaluated at {} random configurations (seed {seed}, rank tolerance {:e} of the\nlargest singular value) on a generic geometry (`docs/verification.md`). {} entries are 3T3R with no idle joint\n(the verified catalogue, which `kinsyn query` searches); {} are not: {}.\n",
+                "\n## Numerical verification\n\nEvery entry's Jacobian was evaluated at {} random configurations (seed {seed}, rank tolerance {:e} of the\nlargest singular value) on a generic geometry (`docs/verification.md`), for every reading of its notation\n(every axis assignment the rules read as its letters and marks: {readings} readings of {} entries); an entry keeps\nits first 3T3R reading. {} entries are 3T3R with no idle joint (the verified catalogue, which `kinsyn query`\nsearches), {} of them with another reading than their first: {}. {} are not (no reading is 3T3R): {}.\n",
                 settings.samples,
                 settings.rank_tolerance,
+                self.entries.len(),
                 self.verified().count(),
+                other.len(),
+                other.join(", "),
                 rejected.len(),
                 rejected.join(", ")
             );

@@ -22,7 +22,7 @@ use crate::chain::{ChainError, SerialChain};
 use crate::notation::{Axis, AxisWord, Chain, JointKind, Primitive};
 use crate::paper::{Difference, DifferenceKind, RowComparison};
 use crate::synthesis::{self, Options};
-use crate::verification::{self, Settings, Verification};
+use crate::verification::{self, RankCheck, Settings, Verification};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 use rayon::prelude::*;
@@ -75,6 +75,84 @@ pub struct Provenance {
     pub variant_label: String,
 }
 
+/// One reading of an entry's notation: an axis assignment of a row's word that the rules of §2
+/// admit and read as the entry's letters and parallel marks ([`crate::synthesis::Candidate`]).
+///
+/// The notation does not fix the directions: `RCRPP` in Table 1 row 16 (word RPRRPP) is read
+/// from four assignments (the guides P5, P6 along x and y, x and z, y and x, or y and z once R1,
+/// the C and R4 lie along x, y, z), and a C is the same joint whether its word holds PR or RP,
+/// so other rows can read the same notation too. Deduplication keeps one entry per notation;
+/// its readings are every such assignment, in enumeration order (the entry's own row first).
+/// The numerical check runs on each, and the entry takes the first that is 3T3R
+/// ([`Catalogue::verify`]).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Reading {
+    /// Appendix table of the row the reading comes from.
+    pub table: u8,
+    /// Row of that table (the paper's numbering).
+    pub row: usize,
+    /// Variant sub-row within the row.
+    pub variant: usize,
+    /// The row's P/R word.
+    pub word: String,
+    /// Axis direction of each primitive joint at the reference configuration.
+    pub axes: AxisWord,
+    /// Parallel groups as 1-based positions in `word`.
+    pub parallel_groups: Vec<Vec<usize>>,
+    /// The rank check of this reading's chain ([`verification::rank_check`]), once
+    /// [`Catalogue::verify`] ran.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub check: Option<ReadingCheck>,
+}
+
+/// What the rank check found for one reading, in short: the full singular values are those of
+/// the entry's `verification` for the reading kept.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct ReadingCheck {
+    /// Generic rank of the chain Jacobian (the largest over the samples).
+    pub rank: usize,
+    /// The smallest kept singular value over the largest, at the worst sample (σ6/σ1 for rank
+    /// 6, σ5/σ1 for rank 5).
+    pub gap: f64,
+    /// The largest dropped singular value over the largest, over all samples (0: round-off).
+    pub dropped: f64,
+    /// Rank 6 at every sample and no idle joint.
+    pub is_3t3r: bool,
+}
+
+impl From<&RankCheck> for ReadingCheck {
+    fn from(c: &RankCheck) -> Self {
+        ReadingCheck {
+            rank: c.rank,
+            gap: c.gap,
+            dropped: c.dropped,
+            is_3t3r: c.is_3t3r,
+        }
+    }
+}
+
+impl Reading {
+    /// The reading of a candidate (its word, axes, groups and provenance).
+    #[must_use]
+    pub fn of(c: &synthesis::Candidate) -> Self {
+        Reading {
+            table: c.table,
+            row: c.row,
+            variant: c.variant,
+            word: c.word.clone(),
+            axes: c.axes.clone(),
+            parallel_groups: c.parallel_groups.clone(),
+            check: None,
+        }
+    }
+
+    /// Whether the rank check found this reading 3T3R.
+    #[must_use]
+    pub fn is_3t3r(&self) -> bool {
+        self.check.as_ref().is_some_and(|c| c.is_3t3r)
+    }
+}
+
 /// The seed of the catalogue's numerical verification (geometry and configurations); each
 /// entry derives its own from it and its notation ([`Entry::seed`]).
 pub const VERIFICATION_SEED: u64 = 2026;
@@ -82,7 +160,7 @@ pub const VERIFICATION_SEED: u64 = 2026;
 /// The version of `chains.json` that [`Catalogue::to_json`] writes and [`Catalogue::from_json`]
 /// reads (the file's `format` field). Raise it when the file's shape or meaning changes, so
 /// that a binary never reads a file it would misunderstand.
-pub const FORMAT: &str = "kinsyn-catalogue/2";
+pub const FORMAT: &str = "kinsyn-catalogue/3";
 
 /// The committed `catalogue/chains.json`, compiled in.
 ///
@@ -137,6 +215,13 @@ pub struct Entry {
     pub printed_in_row: bool,
     /// Whether its letters are printed anywhere in the Appendix.
     pub printed_in_appendix: bool,
+    /// Which of `readings` (1-based) the entry's `word`, `axes`, `parallel_groups` and
+    /// `verification` are of: the first reading that is 3T3R, or the first reading (the one
+    /// `provenance` names) when none is.
+    pub reading: usize,
+    /// Every reading of the notation the rules admit, in enumeration order, each with its rank
+    /// check once [`Catalogue::verify`] ran.
+    pub readings: Vec<Reading>,
     /// The numerical check (rank, idle joints, lock patterns), once [`Catalogue::verify`] ran.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub verification: Option<Verification>,
@@ -189,6 +274,84 @@ impl Entry {
         let (word, axes, blocks) = self.layout();
         let mut rng = ChaCha8Rng::seed_from_u64(self.seed(base_seed));
         SerialChain::from_layout(&word, &axes, &blocks, &mut rng)
+    }
+
+    /// The concrete chain of one of the entry's readings: its word and axes, the entry's joint
+    /// blocks, and the same seeded offsets as [`Entry::serial_chain`] (the seed depends on the
+    /// notation only), so that readings differ in their directions alone.
+    ///
+    /// # Errors
+    /// If the reading's word and axes do not fit the entry's notation (a corrupted entry).
+    pub fn reading_chain(
+        &self,
+        reading: &Reading,
+        base_seed: u64,
+    ) -> Result<SerialChain, ChainError> {
+        let (_, _, blocks) = self.layout();
+        let word = synthesis::parse_word(&reading.word).unwrap_or_default();
+        let axes: Vec<Axis> = reading.axes.axes().collect();
+        let mut rng = ChaCha8Rng::seed_from_u64(self.seed(base_seed));
+        SerialChain::from_layout(&word, &axes, &blocks, &mut rng)
+    }
+
+    /// Makes reading `k` (0-based) the entry's: its word, axes and parallel groups.
+    fn adopt_reading(&mut self, k: usize) {
+        if let Some(r) = self.readings.get(k) {
+            self.word.clone_from(&r.word);
+            self.axes = r.axes.clone();
+            self.parallel_groups.clone_from(&r.parallel_groups);
+            self.reading = k + 1;
+        }
+    }
+
+    /// Which reading the entry keeps and why, in words (empty before verification): "reading 2
+    /// of 4 (Table 1 row 16, axes xyyzxz), the first 3T3R one: reading 1 (xyyzxy) has rank 5".
+    #[must_use]
+    pub fn reading_note(&self) -> String {
+        let Some(kept) = self.readings.get(self.reading.saturating_sub(1)) else {
+            return String::new();
+        };
+        if kept.check.is_none() {
+            return String::new();
+        }
+        let n = self.readings.len();
+        let at = |r: &Reading| format!("Table {} row {}, axes {}", r.table, r.row, r.axes);
+        let rank = |r: &Reading| {
+            r.check.as_ref().map_or_else(String::new, |c| {
+                if c.is_3t3r {
+                    "3T3R".to_string()
+                } else if c.rank < 6 {
+                    format!("rank {}", c.rank)
+                } else {
+                    "an idle joint".to_string()
+                }
+            })
+        };
+        if !kept.is_3t3r() {
+            return format!(
+                "none of the {n} reading{} is 3T3R ({})",
+                if n == 1 { "" } else { "s" },
+                self.readings
+                    .iter()
+                    .map(|r| format!("{}: {}", r.axes, rank(r)))
+                    .collect::<Vec<_>>()
+                    .join("; ")
+            );
+        }
+        if self.reading == 1 {
+            return format!("reading 1 of {n} ({}), 3T3R", at(kept));
+        }
+        format!(
+            "reading {} of {n} ({}), the first 3T3R one: {}",
+            self.reading,
+            at(kept),
+            self.readings[..self.reading - 1]
+                .iter()
+                .enumerate()
+                .map(|(k, r)| format!("reading {} ({}) has {}", k + 1, r.axes, rank(r)))
+                .collect::<Vec<_>>()
+                .join(", ")
+        )
     }
 }
 
@@ -281,12 +444,33 @@ impl Catalogue {
 
     /// Verifies every entry numerically (in parallel): rank, idle joints and the patterns of
     /// all lock subsets ([`verification::verify`]), and counts the 3T3R entries per table.
+    ///
+    /// Every reading of an entry is rank-checked first ([`verification::rank_check`], same
+    /// geometry seed, same sample seed): the entry keeps the first reading that is 3T3R, in
+    /// enumeration order, or its first reading when none is, and the full verification (lock
+    /// patterns) runs on the reading kept. A chain is rejected only when no reading of its
+    /// notation is 3T3R.
     pub fn verify(&mut self, settings: &Settings, seed: u64) {
         self.entries.par_iter_mut().for_each(|e| {
+            let sample_seed = e.sample_seed(seed);
+            let checks: Vec<Option<ReadingCheck>> = e
+                .readings
+                .iter()
+                .map(|r| {
+                    e.reading_chain(r, seed).ok().map(|chain| {
+                        ReadingCheck::from(&verification::rank_check(&chain, settings, sample_seed))
+                    })
+                })
+                .collect();
+            for (r, check) in e.readings.iter_mut().zip(checks) {
+                r.check = check;
+            }
+            let kept = e.readings.iter().position(Reading::is_3t3r).unwrap_or(0);
+            e.adopt_reading(kept);
             e.verification = e
                 .serial_chain(seed)
                 .ok()
-                .map(|chain| verification::verify(&chain, settings, e.sample_seed(seed)));
+                .map(|chain| verification::verify(&chain, settings, sample_seed));
         });
         for count in &mut self.counts {
             count.verified_3t3r = Some(

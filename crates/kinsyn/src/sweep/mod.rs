@@ -6,7 +6,7 @@
 //! ([`crate::manipulator::build`]: `legs` legs, the default geometry) with the same primitive
 //! joints of each leg actuated. The sweep's designs are, chain by chain in catalogue order,
 //! every set of `k` actuated joints per leg for each `k` asked for (1 and 2 by default), the
-//! sets in lexicographic order: 441 chains × (C(6,1) + C(6,2)) = 9261 designs with the committed
+//! sets in lexicographic order: 446 chains × (C(6,1) + C(6,2)) = 9366 designs with the committed
 //! catalogue. A design's [`DesignRow`] is its multioperation capacity: the platform's degrees of
 //! freedom, every displacement subgroup and non-group pattern reached by locking inputs with its
 //! minimal lock sets, and how many distinct subgroups and group kinds there are (the paper's
