@@ -34,7 +34,9 @@ fn summary_reads_the_compiled_in_catalogue_from_anywhere() {
     assert!(o.status.success(), "{}", stderr(&o));
     let v: serde_json::Value = serde_json::from_str(&stdout(&o)).unwrap();
     assert_eq!(v["tables"][0]["letters_only"], 63);
-    assert_eq!(v["tables"][0]["verified_3t3r"], 54);
+    // Table 1's 63 chains less the 6 whose every reading has rank 5 (docs/deviations.md, "Chains
+    // that are not 3T3R"; each confirmed by finite differences in tests/verification.rs).
+    assert_eq!(v["tables"][0]["verified_3t3r"], 57);
     let o = kinsyn(&[
         "catalogue",
         "summary",
