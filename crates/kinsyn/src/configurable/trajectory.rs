@@ -44,11 +44,12 @@ pub fn paper_input_rates(t: f64) -> [f64; 4] {
 /// Whether the *whole* of those instants has real assemblies is a claim about the values of
 /// `sin 2t` below 0 as well, which a caller checks (the trajectory test follows the branch back
 /// in time from `2π` and counts assemblies on every interval).
+///
 /// `None` unless `turning` is in `(0, π/4]`.
 #[must_use]
 pub fn paper_recurring_intervals(turning: f64) -> Option<[(f64, f64); 3]> {
     use std::f64::consts::{FRAC_PI_2, FRAC_PI_4, PI, TAU};
-    (turning > 0.0 && turning <= FRAC_PI_4).then(|| {
+    (turning > 0.0 && turning <= FRAC_PI_4).then_some({
         [
             (0.0, turning),
             (FRAC_PI_2 - turning, PI + turning),

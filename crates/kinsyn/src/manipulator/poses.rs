@@ -11,8 +11,6 @@
 //! constraint manifold by about 1e-2 — are refused with
 //! [`PositionError::PosesNotAssembled`], which carries the residual where the solver stopped.
 
-use super::position::LARGEST_JOINT_STEP;
-use super::{CONTINUATION_TRIES, ContinuationFailure};
 use super::{Manipulator, ManipulatorError, PositionError, RequestError};
 use crate::chain::Displacement;
 use crate::mechanism::{
@@ -144,11 +142,14 @@ impl Manipulator {
             .map(|&(k, _)| self.body_frame(k, start))
             .collect();
         let goal_at = |t: f64| self.poses_goal(frames, &start_frames, t);
-        let (q, t) =
-            match self.continue_along(start, &unlocked, |t, q| (q.to_vec(), Some(goal_at(t)))) {
-                Ok((q, _)) => return Ok(q),
-                Err((q, failure)) => (q, failure.done()),
-            };
+        let (q, t) = match self.continue_along(
+            start,
+            |t, q| (q.to_vec(), Some(goal_at(t))),
+            |q, goal| m.assemble_to(q, &unlocked, goal),
+        ) {
+            Ok((q, _)) => return Ok(q),
+            Err((q, failure)) => (q, failure.done()),
+        };
         // The path cannot be followed: Newton steps toward the poses from the furthest
         // configuration reached, whose residual says how far the poses are from an assembly.
         match m.assemble_to(&q, &unlocked, Some(&goal_at(1.0))) {
@@ -209,46 +210,17 @@ impl Manipulator {
             .map(|&(k, _)| self.body_frame(k, start))
             .collect();
         let settings = AssemblySettings::default();
-        let mut q = start.to_vec();
-        let (mut t, mut dt) = (0.0_f64, 0.25_f64);
-        let mut tries = 0;
-        while t < 1.0 {
-            tries += 1;
-            if tries > CONTINUATION_TRIES {
-                return Err(
-                    PositionError::NotReached(ContinuationFailure::TooManySteps { done: t }).into(),
-                );
-            }
-            let next = (t + dt).min(1.0);
-            let goal = self.poses_goal(frames, &start_frames, next);
-            let solved = m.assemble_nearest(&q, &unlocked, &goal, &settings);
-            let jump = |s: &[f64]| {
-                (0..q.len())
-                    .map(|j| (s[j] - q[j]).abs() / m.unit(j))
-                    .fold(0.0, f64::max)
-            };
-            match solved {
-                Ok(s) if jump(&s) <= LARGEST_JOINT_STEP => {
-                    q = s;
-                    t = next;
-                    dt = (dt * 2.0).min(0.25);
-                }
-                other => {
-                    dt /= 2.0;
-                    if dt < 1e-6 {
-                        let why = match other {
-                            Err(e) => e.to_string(),
-                            Ok(_) => "a joint jumps between assemblies".to_string(),
-                        };
-                        return Err(PositionError::NotReached(ContinuationFailure::Stopped {
-                            done: t,
-                            why,
-                        })
-                        .into());
-                    }
-                }
-            }
-        }
+        let goal_at = |t: f64| self.poses_goal(frames, &start_frames, t);
+        let (q, _) = self
+            .continue_along(
+                start,
+                |t, q| (q.to_vec(), Some(goal_at(t))),
+                |q, goal| match goal {
+                    Some(goal) => m.assemble_nearest(q, &unlocked, goal, &settings),
+                    None => m.assemble_to(q, &unlocked, None),
+                },
+            )
+            .map_err(|(_, failure)| PositionError::NotReached(failure))?;
         let changes = frames
             .iter()
             .map(|&(k, target)| {

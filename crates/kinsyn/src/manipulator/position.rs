@@ -15,7 +15,7 @@
 
 use super::{ContinuationFailure, Manipulator, ManipulatorError, PositionError, RequestError};
 use crate::chain::Displacement;
-use crate::mechanism::{Coordinate, Goal, compose, exp, inverse, log};
+use crate::mechanism::{Coordinate, Goal, MechanismError, compose, exp, inverse, log};
 use crate::screw::Twist;
 use nalgebra::{Rotation3, Vector3};
 
@@ -141,7 +141,9 @@ impl Manipulator {
             }
             (trial, goal)
         };
-        let (q, steps) = match self.continue_along(start, &mask, with_inputs) {
+        let (q, steps) = match self
+            .continue_along(start, with_inputs, |q, goal| m.assemble_to(q, &mask, goal))
+        {
             Ok(reached) => reached,
             Err((_, failure)) => {
                 // The path cannot be followed: damped Newton steps straight from the start.
@@ -168,15 +170,18 @@ impl Manipulator {
 
     /// Follows a path of goals from `start` (`point(t, q)`: the joint values to start the
     /// loop closure from and the goal at fraction `t` of the path, `q` the configuration
-    /// reached so far) by continuation: steps that close the loops are kept and doubled, and a
+    /// reached so far; `solve(q, goal)`: the configuration that closes the loops there, such as
+    /// [`crate::mechanism::Mechanism::assemble_to`] or
+    /// [`crate::mechanism::Mechanism::assemble_nearest`]) by continuation: steps
+    /// that close the loops are kept and doubled, and a
     /// step that fails, or moves a joint by more than [`LARGEST_JOINT_STEP`] (a jump to another
     /// assembly), is taken again in halves. The configuration at `t = 1` with the steps kept,
     /// or the furthest configuration reached and why the path was given up.
     pub(super) fn continue_along(
         &self,
         start: &[f64],
-        mask: &[bool],
         point: impl Fn(f64, &[f64]) -> (Vec<f64>, Option<Goal>),
+        solve: impl Fn(&[f64], Option<&Goal>) -> Result<Vec<f64>, MechanismError>,
     ) -> Result<(Vec<f64>, usize), (Vec<f64>, ContinuationFailure)> {
         let m = &self.mechanism;
         let mut q = start.to_vec();
@@ -187,7 +192,7 @@ impl Manipulator {
             }
             let next = (t + dt).min(1.0);
             let (trial, goal) = point(next, &q);
-            let solved = match m.assemble_to(&trial, mask, goal.as_ref()) {
+            let solved = match solve(&trial, goal.as_ref()) {
                 Err(e) => Err(e.to_string()),
                 Ok(solved) => {
                     let change = (0..q.len())
