@@ -143,8 +143,9 @@ impl Mechanism {
 }
 
 /// The two rank decisions behind the dimension of an image of the compatible joint rates
-/// ([`Mechanism::image_ranks`]): the rank of the equations that the rates keep, and of those
-/// equations stacked on the rows of the image. The dimension is their difference.
+/// ([`Mechanism::twist_space_ranks`], [`Mechanism::joint_freedom_ranks_with_body_held`]): the
+/// rank of the equations that the rates keep, and of those equations stacked on the rows of the
+/// image. The dimension is their difference.
 ///
 /// Each is the rank of a matrix of fixed shape that depends analytically on the configuration,
 /// so it can only drop at special configurations, never rise: its value at generic
