@@ -1,5 +1,5 @@
 """A tour of kinsyn from Python: one result of each of the five seed papers
-(/work/shared/seeds/README.md lists them), each printed beside the paper's value.
+(README.md names them), each printed beside the paper's value.
 
 Each section is a cell of the notebook ``examples/python/tour.ipynb`` (``# %%`` starts a code
 cell, ``# %% [markdown]`` a text cell; ``examples/python/make_notebook.py`` writes the notebook
