@@ -380,18 +380,21 @@ fn power_system(n: usize, degree: u32, groups: bool) -> String {
     s + "END;\n"
 }
 
+/// A Bertini file in `d` with unknowns `x, y`, functions `f, g` and the given body.
+fn two_unknowns(d: &Path, name: &str, body: &str) -> String {
+    write(
+        d,
+        name,
+        format!("INPUT\n  variable_group x, y;\n  function f, g;\n{body}END;\n").as_bytes(),
+    )
+}
+
 /// Every bad input to `kinsyn solve`: one line, exit 2, no panic.
 #[test]
 fn bad_solve_input_is_one_line_and_exit_2() {
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path();
-    let bertini = |name: &str, body: &str| {
-        write(
-            d,
-            name,
-            format!("INPUT\n  variable_group x, y;\n  function f, g;\n{body}END;\n").as_bytes(),
-        )
-    };
+    let bertini = |name: &str, body: &str| two_unknowns(d, name, body);
     let latin1 = write(
         d,
         "latin1.bertini",
@@ -487,13 +490,7 @@ fn non_finite_values_and_degrees_beyond_the_limit_are_refused() {
     assert_eq!(kinsyn::poly::MAX_DEGREE, 1 << 20);
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path();
-    let bertini = |name: &str, body: &str| {
-        write(
-            d,
-            name,
-            format!("INPUT\n  variable_group x, y;\n  function f, g;\n{body}END;\n").as_bytes(),
-        )
-    };
+    let bertini = |name: &str, body: &str| two_unknowns(d, name, body);
     // inf·0 is NaN: once dropped as a zero coefficient, so that x − c gave x = 0.
     let nan = write(
         d,

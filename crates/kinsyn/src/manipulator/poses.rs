@@ -137,10 +137,7 @@ impl Manipulator {
     ) -> Result<Vec<f64>, ManipulatorError> {
         let m = &self.mechanism;
         let unlocked = vec![false; start.len()];
-        let start_frames: Vec<Displacement> = frames
-            .iter()
-            .map(|&(k, _)| self.body_frame(k, start))
-            .collect();
+        let start_frames = self.frames_at(start, frames);
         let goal_at = |t: f64| self.poses_goal(frames, &start_frames, t);
         let (q, t) = match self.continue_along(
             start,
@@ -164,6 +161,11 @@ impl Manipulator {
             }
             Err(e) => Err(e.into()),
         }
+    }
+
+    /// The frames at `q` of the bodies that `frames` names (their poses at the start of a path).
+    fn frames_at(&self, q: &[f64], frames: &[(usize, Displacement)]) -> Vec<Displacement> {
+        frames.iter().map(|&(k, _)| self.body_frame(k, q)).collect()
     }
 
     /// The goal of the bodies' frames a fraction `t` of the way from `from` to the `frames`
@@ -205,10 +207,7 @@ impl Manipulator {
     ) -> Result<NearestPoses, ManipulatorError> {
         let m = &self.mechanism;
         let unlocked = vec![false; start.len()];
-        let start_frames: Vec<Displacement> = frames
-            .iter()
-            .map(|&(k, _)| self.body_frame(k, start))
-            .collect();
+        let start_frames = self.frames_at(start, frames);
         let settings = AssemblySettings::default();
         let goal_at = |t: f64| self.poses_goal(frames, &start_frames, t);
         let (q, _) = self
