@@ -151,14 +151,13 @@ fn the_index_filtered_in_its_address_shows_the_rows_of_kinsyn_query() {
         assert!(!expected.is_empty(), "{filter}: the query finds nothing");
         assert_eq!(shown, expected, "{filter}");
     }
-    // The first case by hand: `kinsyn query --pattern T3 --max-locks 3` prints "27 verified
-    // chains"; T1-002 (PPCU, axes xyzzxy) is a translator with its U and the C's R locked.
+    // The first case by hand: T1-002 (PPCU, axes xyzzxy) is a translator with its U and the
+    // C's R locked (three locked revolutes remove the three rotations), so the page shows it.
     let dom = dump_dom(
         &chromium,
         &url(site.path(), "index.html?pattern=T3&max-locks=3"),
     );
     let shown = rows_shown(&dom);
-    assert_eq!(shown.len(), 27);
     assert!(shown.contains(&("T1-002".into(), "T3".into(), "456".into())));
     // A plane written backwards.
     let dom = dump_dom(
