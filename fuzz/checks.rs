@@ -288,3 +288,66 @@ pub fn check_description(data: &[u8]) {
         assert!(r.rank <= leg.joints.len().min(6));
     }
 }
+
+/// A Bertini input file that reads is a system whose coefficients are finite and whose degrees
+/// are within `poly::MAX_DEGREE`; its own Bertini text (`bertini::write`) reads back to the
+/// same system; and its compiled evaluation program gives, at a fixed complex point, the values
+/// and Jacobian that the polynomials themselves give (`Poly::eval`, `Poly::derivative`), to
+/// round-off relative to the size of the terms.
+pub fn check_bertini(data: &[u8]) {
+    use kinsyn::poly::{C64, MAX_DEGREE, bertini};
+    let Ok(text) = std::str::from_utf8(data) else {
+        return;
+    };
+    let Ok(input) = bertini::parse(text) else {
+        return;
+    };
+    let system = &input.system;
+    assert_eq!(input.functions.len(), system.len());
+    for p in system.equations() {
+        assert_eq!(p.nvars(), system.nvars());
+        assert!(p.total_degree() <= MAX_DEGREE, "{text:?}: degree beyond the limit");
+        for (_, c) in p.terms() {
+            assert!(c.re.is_finite() && c.im.is_finite(), "{text:?}: {c}");
+        }
+    }
+    let written = bertini::write(system);
+    let again = bertini::parse(&written)
+        .unwrap_or_else(|e| panic!("{text:?} reads but its own text does not: {e}\n{written}"));
+    assert_eq!(
+        again.system, *system,
+        "{text:?}: its own text reads differently:\n{written}"
+    );
+    // Values and Jacobian of the program against the polynomials, at a point of modulus < 1
+    // (so that powers up to the degree limit stay finite).
+    let n = system.nvars();
+    let x: Vec<C64> = (0..n)
+        .map(|k| C64::new(0.3 + 0.05 * (k % 7) as f64, -0.2 + 0.03 * (k % 5) as f64))
+        .collect();
+    let size: Vec<C64> = x.iter().map(|c| C64::new(c.norm(), 0.0)).collect();
+    let program = system.program();
+    let mut ws = program.workspace::<C64>();
+    let mut values = vec![C64::new(0.0, 0.0); system.len()];
+    let mut jacobian = vec![C64::new(0.0, 0.0); system.len() * n];
+    program.evaluate_with_jacobian(&x, &mut values, &mut jacobian, &mut ws);
+    let close = |got: C64, want: C64, scale: f64, what: &str| {
+        if want.re.is_finite() && want.im.is_finite() && scale.is_finite() {
+            assert!(
+                (got - want).norm() <= 1e-9 * scale.max(f64::MIN_POSITIVE),
+                "{text:?}: {what}: program {got}, polynomial {want} (terms of size {scale})"
+            );
+        }
+    };
+    for (i, p) in system.equations().iter().enumerate() {
+        close(values[i], p.eval(&x), p.magnitudes().eval(&size).re, "value");
+        for j in 0..n {
+            let d = p.derivative(j);
+            close(
+                jacobian[i * n + j],
+                d.eval(&x),
+                d.magnitudes().eval(&size).re,
+                "derivative",
+            );
+        }
+    }
+}

@@ -63,3 +63,8 @@ fn description_corpus() {
 fn position_corpus() {
     replay("position", checks::check_position);
 }
+
+#[test]
+fn bertini_corpus() {
+    replay("bertini", checks::check_bertini);
+}
