@@ -188,7 +188,7 @@ fn draw_speeds<DB: DrawingBackend>(
         TrajectoryEnd::Ceased { last, .. } => (last * 1.15).min(std::f64::consts::TAU),
         TrajectoryEnd::Completed => std::f64::consts::TAU,
     };
-    let mut chart = ChartBuilder::on(&root)
+    let mut chart = ChartBuilder::on(root)
         .caption(
             "Paper 003 §5: corner speeds along the followed assembly",
             ("sans-serif", 20),

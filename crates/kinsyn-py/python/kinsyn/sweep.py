@@ -20,6 +20,7 @@ file system the client can read for the merge::
 
     client = Client("tcp://scheduler:8786")          # or Client(LocalCluster(...))
     out = Path("/shared/sweep-4legs")
+    out.mkdir(parents=True, exist_ok=True)           # kinsyn creates out/shardK, not out
     parts = ks.partitions(64, legs=4, actuated=(1,))
     futures = client.map(ks.run, parts, [out / f"shard{p.index}" for p in parts], threads=1)
     client.gather(futures)                           # a lost worker: resubmit, it resumes
