@@ -449,8 +449,8 @@ fn a_full_standard_output_is_named() {
 }
 
 /// `kinsyn sweep --out DIR` into its own interrupted run resumes without `--force`; another
-/// sweep there is refused unless `--force`, which starts afresh and writes what a fresh
-/// directory gets.
+/// sweep there, or a manifest that does not read, is refused unless `--force`, which starts
+/// afresh and writes what a fresh directory gets.
 #[test]
 fn a_sweep_resumes_without_force_and_replaces_another_only_with_it() {
     let dir = tempfile::tempdir().unwrap();
@@ -488,6 +488,19 @@ fn a_sweep_resumes_without_force_and_replaces_another_only_with_it() {
     succeeds(&run(&fresh, &["--seed", "7"]), "fresh");
     assert!(
         tree(&cut) == tree(&fresh),
+        "a replaced sweep differs from a fresh one"
+    );
+    // A manifest that does not read: refused, and replaced with --force.
+    let damaged = dir.path().join("damaged");
+    std::fs::create_dir(&damaged).unwrap();
+    std::fs::write(damaged.join("sweep.json"), b"{").unwrap();
+    assert_refused(&run(&damaged, &["--seed", "7"]), "damaged", &["sweep.json"]);
+    succeeds(
+        &run(&damaged, &["--seed", "7", "--force"]),
+        "damaged, replaced",
+    );
+    assert!(
+        tree(&damaged) == tree(&fresh),
         "a replaced sweep differs from a fresh one"
     );
 }

@@ -145,7 +145,12 @@ pub fn sweep(
         already_complete: false,
     };
     kinsyn::output::check_folder(dir).map_err(|e| output::error("--out", dir, e))?;
-    let found = match read_manifest(dir)? {
+    let found = match read_manifest(dir) {
+        // With --force a manifest that does not read is replaced too.
+        Err(CliError::Input(_)) if options.force => None,
+        other => other?,
+    };
+    let found = match found {
         Some(found) => match difference(&found, &manifest) {
             None => Some(found),
             // Replaced: this sweep starts afresh there.
