@@ -1,7 +1,7 @@
 //! Output files: every file kinsyn writes is written whole or not at all, never through a
 //! symbolic link, and never over a file that was not meant to be replaced.
 //!
-//! [`write`] puts the bytes in a temporary file beside the target (same folder, so the same
+//! [`write()`] puts the bytes in a temporary file beside the target (same folder, so the same
 //! file system), flushes and syncs it to the disk, then renames it to the target's name. A
 //! reader, a full disk or an interruption therefore sees either the old file or the whole new
 //! one: on any error the temporary file is removed and the target left as it was. The rename
@@ -10,7 +10,7 @@
 //!
 //! Whether an existing entry may be replaced is the caller's [`Overwrite`]. A command that
 //! writes several files checks them all first ([`check_file`] for each, [`check_folder`] for
-//! their folder), so that it refuses before it writes the first; [`write`] checks again, and
+//! their folder), so that it refuses before it writes the first; [`write()`] checks again, and
 //! [`Overwrite::Refuse`] is kept by an atomic "rename unless the name exists", so a file that
 //! appears in between is not replaced either. A folder is created by [`create_folder`], only the
 //! one named: its parent must exist, so a mistyped path does not become a chain of folders.
@@ -193,7 +193,7 @@ fn existing_folder(dir: &Path) -> Result<(), OutputError> {
     }
 }
 
-/// Checks that [`write`] may write `path`: [`check_file`], and the folder it is in exists.
+/// Checks that [`write()`] may write `path`: [`check_file`], and the folder it is in exists.
 ///
 /// # Errors
 /// As [`check_file`]; [`OutputError::Missing`] or [`OutputError::NotFolder`] for its folder.

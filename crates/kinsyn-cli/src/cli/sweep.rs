@@ -9,8 +9,8 @@ mod selection;
 mod table;
 
 pub use files::{
-    CHECKPOINT, Checkpoint, FORMAT, JSONL, MANIFEST, Manifest, PARQUET, read_manifest, read_rows,
-    row_line, write_results,
+    CHECKPOINT, Checkpoint, FILES, FORMAT, JSONL, MANIFEST, Manifest, PARQUET, read_manifest,
+    read_rows, row_line, write_results,
 };
 pub use merge::merge;
 pub use run::{SweepOptions, SweepOutcome, sweep};

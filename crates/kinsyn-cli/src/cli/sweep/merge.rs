@@ -66,8 +66,8 @@ fn shard_manifests(dirs: &[PathBuf]) -> Result<Vec<(&Path, Manifest, Shard)>, Cl
 /// Merges the shard directories `dirs` of one sweep (the same settings and selection, shards
 /// 1 to N each once, each complete) into the folder `out` (created if missing, not its
 /// parent): the same `designs.jsonl`, `designs.parquet` and `sweep.json` as one run of the
-/// whole sweep. A sweep's file already in `out` ([`files::FILES`]) is refused unless `force`,
-/// which replaces it. Returns the merged manifest.
+/// whole sweep. A sweep's file already in `out` ([`FILES`](super::FILES)) is refused unless
+/// `force`, which replaces it. Returns the merged manifest.
 ///
 /// # Errors
 /// [`CliError::Input`] for a directory that is not a sweep or not a shard, an incomplete

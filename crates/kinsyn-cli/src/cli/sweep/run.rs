@@ -107,8 +107,8 @@ fn difference(found: &Manifest, wanted: &Manifest) -> Option<String> {
 /// the remaining designs in parallel (each row appended to the checkpoint as soon as it is
 /// done, `progress` advanced), then writes the result files (`files::write_results`). A
 /// directory already complete with the same sweep is left as it is. A fresh start refuses a
-/// directory holding another sweep or any of the sweep's files ([`files::FILES`]) unless
-/// `options.force`, which replaces them.
+/// directory holding another sweep or any of the sweep's files ([`FILES`](super::FILES))
+/// unless `options.force`, which replaces them.
 ///
 /// # Errors
 /// [`CliError::Input`] for an empty selection, bad `--threads`, a directory holding another
