@@ -115,8 +115,11 @@ fn bad_input_is_one_line_and_exit_2() {
     }
 }
 
+/// A folder under a file is the user's mistake (exit 2, the file named); a place the system
+/// does not let anyone write (here /proc/self, where not even root can add a folder) is the
+/// environment failing (exit 1, the folder named).
 #[test]
-fn generate_into_an_unwritable_place_is_exit_1() {
+fn generate_into_a_file_or_an_unwritable_place() {
     let dir = tempfile::tempdir().unwrap();
     let file = dir.path().join("a-file");
     std::fs::write(&file, "x").unwrap();
@@ -126,8 +129,23 @@ fn generate_into_an_unwritable_place_is_exit_1() {
         "--out",
         file.join("sub").to_str().unwrap(),
     ]);
-    assert_eq!(o.status.code(), Some(1));
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
     assert_eq!(stderr(&o).lines().count(), 1);
+    assert!(
+        stderr(&o).contains(&format!("{} is not a folder", file.display())),
+        "{}",
+        stderr(&o)
+    );
+    if cfg!(target_os = "linux") {
+        let o = kinsyn(&["catalogue", "generate", "--out", "/proc/self/cat"]);
+        assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+        assert_eq!(stderr(&o).lines().count(), 1);
+        assert!(
+            stderr(&o).contains("cannot write /proc/self/cat: "),
+            "{}",
+            stderr(&o)
+        );
+    }
 }
 
 #[test]

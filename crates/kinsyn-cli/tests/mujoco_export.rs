@@ -258,7 +258,7 @@ fn export_refuses_a_missing_file_and_an_unwritable_output() {
     common::assert_refused(&o, "missing file", &["no-such.json"]);
     let o = common::kinsyn(&["export", "mechanisms/3-rps.json"]);
     common::assert_refused(&o, "no --mjcf", &["--mjcf"]);
-    // An output in a directory that does not exist: an environment error (exit 1), in one line.
+    // An output in a folder that does not exist: the path chosen (exit 2), the folder named.
     let bad = dir.path().join("missing-dir/out.xml");
     let o = common::kinsyn(&[
         "export",
@@ -266,7 +266,18 @@ fn export_refuses_a_missing_file_and_an_unwritable_output() {
         "--mjcf",
         bad.to_str().unwrap(),
     ]);
-    assert_eq!(o.status.code(), Some(1), "{}", common::stderr(&o));
-    assert_eq!(common::stderr(&o).lines().count(), 1);
-    assert!(common::stderr(&o).contains("missing-dir/out.xml"));
+    common::assert_refused(&o, "missing folder", &["missing-dir does not exist"]);
+    // A folder nobody may write (not even root can add a file to /proc/self): the environment
+    // (exit 1), in one line naming the file.
+    if cfg!(target_os = "linux") {
+        let o = common::kinsyn(&[
+            "export",
+            "mechanisms/3-rps.json",
+            "--mjcf",
+            "/proc/self/out.xml",
+        ]);
+        assert_eq!(o.status.code(), Some(1), "{}", common::stderr(&o));
+        assert_eq!(common::stderr(&o).lines().count(), 1);
+        assert!(common::stderr(&o).contains("cannot write /proc/self/out.xml: "));
+    }
 }

@@ -23,10 +23,11 @@ fn to_json(value: Result<serde_json::Value, serde_json::Error>) -> PyResult<Stri
 /// `kinsyn sweep --out OUT [--shard K/N] … --json`, as JSON text: runs (or resumes, or finds
 /// complete) the sweep of `legs` legs with `actuated` actuated joints per leg over the chosen
 /// catalogue chains into the directory `out`, and reports the run. `seed` `None` is the
-/// command's default. No progress bar is drawn.
+/// command's default; `force` is `--force` (another sweep's files in `out` replaced). No
+/// progress bar is drawn.
 #[pyfunction]
 #[pyo3(signature = (out, legs = 3, actuated = vec![1, 2], seed = None, chains = None,
-    family = None, shard = None, threads = None, stop_after = None))]
+    family = None, shard = None, threads = None, stop_after = None, force = false))]
 #[expect(clippy::too_many_arguments, reason = "the options of `kinsyn sweep`")]
 #[expect(
     clippy::needless_pass_by_value,
@@ -43,6 +44,7 @@ pub fn sweep_json(
     shard: Option<String>,
     threads: Option<usize>,
     stop_after: Option<usize>,
+    force: bool,
 ) -> PyResult<String> {
     let chains = chains_text(chains.as_deref());
     let request = Request {
@@ -54,6 +56,7 @@ pub fn sweep_json(
         shard: shard.as_deref(),
         threads,
         stop_after,
+        force,
     };
     let outcome = py
         .detach(|| run_request(&out, &request, false))
@@ -61,16 +64,22 @@ pub fn sweep_json(
     to_json(Ok(outcome_json(&outcome)))
 }
 
-/// `kinsyn sweep merge DIRS… --out OUT --json`, as JSON text: the complete shard directories
-/// `dirs` of one sweep merged into `out` (the files one run of the whole sweep writes); the
-/// merged manifest.
+/// `kinsyn sweep merge DIRS… --out OUT [--force] --json`, as JSON text: the complete shard
+/// directories `dirs` of one sweep merged into `out` (the files one run of the whole sweep
+/// writes; existing ones replaced only when `force`); the merged manifest.
 #[pyfunction]
+#[pyo3(signature = (dirs, out, force = false))]
 #[expect(
     clippy::needless_pass_by_value,
     reason = "PyO3 converts Python paths and lists to owned values"
 )]
-pub fn sweep_merge_json(py: Python<'_>, dirs: Vec<PathBuf>, out: PathBuf) -> PyResult<String> {
-    let manifest = py.detach(|| merge(&dirs, &out)).map_err(py_err)?;
+pub fn sweep_merge_json(
+    py: Python<'_>,
+    dirs: Vec<PathBuf>,
+    out: PathBuf,
+    force: bool,
+) -> PyResult<String> {
+    let manifest = py.detach(|| merge(&dirs, &out, force)).map_err(py_err)?;
     to_json(serde_json::to_value(&manifest))
 }
 
@@ -110,6 +119,7 @@ pub fn sweep_partitions_json(
         shard: None,
         threads: None,
         stop_after: None,
+        force: false,
     };
     let manifests = py
         .detach(|| shard_manifests(&request, count))

@@ -182,3 +182,37 @@ def test_bad_input_raises_the_command_s_message(tmp_path, cli_run):
         ks.read(a)
     with pytest.raises(TypeError):
         ks.run(parts[0], tmp_path / "c", legs=4)
+
+
+def test_force_replaces_what_the_command_s_force_replaces(tmp_path, cli_run):
+    """merge into an OUT that holds a sweep's files and run into a directory holding another
+    sweep are refused with the command's message; force=True (--force) replaces them with the
+    files a fresh run writes, and never discards the same sweep's progress."""
+    parts = ks.partitions(2, **SMALL)
+    dirs = [tmp_path / f"shard{p.index}" for p in parts]
+    for p, d in zip(parts, dirs):
+        p.run(d)
+    out = tmp_path / "merged"
+    ks.merge(dirs, out)
+    with pytest.raises(kinsyn.InputError) as e:
+        ks.merge(dirs, out)
+    assert str(e.value) == cli_error("sweep", "merge", *map(str, dirs), "--out", str(out))
+    assert "--force" in str(e.value)
+    (out / "designs.jsonl").write_text("old\n")
+    ks.merge(dirs, out, force=True)
+    assert_same_files(out, cli_run[0])
+    # Only the folder named is created.
+    with pytest.raises(kinsyn.InputError, match="does not exist"):
+        ks.merge(dirs, tmp_path / "missing" / "out")
+    assert not (tmp_path / "missing").exists()
+    # The whole sweep into a shard's directory: another sweep, replaced only with force.
+    with pytest.raises(kinsyn.InputError, match="holds another sweep"):
+        ks.run(None, dirs[0], **SMALL)
+    assert ks.run(None, dirs[0], force=True, **SMALL).complete
+    assert_same_files(dirs[0], cli_run[0])
+    # Its own interrupted run: resumed with force as without it.
+    cut = tmp_path / "cut"
+    ks.run(None, cut, stop_after=4, threads=1, **SMALL)
+    resumed = ks.run(None, cut, force=True, **SMALL)
+    assert resumed.complete and resumed.resumed == 4
+    assert_same_files(cut, cli_run[0])

@@ -16,7 +16,8 @@
 //! series-parallel manipulators: the Jacobian and twist system of paper 002 from the geometry of
 //! stacked modules. [`certify`] proves the approximate roots of polynomial systems ([`poly`]):
 //! the Krawczyk operator in interval arithmetic shows each box holds exactly one root, and
-//! which roots are distinct and which real.
+//! which roots are distinct and which real. Every file the crate and the command write goes
+//! through [`output`]: whole or not at all, never through a symbolic link.
 #![deny(missing_docs)]
 
 pub mod catalogue;
@@ -33,6 +34,7 @@ pub mod mechanism;
 pub mod mjcf;
 pub mod motion;
 pub mod notation;
+pub mod output;
 pub mod paper;
 pub mod poly;
 pub mod ruu;

@@ -11,7 +11,7 @@ use std::path::Path;
 fn committed_catalogue_is_reproduced_byte_for_byte() {
     let dir = tempfile::tempdir().unwrap();
     Catalogue::generate(&Options::default())
-        .write(dir.path())
+        .write(dir.path(), kinsyn::output::Overwrite::Refuse)
         .unwrap();
     let committed = Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("../..")

@@ -216,9 +216,12 @@ pub(super) enum Command {
     Build {
         #[command(flatten)]
         spec: BuildArgs,
-        /// Write to this file instead of standard output.
+        /// Write to this file instead of standard output (its folder must exist; an existing
+        /// file is refused unless --force).
         #[arg(long, short)]
         output: Option<PathBuf>,
+        #[command(flatten)]
+        force: Force,
     },
     /// Every isolated solution of a polynomial system, by homotopy continuation, certified.
     ///
@@ -340,9 +343,12 @@ pub(super) enum Command {
             required = true
         )]
         heights: Vec<f64>,
-        /// Write to this file instead of standard output.
+        /// Write to this file instead of standard output (its folder must exist; an existing
+        /// file is refused unless --force).
         #[arg(long, short)]
         output: Option<PathBuf>,
+        #[command(flatten)]
+        force: Force,
     },
     /// The catalogue-wide multioperation sweep as files (docs/sweep.md): every verified chain
     /// as the legs of a symmetric manipulator, every choice of actuated joints per leg, every
@@ -373,9 +379,12 @@ pub(super) enum Command {
     Export {
         /// The manipulator description (kinsyn-manipulator/1 or /2).
         file: PathBuf,
-        /// Write the MuJoCo model (MJCF XML) to this file.
+        /// Write the MuJoCo model (MJCF XML) to this file (its folder must exist; an existing
+        /// file is refused unless --force).
         #[arg(long, required = true)]
         mjcf: PathBuf,
+        #[command(flatten)]
+        force: Force,
     },
 }
 
@@ -462,9 +471,12 @@ pub(super) enum CatalogueCommand {
     /// The files are byte-for-byte reproducible; the committed catalogue/ is what this writes
     /// with the default reading.
     Generate {
-        /// Folder to write into (created if missing).
+        /// Folder to write into (created if missing, not its parent; the committed catalogue/
+        /// is replaced only with --force).
         #[arg(long, default_value = "catalogue")]
         out: PathBuf,
+        #[command(flatten)]
+        force: Force,
         #[command(flatten)]
         reading: Reading,
     },
@@ -512,9 +524,11 @@ pub(super) enum CatalogueCommand {
     /// lock count: `kinsyn query`'s rows), and a page per entry with its lock table and a
     /// schematic of its chain. No server or network needed: open DIR/index.html.
     Site {
-        /// Folder to write into (created if missing; the site's files in it are replaced).
+        /// Folder to write into (created if missing, not its parent).
         #[arg(long)]
         out: PathBuf,
+        #[command(flatten)]
+        force: Force,
         #[command(flatten)]
         reading: Reading,
     },
@@ -534,6 +548,16 @@ pub(super) enum CatalogueCommand {
         #[command(flatten)]
         reading: Reading,
     },
+}
+
+/// `--force` of the commands that write files (docs/limits.md, "Output files").
+#[derive(Debug, Clone, Copy, Args)]
+pub struct Force {
+    /// Replace output files that exist (each written whole, then renamed over the old one; a
+    /// symbolic link there is replaced, never followed). Without it an existing file is
+    /// refused before anything is written.
+    #[arg(long)]
+    pub force: bool,
 }
 
 /// The options of the paper reading (docs/synthesis.md).
@@ -597,9 +621,11 @@ pub(super) enum PlotCommand {
     /// (like Fig. 9); default §5's example.
     #[command(after_help = "Example:\n  kinsyn plot inverse --out figures")]
     Inverse {
-        /// The folder for inverse-configurations.svg (created if missing).
+        /// The folder for inverse-configurations.svg (created if missing, not its parent).
         #[arg(long, default_value = ".")]
         out: PathBuf,
+        #[command(flatten)]
+        force: Force,
         /// The platform centre C = x,y (mm).
         #[arg(long, default_value = "20,-30", allow_hyphen_values = true)]
         centre: String,
@@ -655,9 +681,11 @@ pub(super) enum PlotCommand {
     /// assembly stops existing (a turning point, where it meets another assembly).
     #[command(after_help = "Example:\n  kinsyn plot trajectory --out figures")]
     Trajectory {
-        /// The folder for trajectory-velocities.svg (created if missing).
+        /// The folder for trajectory-velocities.svg (created if missing, not its parent).
         #[arg(long, default_value = ".")]
         out: PathBuf,
+        #[command(flatten)]
+        force: Force,
         /// Instants over t in [0, 2π] (2 to 100000).
         #[arg(long, default_value_t = 2000)]
         steps: usize,
@@ -733,9 +761,11 @@ pub struct HexaPlot {
     /// The HEXA's description, mechanisms/6-ruu-hexa.json or another written by
     /// `Hexa::description` (its dimensions are read from it; docs/hexa.md).
     pub file: PathBuf,
-    /// The folder for the figures (created if missing).
+    /// The folder for the figures (created if missing, not its parent).
     #[arg(long, default_value = ".")]
     pub out: PathBuf,
+    #[command(flatten)]
+    pub force: Force,
     /// φ1, end-effector 1's turn about z, in degrees (-180 to 180).
     #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
     pub phi1: f64,
@@ -747,10 +777,14 @@ pub struct HexaPlot {
 /// The options of `kinsyn sweep` (docs/sweep.md).
 #[derive(Debug, Args)]
 pub(super) struct SweepArgs {
-    /// The directory of the results (created if missing; an interrupted run of the same sweep
-    /// there is resumed).
+    /// The directory of the results (created if missing, not its parent; an interrupted run
+    /// of the same sweep there is resumed, with or without --force).
     #[arg(long, value_name = "DIR", required = true)]
     pub(super) out: Option<PathBuf>,
+    /// Replace the files of another sweep, or of none, that DIR holds (the sweep then starts
+    /// afresh there); the same sweep is resumed or left complete, never discarded.
+    #[arg(long)]
+    pub(super) force: bool,
     /// Legs of every manipulator, 3 to 6.
     #[arg(long, default_value_t = 3)]
     pub(super) legs: usize,
@@ -795,9 +829,11 @@ pub(super) enum SweepCommand {
         /// The shard directories.
         #[arg(required = true, value_name = "DIR")]
         dirs: Vec<PathBuf>,
-        /// The directory of the merged results.
+        /// The directory of the merged results (created if missing, not its parent).
         #[arg(long, value_name = "OUT")]
         out: PathBuf,
+        #[command(flatten)]
+        force: Force,
         /// Print the merged manifest as JSON instead of text.
         #[arg(long)]
         json: bool,

@@ -130,7 +130,11 @@ fn pattern_note(q: &PatternQuery) -> String {
 /// `kinsyn catalogue SUBCOMMAND`.
 pub(super) fn catalogue(command: CatalogueCommand) -> Result<String, CliError> {
     match command {
-        CatalogueCommand::Generate { out, reading } => generate(&out, &reading),
+        CatalogueCommand::Generate {
+            out,
+            force,
+            reading,
+        } => generate(&out, force.force, &reading),
         CatalogueCommand::Summary {
             json: as_json,
             reading,
@@ -141,7 +145,11 @@ pub(super) fn catalogue(command: CatalogueCommand) -> Result<String, CliError> {
             json: as_json,
             reading,
         } => list(family.as_deref(), table, &reading, as_json),
-        CatalogueCommand::Site { out, reading } => super::site::site(&out, &reading),
+        CatalogueCommand::Site {
+            out,
+            force,
+            reading,
+        } => super::site::site(&out, force.force, &reading),
         CatalogueCommand::Rejected { reading } => rejected(&reading),
         CatalogueCommand::Show {
             query,
@@ -167,10 +175,13 @@ fn rejected(reading: &Reading) -> Result<String, CliError> {
     ))
 }
 
-/// `catalogue generate`: the catalogue files written to `out`.
-fn generate(out: &Path, reading: &Reading) -> Result<String, CliError> {
+/// `catalogue generate`: the catalogue files written to `out` (replacing existing ones only
+/// when `force`).
+fn generate(out: &Path, force: bool, reading: &Reading) -> Result<String, CliError> {
+    super::output::OutputFolder::check("--out", out, Catalogue::FILES, force)?;
     let cat = reading.generated();
-    cat.write(out)?;
+    cat.write(out, kinsyn::output::Overwrite::from_force(force))
+        .map_err(|e| super::output::error("--out", out, e))?;
     let (letters, marks) = cat.totals();
     Ok(format!(
         "wrote {} entries ({letters} distinct by letters) to {}\n",

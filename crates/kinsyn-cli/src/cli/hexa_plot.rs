@@ -1,7 +1,9 @@
 //! `kinsyn plot workspace` and `kinsyn plot indices`: paper 001's Figs. 3 and 4 (the HEXA with
 //! reconfigurable platforms) drawn by kinsyn, as SVG and PNG.
 
-use super::plot::draw_error;
+use super::args::HexaPlot;
+use super::output::OutputFolder;
+use super::plot::{draw_error, png, svg};
 use super::{CliError, json, terminal};
 use kinsyn::hexa::{
     Cylinder, Hexa, IndexMap, IndexMapSettings, Indices, Workspace, WorkspaceError,
@@ -62,18 +64,6 @@ fn step(name: &str, mm: f64) -> Result<f64, CliError> {
     }
 }
 
-/// The output folder, created if missing; an existing file there is bad input.
-fn out_dir(out: &Path) -> Result<(), CliError> {
-    if out.exists() && !out.is_dir() {
-        return Err(CliError::Input(format!(
-            "--out {}: is a file, give a folder",
-            out.display()
-        )));
-    }
-    std::fs::create_dir_all(out)?;
-    Ok(())
-}
-
 /// Runs `work` with a progress bar over its rows on stderr.
 fn with_progress<T>(message: &str, work: impl FnOnce(kinsyn::hexa::Progress<'_>) -> T) -> T {
     let bar = terminal::progress(0, "rows", message);
@@ -113,35 +103,33 @@ fn cylinder_json(c: Option<&Cylinder>) -> serde_json::Value {
     })
 }
 
-/// Draws one figure as `DIR/NAME.svg` and `DIR/NAME.png` by `draw`, the same for both.
+/// The files of the figures `names`, each as `NAME.svg` and `NAME.png`.
+fn figure_files(names: &[&str]) -> Vec<String> {
+    names
+        .iter()
+        .flat_map(|n| [format!("{n}.svg"), format!("{n}.png")])
+        .collect()
+}
+
+/// Draws one figure by `$draw(root, args…)` as SVG and PNG, the same picture, and writes them
+/// into `$folder` as `NAME.svg` and `NAME.png`; their paths. (A macro: `$draw` is generic over
+/// the drawing backend, which a closure cannot be.)
 macro_rules! svg_and_png {
-    ($dir:expr, $name:expr, $size:expr, $draw:ident ( $($arg:expr),* )) => {{
-        let svg = $dir.join(format!("{}.svg", $name));
-        let png = $dir.join(format!("{}.png", $name));
-        {
-            let root = SVGBackend::new(&svg, $size).into_drawing_area();
-            $draw(&root, $($arg),*)?;
-            root.present().map_err(draw_error)?;
-        }
-        {
-            let root = BitMapBackend::new(&png, $size).into_drawing_area();
-            $draw(&root, $($arg),*)?;
-            root.present().map_err(draw_error)?;
-        }
-        [svg, png]
+    ($folder:expr, $name:expr, $size:expr, $draw:ident ( $($arg:expr),* )) => {{
+        let svg_text = svg($size, |root| $draw(root, $($arg),*))?;
+        let png_bytes = png($size, |root| $draw(root, $($arg),*))?;
+        [
+            $folder.write(format!("{}.svg", $name), svg_text.as_bytes())?,
+            $folder.write(format!("{}.png", $name), &png_bytes)?,
+        ]
     }};
 }
 
 /// `kinsyn plot workspace`: the reachable workspaces of both end-effectors (Fig. 3b) as three
 /// sections with the regular common workspace, and the positions of end-effector 2 relative to
-/// end-effector 1 (Fig. 3a).
-pub fn workspace(
-    file: &Path,
-    out: &Path,
-    phi: (f64, f64),
-    step_mm: f64,
-    as_json: bool,
-) -> Result<String, CliError> {
+/// end-effector 1 (Fig. 3a); existing figures are replaced only with `--force`.
+pub fn workspace(hexa: &HexaPlot, step_mm: f64, as_json: bool) -> Result<String, CliError> {
+    let (file, phi) = (&hexa.file, (hexa.phi1, hexa.phi2));
     let (phi1, phi2) = (angle("--phi1", phi.0)?, angle("--phi2", phi.1)?);
     let settings = WorkspaceSettings {
         step: step("--step", step_mm)?,
@@ -152,7 +140,12 @@ pub fn workspace(
     let h = hexa_geometry(file)?;
     h.workspace_grid(settings.step)
         .map_err(|e| input_error(&e))?;
-    out_dir(out)?;
+    let folder = OutputFolder::check(
+        "--out",
+        &hexa.out,
+        figure_files(&["hexa-workspace", "hexa-four-bar"]),
+        hexa.force.force,
+    )?;
     register_font();
     let w = with_progress("reachable workspace", |p| h.workspace(&settings, p))
         .map_err(|e| input_error(&e))?;
@@ -160,15 +153,16 @@ pub fn workspace(
     let z = cylinder.map_or(-0.5 * (h.b + h.l), |c| c.middle());
     let p1 = Vector3::new(0.0, 0.0, z);
     let curve = h.end_effector2_positions(&p1, phi1, phi2, 720);
+    folder.create(&[])?;
     let mut files = Vec::new();
     files.extend(svg_and_png!(
-        out,
+        folder,
         "hexa-workspace",
         (1500, 560),
         draw_workspace(&w, cylinder.as_ref(), phi)
     ));
     files.extend(svg_and_png!(
-        out,
+        folder,
         "hexa-four-bar",
         (900, 720),
         draw_four_bar(&h, &p1, phi, &curve)
@@ -523,13 +517,10 @@ pub struct IndexOptions {
     reason = "one command: checks, searches, statistics, figure and report"
 )]
 /// `kinsyn plot indices`: `λ_min`, `σ` and `ξ_min` over the regular common workspace at one
-/// height (Fig. 4), end-effector 2 at the four-bar's nominal assembly.
-pub fn indices(
-    file: &Path,
-    out: &Path,
-    options: &IndexOptions,
-    as_json: bool,
-) -> Result<String, CliError> {
+/// height (Fig. 4), end-effector 2 at the four-bar's nominal assembly; an existing figure is
+/// replaced only with `--force`.
+pub fn indices(hexa: &HexaPlot, options: &IndexOptions, as_json: bool) -> Result<String, CliError> {
+    let file = &hexa.file;
     let (phi1, phi2) = (
         angle("--phi1", options.phi.0)?,
         angle("--phi2", options.phi.1)?,
@@ -552,7 +543,12 @@ pub fn indices(
             -(h.b + h.l)
         )));
     }
-    out_dir(out)?;
+    let folder = OutputFolder::check(
+        "--out",
+        &hexa.out,
+        figure_files(&["hexa-indices"]),
+        hexa.force.force,
+    )?;
     register_font();
     let w = with_progress("reachable workspace", |p| h.workspace(&settings, p))
         .map_err(|e| input_error(&e))?;
@@ -591,8 +587,9 @@ pub fn indices(
     let sigma = |i: &Indices| i.sigma;
     let xi = |i: &Indices| i.xi_min();
     let assemblable = inside.iter().filter(|c| c.2.is_some()).count();
+    folder.create(&[])?;
     let files = svg_and_png!(
-        out,
+        folder,
         "hexa-indices",
         (1560, 560),
         draw_indices(&map, radius, options.phi)

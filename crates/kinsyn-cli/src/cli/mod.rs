@@ -15,6 +15,7 @@ pub mod files;
 mod hexa_plot;
 pub mod manipulator;
 mod notation;
+mod output;
 mod plot;
 mod site;
 pub mod solve;
@@ -66,7 +67,16 @@ pub fn run() -> i32 {
             };
         }
     };
-    let result = execute(cli.command).and_then(|text| Ok(terminal::print(&text)?));
+    #[cfg(unix)]
+    file_size_limit_is_an_error();
+    let result = execute(cli.command).and_then(|text| {
+        terminal::print(&text).map_err(|e| {
+            CliError::Io(std::io::Error::new(
+                e.kind(),
+                format!("cannot write standard output: {e}"),
+            ))
+        })
+    });
     match result {
         Ok(()) => 0,
         Err(e) => {
@@ -77,6 +87,18 @@ pub fn run() -> i32 {
             }
         }
     }
+}
+
+/// Makes a file-size limit (`ulimit -f`) reached while writing an error of that write (EFBIG,
+/// "File too large"), reported with the file's path after the temporary file is removed
+/// ([`kinsyn::output`]), instead of the signal SIGXFSZ, whose default is to kill kinsyn on the
+/// spot and leave the temporary file behind.
+#[cfg(unix)]
+fn file_size_limit_is_an_error() {
+    let ignored = std::sync::Arc::new(std::sync::atomic::AtomicBool::new(false));
+    // Registering fails only for the signals that cannot be caught, which SIGXFSZ is not; if
+    // it ever did, the signal would only keep its default.
+    let _ = signal_hook::flag::register(signal_hook::consts::SIGXFSZ, ignored);
 }
 
 /// A command-line mistake in one line: what is missing or wrong, with the names of the
@@ -208,9 +230,11 @@ fn execute(command: Command) -> Result<String, CliError> {
             },
             as_json,
         ),
-        Command::Build { spec, output } => {
-            manipulator::build_command(&spec.into(), output.as_deref())
-        }
+        Command::Build {
+            spec,
+            output,
+            force,
+        } => manipulator::build_command(&spec.into(), output.as_deref(), force.force),
         Command::Solve {
             file,
             start,
@@ -271,23 +295,25 @@ fn execute(command: Command) -> Result<String, CliError> {
         },
         Command::Plot(args::PlotCommand::Inverse {
             out,
+            force,
             centre,
             theta,
             phi,
         }) => {
             let c = configurable::numbers("--centre", &centre, 2)?;
-            plot::inverse(&out, (c[0], c[1]), theta, phi)
+            plot::inverse(&out, force.force, (c[0], c[1]), theta, phi)
         }
         Command::Plot(args::PlotCommand::Trajectory {
             out,
+            force,
             steps,
             json: as_json,
-        }) => plot::trajectory(&out, steps, as_json),
+        }) => plot::trajectory(&out, force.force, steps, as_json),
         Command::Plot(args::PlotCommand::Workspace {
             hexa,
             step,
             json: as_json,
-        }) => hexa_plot::workspace(&hexa.file, &hexa.out, (hexa.phi1, hexa.phi2), step, as_json),
+        }) => hexa_plot::workspace(&hexa, step, as_json),
         Command::Plot(args::PlotCommand::Indices {
             hexa,
             z,
@@ -295,8 +321,7 @@ fn execute(command: Command) -> Result<String, CliError> {
             workspace_step,
             json: as_json,
         }) => hexa_plot::indices(
-            &hexa.file,
-            &hexa.out,
+            &hexa,
             &hexa_plot::IndexOptions {
                 phi: (hexa.phi1, hexa.phi2),
                 z,
@@ -310,16 +335,23 @@ fn execute(command: Command) -> Result<String, CliError> {
             radii,
             heights,
             output,
-        } => manipulator::stack_command(&modules, radii, heights, output.as_deref()),
-        Command::Export { file, mjcf } => export::mjcf(&file, &mjcf),
+            force,
+        } => manipulator::stack_command(&modules, radii, heights, output.as_deref(), force.force),
+        Command::Export { file, mjcf, force } => export::mjcf(&file, &mjcf, force.force),
         Command::Sweep {
             command: Some(args::SweepCommand::Report(r)),
             ..
         } => sweep_report::report(&r),
         Command::Sweep {
-            command: Some(args::SweepCommand::Merge { dirs, out, json }),
+            command:
+                Some(args::SweepCommand::Merge {
+                    dirs,
+                    out,
+                    force,
+                    json,
+                }),
             ..
-        } => sweep::merge_command(&dirs, &out, json),
+        } => sweep::merge_command(&dirs, &out, force.force, json),
         Command::Sweep { run, command: None } => {
             let out = run
                 .out
@@ -335,6 +367,7 @@ fn execute(command: Command) -> Result<String, CliError> {
                     shard: run.shard.as_deref(),
                     threads: run.threads,
                     stop_after: run.stop_after,
+                    force: run.force,
                 },
                 run.bench,
                 run.json,

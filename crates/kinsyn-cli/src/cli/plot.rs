@@ -1,15 +1,23 @@
-//! `kinsyn plot`: the figures of paper 003 drawn by kinsyn, as SVG.
+//! `kinsyn plot`: the figures of paper 003 drawn by kinsyn, as SVG; and how every figure is
+//! drawn in memory ([`svg`], [`png`]) and written whole through [`super::output`].
 
+use super::output::OutputFolder;
 use super::{CliError, json};
 use kinsyn::configurable::trajectory::{
     TrajectoryEnd, TrajectoryReport, assemble, follow, paper_input_rates, paper_inputs,
     paper_recurring_intervals,
 };
-use kinsyn::configurable::{CentrePose, Configurable, CornerPose};
+use kinsyn::configurable::{CentrePose, Configurable, CornerPose, InversePosition};
 use nalgebra::Vector2;
+use plotters::coord::Shift;
 use plotters::prelude::*;
 use std::fmt::Write as _;
 use std::path::Path;
+
+/// The figure `kinsyn plot trajectory` writes in its folder.
+const TRAJECTORY_FIGURE: &str = "trajectory-velocities.svg";
+/// The figure `kinsyn plot inverse` writes in its folder.
+const INVERSE_FIGURE: &str = "inverse-configurations.svg";
 
 /// The most instants `--steps` takes.
 pub const MAX_STEPS: usize = 100_000;
@@ -23,19 +31,62 @@ fn table1() -> CornerPose {
     }
 }
 
-/// A figure that could not be drawn or written, as an I/O failure.
+/// A figure that could not be drawn (in memory: a fault of the drawing, not of the input or
+/// of the files, which [`super::output`] reports).
 pub(super) fn draw_error(e: impl std::fmt::Display) -> CliError {
-    CliError::Io(std::io::Error::other(e.to_string()))
+    CliError::Internal(format!("cannot draw the figure: {e}"))
+}
+
+/// A figure as SVG text: `draw` on an SVG canvas of `size` pixels, then presented.
+pub(super) fn svg(
+    size: (u32, u32),
+    draw: impl FnOnce(&DrawingArea<SVGBackend<'_>, Shift>) -> Result<(), CliError>,
+) -> Result<String, CliError> {
+    let mut text = String::new();
+    {
+        let root = SVGBackend::with_string(&mut text, size).into_drawing_area();
+        draw(&root)?;
+        root.present().map_err(draw_error)?;
+    }
+    Ok(text)
+}
+
+/// A figure as PNG bytes: `draw` on an RGB bitmap of `size` pixels, encoded as plotters'
+/// bitmap backend saves a `.png` file (the `image` crate's PNG encoder, default settings).
+pub(super) fn png(
+    size: (u32, u32),
+    draw: impl FnOnce(&DrawingArea<BitMapBackend<'_>, Shift>) -> Result<(), CliError>,
+) -> Result<Vec<u8>, CliError> {
+    use image::ImageEncoder as _;
+    let (w, h) = size;
+    let mut pixels = vec![0u8; 3 * w as usize * h as usize];
+    {
+        let root = BitMapBackend::with_buffer(&mut pixels, size).into_drawing_area();
+        draw(&root)?;
+        root.present().map_err(draw_error)?;
+    }
+    let mut bytes = Vec::new();
+    image::codecs::png::PngEncoder::new(&mut bytes)
+        .write_image(&pixels, w, h, image::ColorType::Rgb8)
+        .map_err(draw_error)?;
+    Ok(bytes)
 }
 
 /// `kinsyn plot trajectory`: paper 003 §5 followed from Table 2's assembly; the corner speeds
-/// against time (like Fig. 12) as `DIR/trajectory-velocities.svg`, the report on stdout.
-pub fn trajectory(out: &Path, steps: usize, as_json: bool) -> Result<String, CliError> {
+/// against time (like Fig. 12) as `DIR/trajectory-velocities.svg` (replacing an existing one
+/// only when `force`), the report on stdout.
+pub fn trajectory(
+    out: &Path,
+    force: bool,
+    steps: usize,
+    as_json: bool,
+) -> Result<String, CliError> {
     if !(2..=MAX_STEPS).contains(&steps) {
         return Err(CliError::Input(format!(
             "--steps {steps}: give 2 to {MAX_STEPS}"
         )));
     }
+    let folder = OutputFolder::check("--out", out, [TRAJECTORY_FIGURE], force)?;
     let m = Configurable::paper003();
     let start = assemble(&m, &paper_inputs(0.0), &table1())
         .ok_or_else(|| CliError::Internal("Table 1's assembly does not close at q(0)".into()))?;
@@ -43,9 +94,9 @@ pub fn trajectory(out: &Path, steps: usize, as_json: bool) -> Result<String, Cli
         .map(|k| std::f64::consts::TAU * k as f64 / steps as f64)
         .collect();
     let report = follow(&m, &start, paper_inputs, paper_input_rates, &times);
-    std::fs::create_dir_all(out)?;
-    let file = out.join("trajectory-velocities.svg");
-    draw_speeds(&report, &file)?;
+    let figure = svg((900, 560), |root| draw_speeds(&report, root))?;
+    folder.create(&[])?;
+    let file = folder.write(TRAJECTORY_FIGURE, figure.as_bytes())?;
     if as_json {
         let v = serde_json::json!({
             "figure": file.display().to_string(),
@@ -121,8 +172,10 @@ pub fn trajectory(out: &Path, steps: usize, as_json: bool) -> Result<String, Cli
 }
 
 /// The corner speeds against time, the end of the followed branch marked.
-fn draw_speeds(report: &TrajectoryReport, file: &Path) -> Result<(), CliError> {
-    let root = SVGBackend::new(file, (900, 560)).into_drawing_area();
+fn draw_speeds<DB: DrawingBackend>(
+    report: &TrajectoryReport,
+    root: &DrawingArea<DB, Shift>,
+) -> Result<(), CliError> {
     root.fill(&WHITE).map_err(draw_error)?;
     let top = report
         .samples
@@ -135,7 +188,7 @@ fn draw_speeds(report: &TrajectoryReport, file: &Path) -> Result<(), CliError> {
         TrajectoryEnd::Ceased { last, .. } => (last * 1.15).min(std::f64::consts::TAU),
         TrajectoryEnd::Completed => std::f64::consts::TAU,
     };
-    let mut chart = ChartBuilder::on(&root)
+    let mut chart = ChartBuilder::on(root)
         .caption(
             "Paper 003 §5: corner speeds along the followed assembly",
             ("sans-serif", 20),
@@ -180,14 +233,20 @@ fn draw_speeds(report: &TrajectoryReport, file: &Path) -> Result<(), CliError> {
         .background_style(WHITE.mix(0.8))
         .border_style(BLACK)
         .draw()
-        .map_err(draw_error)?;
-    root.present().map_err(draw_error)?;
-    Ok(())
+        .map_err(draw_error)
 }
 
 /// `kinsyn plot inverse`: the input sets of a platform pose drawn one panel each (like paper
-/// 003's Fig. 9), as `DIR/inverse-configurations.svg`; default the example of §5.
-pub fn inverse(out: &Path, centre: (f64, f64), theta: f64, phi: f64) -> Result<String, CliError> {
+/// 003's Fig. 9), as `DIR/inverse-configurations.svg` (replacing an existing one only when
+/// `force`); default the example of §5.
+pub fn inverse(
+    out: &Path,
+    force: bool,
+    centre: (f64, f64),
+    theta: f64,
+    phi: f64,
+) -> Result<String, CliError> {
+    let folder = OutputFolder::check("--out", out, [INVERSE_FIGURE], force)?;
     let m = Configurable::paper003();
     let pose = CentrePose {
         centre: Vector2::new(centre.0, centre.1),
@@ -198,17 +257,35 @@ pub fn inverse(out: &Path, centre: (f64, f64), theta: f64, phi: f64) -> Result<S
         .inverse_centre_pose(&pose)
         .map_err(|e| CliError::Input(e.to_string()))?;
     let sets = inverse.sets();
-    std::fs::create_dir_all(out)?;
-    let file = out.join("inverse-configurations.svg");
-    let root = SVGBackend::new(&file, (1000, 1000)).into_drawing_area();
+    let figure = svg((1000, 1000), |root| {
+        draw_inverse(root, &m, &inverse, &sets, (centre, theta, phi))
+    })?;
+    folder.create(&[])?;
+    let file = folder.write(INVERSE_FIGURE, figure.as_bytes())?;
+    Ok(format!(
+        "{} configurations of the inverse position (q in degrees in each panel)\nfigure: {}\n",
+        sets.len(),
+        file.display()
+    ))
+}
+
+/// Fig. 9's panels: for each input set `q` of the pose, the legs (base, elbow, corner) in blue
+/// and the platform in red, with the inputs in degrees.
+fn draw_inverse<DB: DrawingBackend>(
+    root: &DrawingArea<DB, Shift>,
+    m: &Configurable,
+    inverse: &InversePosition,
+    sets: &[[f64; 4]],
+    ((cx, cy), theta, phi): ((f64, f64), f64, f64),
+) -> Result<(), CliError> {
     root.fill(&WHITE).map_err(draw_error)?;
     let root = root
         .titled(
-            &format!("Paper 003 inverse position: C = ({}, {}) mm, θ = {theta}°, φ = {phi}° (eq. 11): {} configurations", centre.0, centre.1, sets.len()),
+            &format!("Paper 003 inverse position: C = ({cx}, {cy}) mm, θ = {theta}°, φ = {phi}° (eq. 11): {} configurations", sets.len()),
             ("sans-serif", 18),
         )
         .map_err(draw_error)?;
-    for (panel, q) in root.split_evenly((4, 4)).iter().zip(&sets) {
+    for (panel, q) in root.split_evenly((4, 4)).iter().zip(sets) {
         let mut chart = ChartBuilder::on(panel)
             .margin(6)
             .build_cartesian_2d(-300.0..300.0, -300.0..300.0)
@@ -246,10 +323,5 @@ pub fn inverse(out: &Path, centre: (f64, f64), theta: f64, phi: f64) -> Result<S
             )])
             .map_err(draw_error)?;
     }
-    root.present().map_err(draw_error)?;
-    Ok(format!(
-        "{} configurations of the inverse position (q in degrees in each panel)\nfigure: {}\n",
-        sets.len(),
-        file.display()
-    ))
+    Ok(())
 }

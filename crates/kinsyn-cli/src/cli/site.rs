@@ -9,11 +9,13 @@
 
 use super::CliError;
 use super::args::Reading;
+use super::output::OutputFolder;
 use kinsyn::catalogue::{Catalogue, Entry};
 use kinsyn::motion::{GroupKind, PatternName, PatternQuery};
 use kinsyn::schematic::{self, escape};
 use kinsyn::synthesis::tables;
 use kinsyn::verification::Verification;
+use rayon::prelude::*;
 use std::collections::{BTreeMap, BTreeSet};
 use std::fmt::Write as _;
 use std::path::Path;
@@ -23,31 +25,26 @@ const CSS: &str = include_str!("site/site.css");
 /// The index page's filter.
 const JS: &str = include_str!("site/site.js");
 
-/// Writes the site of the catalogue (in this reading) into `out`.
-pub(super) fn site(out: &Path, reading: &Reading) -> Result<String, CliError> {
+/// Writes the site of the catalogue (in this reading) into the folder `out` (created if
+/// missing), replacing existing files only when `force`: every file is checked before the
+/// first is written, and each is written whole ([`super::output`]).
+pub(super) fn site(out: &Path, force: bool, reading: &Reading) -> Result<String, CliError> {
     let cat = reading.catalogue()?;
-    let entry_dir = out.join("entry");
-    let written = |path: &Path, r: std::io::Result<()>| {
-        r.map_err(|e| {
-            CliError::Io(std::io::Error::new(
-                e.kind(),
-                format!("cannot write {}: {e}", path.display()),
-            ))
-        })
-    };
-    written(&entry_dir, std::fs::create_dir_all(&entry_dir))?;
-    for (name, text) in [
-        ("site.css", CSS.to_string()),
-        ("site.js", JS.to_string()),
-        ("index.html", index(&cat)),
-    ] {
-        let path = out.join(name);
-        written(&path, std::fs::write(&path, text))?;
-    }
+    let mut files: Vec<(String, String)> = vec![
+        ("site.css".into(), CSS.to_string()),
+        ("site.js".into(), JS.to_string()),
+        ("index.html".into(), index(&cat)),
+    ];
     for e in &cat.entries {
-        let path = entry_dir.join(format!("{}.html", e.id));
-        written(&path, std::fs::write(&path, entry_page(e)?))?;
+        files.push((format!("entry/{}.html", e.id), entry_page(e)?));
     }
+    let folder = OutputFolder::check("--out", out, files.iter().map(|(name, _)| name), force)?;
+    folder.create(&["entry"])?;
+    // Each file is synced to the disk before its rename (a few ms each): written in
+    // parallel, the waits overlap.
+    files
+        .par_iter()
+        .try_for_each(|(name, text)| folder.write(name, text.as_bytes()).map(drop))?;
     Ok(format!(
         "wrote the catalogue site ({} entries) to {}; open {}\n",
         cat.entries.len(),

@@ -9,8 +9,8 @@ mod selection;
 mod table;
 
 pub use files::{
-    CHECKPOINT, Checkpoint, FORMAT, JSONL, MANIFEST, Manifest, PARQUET, read_manifest, read_rows,
-    row_line, write_results,
+    CHECKPOINT, Checkpoint, FILES, FORMAT, JSONL, MANIFEST, Manifest, PARQUET, read_manifest,
+    read_rows, row_line, write_results,
 };
 pub use merge::merge;
 pub use run::{SweepOptions, SweepOutcome, sweep};
@@ -45,6 +45,8 @@ pub struct Request<'a> {
     pub threads: Option<usize>,
     /// `--stop-after` (hidden; for tests of resuming).
     pub stop_after: Option<usize>,
+    /// `--force`: replace another sweep's files, or files of none, in the directory.
+    pub force: bool,
 }
 
 /// The settings of `--legs`, `--actuated` and `--seed`, checked: 3 to 6 legs (as
@@ -127,6 +129,7 @@ pub fn options(catalogue: &Catalogue, request: &Request) -> Result<SweepOptions,
         shard,
         threads: request.threads,
         stop_after: request.stop_after,
+        force: request.force,
     })
 }
 
@@ -272,13 +275,14 @@ fn summary(o: &SweepOutcome, bench: bool) -> String {
     s
 }
 
-/// `kinsyn sweep merge DIR… --out OUT`.
+/// `kinsyn sweep merge DIR… --out OUT [--force]`.
 pub(super) fn merge_command(
     dirs: &[PathBuf],
     out: &Path,
+    force: bool,
     as_json: bool,
 ) -> Result<String, CliError> {
-    let manifest = merge(dirs, out)?;
+    let manifest = merge(dirs, out, force)?;
     if as_json {
         return Ok(json(&manifest));
     }

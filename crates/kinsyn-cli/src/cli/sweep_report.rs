@@ -1,7 +1,8 @@
 //! `kinsyn sweep report`: the ranking of a sweep's designs ([`kinsyn::sweep::ranking`]) as a
 //! Markdown report with two figures (SVG and PNG), and a short summary on stdout.
 
-use super::plot::draw_error;
+use super::output::OutputFolder;
+use super::plot::{draw_error, png, svg};
 use super::{CliError, json};
 use kinsyn::sweep::ranking::{RankedDesign, Ranking};
 use kinsyn::sweep::{DesignRow, SweepSettings};
@@ -14,16 +15,23 @@ use std::path::{Path, PathBuf};
 /// The most best designs `--top` keeps per number of inputs.
 pub const MAX_TOP: usize = 1000;
 
+/// The report's figures, each written as `NAME.svg` and `NAME.png`.
+const FIGURES: [&str; 2] = ["capacity-by-family", "capacity-vs-inputs"];
+/// The report's text.
+const MARKDOWN: &str = "report.md";
+
 /// `kinsyn sweep report`'s arguments.
 #[derive(Debug, clap::Args)]
 pub(super) struct ReportArgs {
     /// A sweep's results: its folder (designs.jsonl is read there, and the settings from
     /// sweep.json when present) or a .jsonl file of design rows.
     results: PathBuf,
-    /// The folder for report.md and the figures (created if missing). Default: report/ in
-    /// the results folder (beside the .jsonl file when a file is given).
+    /// The folder for report.md and the figures (created if missing, not its parent).
+    /// Default: report/ in the results folder (beside the .jsonl file when a file is given).
     #[arg(long, value_name = "DIR")]
     out: Option<PathBuf>,
+    #[command(flatten)]
+    force: super::args::Force,
     /// The best designs kept per number of inputs.
     #[arg(long, value_name = "K", default_value_t = 5,
           value_parser = clap::value_parser!(u32).range(1..=MAX_TOP as i64))]
@@ -54,36 +62,33 @@ pub(super) fn report(args: &ReportArgs) -> Result<String, CliError> {
         .out
         .clone()
         .unwrap_or_else(|| results.folder.join("report"));
-    if out.exists() && !out.is_dir() {
-        return Err(CliError::Input(format!(
-            "--out {}: is a file, give a folder",
-            out.display()
-        )));
-    }
-    std::fs::create_dir_all(&out)?;
+    let folder = OutputFolder::check(
+        "--out",
+        &out,
+        std::iter::once(MARKDOWN.to_string()).chain(
+            FIGURES
+                .iter()
+                .flat_map(|n| [format!("{n}.svg"), format!("{n}.png")]),
+        ),
+        args.force.force,
+    )?;
     super::hexa_plot::register_font();
-    let mut files = Vec::new();
-    for (name, size) in [
-        ("capacity-by-family", family_figure_size(&ranking)),
-        ("capacity-vs-inputs", (900, 600)),
-    ] {
-        let svg = out.join(format!("{name}.svg"));
-        let png = out.join(format!("{name}.png"));
-        {
-            let root = SVGBackend::new(&svg, size).into_drawing_area();
-            draw(name, &root, &ranking, &results.rows)?;
-            root.present().map_err(draw_error)?;
-        }
-        {
-            let root = BitMapBackend::new(&png, size).into_drawing_area();
-            draw(name, &root, &ranking, &results.rows)?;
-            root.present().map_err(draw_error)?;
-        }
-        files.extend([svg, png]);
+    let mut figures = Vec::new();
+    for (name, size) in FIGURES
+        .into_iter()
+        .zip([family_figure_size(&ranking), (900, 600)])
+    {
+        let text = svg(size, |root| draw(name, root, &ranking, &results.rows))?;
+        figures.push((format!("{name}.svg"), text.into_bytes()));
+        let bytes = png(size, |root| draw(name, root, &ranking, &results.rows))?;
+        figures.push((format!("{name}.png"), bytes));
     }
-    let markdown = out.join("report.md");
-    std::fs::write(&markdown, markdown_report(&results, &ranking))?;
-    files.insert(0, markdown);
+    let markdown = markdown_report(&results, &ranking);
+    folder.create(&[])?;
+    let mut files = vec![folder.write(MARKDOWN, markdown.as_bytes())?];
+    for (name, bytes) in &figures {
+        files.push(folder.write(name, bytes)?);
+    }
     if args.json {
         return Ok(json(&serde_json::json!({
             "results": results.file.display().to_string(),

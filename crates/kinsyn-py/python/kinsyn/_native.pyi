@@ -49,9 +49,10 @@ def sweep_json(
     shard: Optional[str] = None,
     threads: Optional[int] = None,
     stop_after: Optional[int] = None,
+    force: bool = False,
 ) -> str: ...
 def sweep_merge_json(
-    dirs: List[Union[str, PathLike[str]]], out: Union[str, PathLike[str]]
+    dirs: List[Union[str, PathLike[str]]], out: Union[str, PathLike[str]], force: bool = False
 ) -> str: ...
 def sweep_partitions_json(
     count: int,

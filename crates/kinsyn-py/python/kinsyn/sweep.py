@@ -20,6 +20,7 @@ file system the client can read for the merge::
 
     client = Client("tcp://scheduler:8786")          # or Client(LocalCluster(...))
     out = Path("/shared/sweep-4legs")
+    out.mkdir(parents=True, exist_ok=True)           # kinsyn creates out/shardK, not out
     parts = ks.partitions(64, legs=4, actuated=(1,))
     futures = client.map(ks.run, parts, [out / f"shard{p.index}" for p in parts], threads=1)
     client.gather(futures)                           # a lost worker: resubmit, it resumes
@@ -98,10 +99,15 @@ class Partition:
         return f"{self.index}/{self.count}"
 
     def run(
-        self, out: PathType, *, threads: Optional[int] = None, stop_after: Optional[int] = None
+        self,
+        out: PathType,
+        *,
+        threads: Optional[int] = None,
+        stop_after: Optional[int] = None,
+        force: bool = False,
     ) -> "SweepResult":
         """Runs (or resumes) this shard into the directory ``out``: :func:`run`."""
-        return run(self, out, threads=threads, stop_after=stop_after)
+        return run(self, out, threads=threads, stop_after=stop_after, force=force)
 
 
 @dataclass(frozen=True)
@@ -186,14 +192,17 @@ def run(
     chains: Optional[Sequence[str]] = None,
     family: Optional[str] = None,
     stop_after: Optional[int] = None,
+    force: bool = False,
 ) -> SweepResult:
-    """Runs the shard ``partition`` of a sweep into the directory ``out`` (created if missing),
+    """Runs the shard ``partition`` of a sweep into the directory ``out`` (created if missing;
+    its parent must exist),
     or with ``partition=None`` the whole sweep given by ``legs`` (default 3), ``actuated``
     (default ``(1, 2)``), ``seed``, ``chains`` and ``family`` as for :func:`partitions`
     (``kinsyn sweep --out OUT [--shard K/N] … --json``). ``threads``: worker threads (``None``:
     one per core). Resumable: a directory left by an interrupted run of the same sweep is
     finished, one already complete is left as it is (``already_complete``); one holding
-    another sweep is refused. ``stop_after`` stops once that many rows are done, as an
+    another sweep's files, or files of none, is refused unless ``force`` (``--force``), which
+    starts this sweep afresh there. ``stop_after`` stops once that many rows are done, as an
     interruption would. The GIL is released while the designs are evaluated."""
     selection = (legs, actuated, seed, chains, family)
     if partition is not None:
@@ -218,6 +227,7 @@ def run(
             shard,
             threads,
             stop_after,
+            force,
         )
     )
     return SweepResult(
@@ -237,11 +247,15 @@ def run(
     )
 
 
-def merge(dirs: Sequence[PathType], out: PathType) -> Dict[str, Any]:
+def merge(dirs: Sequence[PathType], out: PathType, *, force: bool = False) -> Dict[str, Any]:
     """Merges the complete shard directories ``dirs`` of one sweep (shards 1/N … N/N, each
-    once, any order) into ``out``: the files one run of the whole sweep writes, byte for byte
-    (``kinsyn sweep merge DIRS… --out OUT``). Returns the merged manifest (``sweep.json``)."""
-    return json.loads(_native.sweep_merge_json([fspath(d) for d in dirs], fspath(out)))
+    once, any order) into ``out`` (created if missing; its parent must exist): the files one
+    run of the whole sweep writes, byte for byte (``kinsyn sweep merge DIRS… --out OUT``).
+    A sweep's file already in ``out`` is refused unless ``force`` (``--force``), which
+    replaces it. Returns the merged manifest (``sweep.json``)."""
+    return json.loads(
+        _native.sweep_merge_json([fspath(d) for d in dirs], fspath(out), force)
+    )
 
 
 def _has_pyarrow() -> bool:

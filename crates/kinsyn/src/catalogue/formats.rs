@@ -2,6 +2,7 @@
 //! `chains.csv`, `README.md`, and the Markdown tables kept in `docs/deviations.md`.
 
 use super::{Catalogue, Entry, FORMAT, LoadError, TableCount};
+use crate::output::{self, OutputError, Overwrite};
 use crate::paper;
 use crate::paper::DifferenceKind;
 use crate::synthesis::{self, Options, TABLES, tables};
@@ -432,21 +433,25 @@ impl Catalogue {
         s
     }
 
-    /// Writes `chains.json`, `chains.csv` and `README.md` into `dir`, creating it.
+    /// The files [`Catalogue::write`] writes, in its folder.
+    pub const FILES: [&'static str; 3] = ["chains.json", "chains.csv", "README.md"];
+
+    /// Writes `chains.json`, `chains.csv` and `README.md` into the folder `dir`, creating it if
+    /// missing (only it: its parent must exist). All three are checked before any is written:
+    /// with [`Overwrite::Refuse`] an existing one refuses them all. Each file is written whole
+    /// or not at all ([`crate::output`]).
     ///
     /// # Errors
-    /// Any I/O error, with the path that failed.
-    pub fn write(&self, dir: &Path) -> Result<(), std::io::Error> {
-        std::fs::create_dir_all(dir)
-            .map_err(|e| std::io::Error::new(e.kind(), format!("{}: {e}", dir.display())))?;
-        for (name, text) in [
-            ("chains.json", self.to_json()),
-            ("chains.csv", self.to_csv()),
-            ("README.md", self.readme()),
-        ] {
-            let path = dir.join(name);
-            std::fs::write(&path, text)
-                .map_err(|e| std::io::Error::new(e.kind(), format!("{}: {e}", path.display())))?;
+    /// The [`OutputError`] of the first file or folder that fails, with its path.
+    pub fn write(&self, dir: &Path, overwrite: Overwrite) -> Result<(), OutputError> {
+        output::check_folder(dir)?;
+        for name in Self::FILES {
+            output::check_file(&dir.join(name), overwrite)?;
+        }
+        let texts = [self.to_json(), self.to_csv(), self.readme()];
+        output::create_folder(dir)?;
+        for (name, text) in Self::FILES.into_iter().zip(texts) {
+            output::write(&dir.join(name), text.as_bytes(), overwrite)?;
         }
         Ok(())
     }

@@ -14,6 +14,7 @@ pub use modes::{
 };
 
 use super::CliError;
+use super::output::OutputFile;
 use kinsyn::manipulator::build::{BuildField, BuildSpec, build};
 use kinsyn::manipulator::file::Description;
 use kinsyn::manipulator::{Manipulator, ManipulatorError, file};
@@ -184,14 +185,22 @@ pub fn build_checked(spec: &BuildSpec) -> Result<(Description, Manipulator), Cli
     Ok((description, m))
 }
 
-/// `kinsyn build`: writes a description (to `output`, or returns it for stdout).
-pub fn build_command(spec: &BuildSpec, output: Option<&Path>) -> Result<String, CliError> {
+/// `kinsyn build`: writes a description (to `output`, replacing an existing file only when
+/// `force`, or returns it for stdout).
+pub fn build_command(
+    spec: &BuildSpec,
+    output: Option<&Path>,
+    force: bool,
+) -> Result<String, CliError> {
+    let target = output
+        .map(|path| OutputFile::check("--output", path, force))
+        .transpose()?;
     let (description, m) = build_checked(spec)?;
     let text = description.to_json();
-    match output {
-        Some(path) => {
-            std::fs::write(path, &text)
-                .map_err(|e| std::io::Error::new(e.kind(), format!("{}: {e}", path.display())))?;
+    match target {
+        Some(target) => {
+            target.write(text.as_bytes())?;
+            let path = target.path();
             let mobility = m.mechanism().mobility(&m.reference(), &[]).dof;
             let (twists, _) = m.platform_twists(&m.reference(), &[]);
             let dof = twists.ncols();
@@ -269,14 +278,19 @@ fn body_names(m: &Manipulator) -> String {
 }
 
 /// `kinsyn stack`: a series-parallel stack of three-legged modules as a description, checked
-/// by reading it back (to `output`, or returned for stdout).
+/// by reading it back (to `output`, replacing an existing file only when `force`, or returned
+/// for stdout).
 pub fn stack_command(
     modules: &[String],
     radii: Vec<f64>,
     heights: Vec<f64>,
     output: Option<&Path>,
+    force: bool,
 ) -> Result<String, CliError> {
     use kinsyn::manipulator::stacking::{ModuleKind, StackSpec, stack};
+    let target = output
+        .map(|path| OutputFile::check("--output", path, force))
+        .transpose()?;
     let modules = modules
         .iter()
         .map(|t| match t.trim().to_ascii_uppercase().as_str() {
@@ -296,10 +310,10 @@ pub fn stack_command(
     Manipulator::from_bodies(&d)
         .map_err(|e| CliError::Internal(format!("the stack written does not read back: {e}")))?;
     let text = d.to_json();
-    match output {
-        Some(path) => {
-            std::fs::write(path, &text)
-                .map_err(|e| std::io::Error::new(e.kind(), format!("{}: {e}", path.display())))?;
+    match target {
+        Some(target) => {
+            target.write(text.as_bytes())?;
+            let path = target.path();
             Ok(format!(
                 "wrote {} ({} moving bodies) to {}\n",
                 d.name,

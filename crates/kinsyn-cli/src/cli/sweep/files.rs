@@ -19,6 +19,9 @@ pub const JSONL: &str = "designs.jsonl";
 pub const PARQUET: &str = "designs.parquet";
 /// The rows finished so far by a run under way, in any order.
 pub const CHECKPOINT: &str = "checkpoint.jsonl";
+/// Every file a sweep writes into its directory: what a fresh start or a merge may not find
+/// there without `--force`.
+pub const FILES: [&str; 4] = [MANIFEST, JSONL, PARQUET, CHECKPOINT];
 
 /// `sweep.json`: what a sweep directory holds. Two directories with equal manifests hold the
 /// same rows (a row depends on its design and the settings only).
@@ -175,6 +178,12 @@ impl Checkpoint {
     /// [`CliError::Io`] when it cannot be opened or cut.
     pub fn open(dir: &Path, keep: u64) -> Result<Self, CliError> {
         let path = dir.join(CHECKPOINT);
+        if std::fs::symlink_metadata(&path).is_ok_and(|m| m.file_type().is_symlink()) {
+            return Err(CliError::Input(format!(
+                "{}: is a symbolic link; kinsyn does not write through one",
+                path.display()
+            )));
+        }
         let file = std::fs::OpenOptions::new()
             .create(true)
             .append(true)
@@ -204,17 +213,34 @@ pub(super) fn io_error(path: &Path, e: &std::io::Error) -> CliError {
     ))
 }
 
-/// Writes `bytes` to `dir/name` through a temporary file renamed into place, so that the
-/// file is either the old one or the whole new one.
+/// Writes `bytes` to `dir/name` whole or not at all ([`kinsyn::output::write`]: a temporary
+/// file renamed into place), replacing the file there: one of the sweep's own files, whose
+/// replacement the caller has decided (a fresh start or a merge checked for [`FILES`], a run
+/// finishing its own sweep).
 ///
 /// # Errors
-/// [`CliError::Io`] when it cannot be written.
+/// [`CliError::Io`] when it cannot be written; [`CliError::Input`] when a folder is in the way.
 pub fn write_atomic(dir: &Path, name: &str, bytes: &[u8]) -> Result<(), CliError> {
-    let path = dir.join(name);
-    let tmp = dir.join(format!(".{name}.tmp"));
-    std::fs::write(&tmp, bytes)
-        .and_then(|()| std::fs::rename(&tmp, &path))
-        .map_err(|e| io_error(&path, &e))
+    kinsyn::output::write(&dir.join(name), bytes, kinsyn::output::Overwrite::Replace)
+        .map_err(|e| crate::cli::output::error("--out", dir, e))
+}
+
+/// Removes the rows and checkpoint a directory holds (of another sweep, or of none, that
+/// `--force` replaces), so that a fresh start never shows them beside its new manifest.
+///
+/// # Errors
+/// [`CliError::Io`] when one cannot be removed.
+pub fn clear_rows(dir: &Path) -> Result<(), CliError> {
+    for name in [JSONL, PARQUET, CHECKPOINT] {
+        let path = dir.join(name);
+        match std::fs::remove_file(&path) {
+            Err(e) if e.kind() != std::io::ErrorKind::NotFound => {
+                return Err(io_error(&path, &e));
+            }
+            _ => {}
+        }
+    }
+    Ok(())
 }
 
 /// Writes the results of a finished sweep part to `dir`: `designs.jsonl` and `designs.parquet`

@@ -4,6 +4,7 @@
 use super::files::{self, Manifest, read_manifest, read_rows, write_results};
 use super::selection::Shard;
 use crate::cli::CliError;
+use crate::cli::output::OutputFolder;
 use kinsyn::sweep::DesignRow;
 use std::path::{Path, PathBuf};
 
@@ -63,15 +64,17 @@ fn shard_manifests(dirs: &[PathBuf]) -> Result<Vec<(&Path, Manifest, Shard)>, Cl
 }
 
 /// Merges the shard directories `dirs` of one sweep (the same settings and selection, shards
-/// 1 to N each once, each complete) into `out`: the same `designs.jsonl`, `designs.parquet`
-/// and `sweep.json` as one run of the whole sweep. Returns the merged manifest.
+/// 1 to N each once, each complete) into the folder `out` (created if missing, not its
+/// parent): the same `designs.jsonl`, `designs.parquet` and `sweep.json` as one run of the
+/// whole sweep. A sweep's file already in `out` ([`FILES`](super::FILES)) is refused unless
+/// `force`, which replaces it. Returns the merged manifest.
 ///
 /// # Errors
 /// [`CliError::Input`] for a directory that is not a sweep or not a shard, an incomplete
 /// shard, shards of different sweeps, a missing or repeated shard, rows that do not match
-/// their manifest, or an `out` holding another sweep; [`CliError::Io`] when `out` cannot be
-/// written.
-pub fn merge(dirs: &[PathBuf], out: &Path) -> Result<Manifest, CliError> {
+/// their manifest, or an `out` holding a sweep's files (without `force`), no folder or with a
+/// missing parent; [`CliError::Io`] when `out` cannot be written.
+pub fn merge(dirs: &[PathBuf], out: &Path, force: bool) -> Result<Manifest, CliError> {
     let shards = shard_manifests(dirs)?;
     let Some((_, first, first_shard)) = shards.first() else {
         return Err(CliError::Input(
@@ -110,15 +113,7 @@ pub fn merge(dirs: &[PathBuf], out: &Path) -> Result<Manifest, CliError> {
             whole.designs.saturating_sub(1)
         )));
     }
-    if let Some(found) = read_manifest(out)?
-        && !found.same_run(&whole)
-    {
-        return Err(CliError::Input(format!(
-            "{} holds another sweep; give another --out DIR",
-            out.display()
-        )));
-    }
-    std::fs::create_dir_all(out).map_err(|e| files::io_error(out, &e))?;
+    OutputFolder::check("--out", out, files::FILES, force)?.create(&[])?;
     write_results(out, &whole, &rows)?;
     Ok(Manifest {
         complete: true,

@@ -4,6 +4,7 @@
 use super::files::{self, Checkpoint, Manifest, read_manifest, read_rows, write_results};
 use super::selection::{Shard, SweepSelection};
 use crate::cli::CliError;
+use crate::cli::output::{self, OutputFolder};
 use kinsyn::catalogue::Catalogue;
 use kinsyn::sweep::{Design, DesignRow, SweepSettings};
 use rayon::prelude::*;
@@ -28,6 +29,10 @@ pub struct SweepOptions {
     /// Stop, as an interruption would, once this many rows are checkpointed by this run
     /// (for tests of resuming).
     pub stop_after: Option<usize>,
+    /// `--force`: a directory holding another sweep's files, or files of none, is started
+    /// afresh (those files replaced) instead of refused. The same sweep is resumed or left
+    /// complete either way.
+    pub force: bool,
 }
 
 /// What a run did: its counts and timings (the `--json` summary and `--bench`'s figures).
@@ -97,15 +102,18 @@ fn difference(found: &Manifest, wanted: &Manifest) -> Option<String> {
     })
 }
 
-/// Runs the sweep of `options` over `catalogue` into `dir` (created if missing): resumes an
-/// interrupted run of the same sweep there from its checkpoint, evaluates the remaining
-/// designs in parallel (each row appended to the checkpoint as soon as it is done, `progress`
-/// advanced), then writes the result files (`files::write_results`). A directory already
-/// complete with the same sweep is left as it is.
+/// Runs the sweep of `options` over `catalogue` into `dir` (created if missing, not its
+/// parent): resumes an interrupted run of the same sweep there from its checkpoint, evaluates
+/// the remaining designs in parallel (each row appended to the checkpoint as soon as it is
+/// done, `progress` advanced), then writes the result files (`files::write_results`). A
+/// directory already complete with the same sweep is left as it is. A fresh start refuses a
+/// directory holding another sweep or any of the sweep's files ([`FILES`](super::FILES))
+/// unless `options.force`, which replaces them.
 ///
 /// # Errors
 /// [`CliError::Input`] for an empty selection, bad `--threads`, a directory holding another
-/// sweep or a damaged checkpoint; [`CliError::Io`] when the directory cannot be written.
+/// sweep or files of one (without `force`), a path that is no folder or whose parent is
+/// missing, or a damaged checkpoint; [`CliError::Io`] when the directory cannot be written.
 pub fn sweep(
     catalogue: &Catalogue,
     dir: &Path,
@@ -136,21 +144,37 @@ pub fn sweep(
         complete: false,
         already_complete: false,
     };
-    let found = read_manifest(dir)?;
-    if let Some(found) = &found {
-        if let Some(why) = difference(found, &manifest) {
-            return Err(CliError::Input(format!(
-                "{} holds another sweep: {why}; give another --out DIR, or the options it was written with",
-                dir.display()
-            )));
-        }
-        if found.complete {
-            outcome.complete = true;
-            outcome.already_complete = true;
-            return Ok(outcome);
-        }
+    kinsyn::output::check_folder(dir).map_err(|e| output::error("--out", dir, e))?;
+    let found = match read_manifest(dir) {
+        // With --force a manifest that does not read is replaced too.
+        Err(CliError::Input(_)) if options.force => None,
+        other => other?,
+    };
+    let found = match found {
+        Some(found) => match difference(&found, &manifest) {
+            None => Some(found),
+            // Replaced: this sweep starts afresh there.
+            Some(_) if options.force => None,
+            Some(why) => {
+                return Err(CliError::Input(format!(
+                    "{} holds another sweep: {why}; give another --out DIR, the options it was written with, or --force to replace it",
+                    dir.display()
+                )));
+            }
+        },
+        None => None,
+    };
+    if let Some(found) = &found
+        && found.complete
+    {
+        outcome.complete = true;
+        outcome.already_complete = true;
+        return Ok(outcome);
     }
-    std::fs::create_dir_all(dir).map_err(|e| files::io_error(dir, &e))?;
+    if found.is_none() {
+        OutputFolder::check("--out", dir, files::FILES, options.force)?.create(&[])?;
+        files::clear_rows(dir)?;
+    }
     let checkpoint_path = dir.join(files::CHECKPOINT);
     let (done, keep) = if found.is_some() && checkpoint_path.exists() {
         checkpoint_rows(&checkpoint_path, &mine)?
