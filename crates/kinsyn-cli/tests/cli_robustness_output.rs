@@ -331,6 +331,9 @@ fn an_edited_checkpoint_row_is_refused_and_never_reaches_the_results() {
     assert!(!out.join("designs.jsonl").exists());
 }
 
+/// An edit of a row's JSON.
+type Edit = Box<dyn Fn(&mut Value)>;
+
 #[test]
 fn merge_and_report_refuse_an_edited_row_with_its_file_and_line() {
     let dir = tempfile::tempdir().unwrap();
@@ -342,7 +345,7 @@ fn merge_and_report_refuse_an_edited_row_with_its_file_and_line() {
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     let rows = whole.join("designs.jsonl");
     // Each edit keeps the row well-formed JSON of the right types.
-    let edits: Vec<(&str, Box<dyn Fn(&mut Value)>, &str)> = vec![
+    let edits: Vec<(&str, Edit, &str)> = vec![
         (
             "dof 99",
             Box::new(|v| v["dof"] = 99.into()),
@@ -393,7 +396,7 @@ fn merge_and_report_refuse_an_edited_row_with_its_file_and_line() {
         assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     }
     edit_line(&shards[1].join("designs.jsonl"), 3, |v| {
-        v["dof"] = 99.into()
+        v["dof"] = 99.into();
     });
     let merged = dir.path().join("merged");
     let o = kinsyn(&[
@@ -560,6 +563,14 @@ fn the_row_checker_is_one_public_function_of_the_library() {
         assert_eq!(e.line, 3, "{e}");
         assert!(e.to_string().contains(needle), "{needle:?} not in {e}");
     }
+}
+
+#[test]
+fn the_row_checker_refuses_patterns_and_lock_sets_that_disagree() {
+    let catalogue = kinsyn::catalogue::Catalogue::committed().unwrap();
+    let known = Known::catalogue(&catalogue);
+    let line = |r: &DesignRow| serde_json::to_string(r).unwrap();
+    let good = ups_row();
     let mut wrong_dof = ups_row();
     wrong_dof.non_groups[0].dof = 3;
     let e = known.parse_rows(&line(&wrong_dof)).unwrap_err();
@@ -604,7 +615,12 @@ fn the_row_checker_is_one_public_function_of_the_library() {
     );
     let e = known.parse_rows("{\"design\": 1}").unwrap_err();
     assert!(matches!(e.fault, RowFault::NotARow(_)), "{e}");
-    // Against a sweep's designs: the index must be the design's.
+}
+
+#[test]
+fn against_a_sweep_a_row_is_the_design_of_its_index() {
+    let catalogue = kinsyn::catalogue::Catalogue::committed().unwrap();
+    let line = |r: &DesignRow| serde_json::to_string(r).unwrap();
     let settings = kinsyn::sweep::SweepSettings {
         actuated_per_leg: vec![1],
         ..Default::default()
@@ -699,7 +715,7 @@ fn export_escapes_the_path_it_echoes_and_the_names_it_writes() {
 // ---------------------------------------------------------------------------------------------
 // 4. Text in documents: Markdown, HTML, SVG, XML.
 
-/// `line` without its Markdown code spans (CommonMark: a run of n backticks opens one, the
+/// `line` without its Markdown code spans (`CommonMark`: a run of n backticks opens one, the
 /// next run of exactly n closes it; an unclosed run is text).
 fn outside_code_spans(line: &str) -> String {
     let mut out = String::new();
@@ -720,12 +736,11 @@ fn outside_code_spans(line: &str) -> String {
             }
             search = at + n;
         };
-        match close {
-            Some(at) => rest = &after[at + run..],
-            None => {
-                out.push_str(&rest[start..start + run]);
-                rest = after;
-            }
+        if let Some(at) = close {
+            rest = &after[at + run..];
+        } else {
+            out.push_str(&rest[start..start + run]);
+            rest = after;
         }
     }
     out.push_str(rest);
@@ -828,11 +843,8 @@ fn the_report_has_no_markup_from_its_rows_or_file_name() {
 fn svg_drawn_by_plotters_needs_the_characters_made_visible() {
     use plotters::prelude::*;
     // The font the command registers for its figures' text (plotters lays captions out).
-    let _ = plotters::style::register_font(
-        "sans-serif",
-        FontStyle::Normal,
-        dejavu::sans::regular(),
-    );
+    let _ =
+        plotters::style::register_font("sans-serif", FontStyle::Normal, dejavu::sans::regular());
     let draw = |caption: &str| {
         let mut svg = String::new();
         {

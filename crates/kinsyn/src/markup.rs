@@ -154,8 +154,9 @@ pub fn escape(text: &str) -> String {
     .into_owned()
 }
 
-/// Whether `c` means something to Markdown (CommonMark and GitHub's tables, strikethrough and
-/// math) where it may stand in a line of text: it is written with a backslash.
+/// Whether `c` means something to Markdown (the `CommonMark` syntax, and GitHub's tables,
+/// strikethrough and math) where it may stand in a line of text: it is written with a
+/// backslash.
 fn is_markdown_punctuation(c: char) -> bool {
     matches!(
         c,
