@@ -594,7 +594,19 @@ fn the_row_checker_refuses_patterns_and_lock_sets_that_disagree() {
     let mut out_of_order = ups_row();
     out_of_order.groups[1].lock_sets = vec!["P2.3 P1.3 P3.3".into()];
     let e = known.parse_rows(&line(&out_of_order)).unwrap_err();
-    assert!(e.to_string().contains("in that order"), "{e}");
+    assert!(
+        e.to_string()
+            .contains("groups[1].lock_sets[0]: \"P2.3 P1.3 P3.3\" is not '-' or labels of the inputs (P1.3 P2.3 P3.3) in that order"),
+        "{e}"
+    );
+    let mut twice = ups_row();
+    twice.non_groups[1].lock_sets[2] = "P1.3".into();
+    let e = known.parse_rows(&line(&twice)).unwrap_err();
+    assert!(
+        e.to_string()
+            .contains("non_groups[1].lock_sets[2]: \"P1.3\" is listed twice"),
+        "{e}"
+    );
     let mut parameters = ups_row();
     parameters.groups[1].parameters = Some("centre".into());
     let e = known.parse_rows(&line(&parameters)).unwrap_err();

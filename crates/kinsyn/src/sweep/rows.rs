@@ -320,7 +320,7 @@ fn check_patterns(row: &DesignRow, inputs: &[String]) -> Result<(), FieldFault> 
         let mut seen: HashSet<(&str, Option<&str>)> = HashSet::with_capacity(reached.len());
         for (i, r) in reached.iter().enumerate() {
             let at = |f: &str| format!("{list}[{i}].{f}");
-            let name = check_reached(r, groups, inputs).map_err(|(f, why)| (at(f), why))?;
+            let name = check_reached(r, groups, inputs).map_err(|(f, why)| (at(&f), why))?;
             if !seen.insert((r.pattern.as_str(), r.parameters.as_deref())) {
                 return Err((
                     at("pattern"),
@@ -375,9 +375,7 @@ fn check_patterns(row: &DesignRow, inputs: &[String]) -> Result<(), FieldFault> 
             ),
         ));
     }
-    for (i, set) in row.singular_lock_sets.iter().enumerate() {
-        check_lock_set(set, inputs).map_err(|why| (format!("singular_lock_sets[{i}]"), why))?;
-    }
+    check_lock_sets("singular_lock_sets", &row.singular_lock_sets, inputs)?;
     if row.singular_lock_sets.len() > row.singular
         || (row.singular > 0 && row.singular_lock_sets.is_empty())
     {
@@ -405,17 +403,14 @@ fn check_patterns(row: &DesignRow, inputs: &[String]) -> Result<(), FieldFault> 
 }
 
 /// Checks one pattern reached and returns its name.
-fn check_reached(
-    r: &Reached,
-    group: bool,
-    inputs: &[String],
-) -> Result<PatternName, (&'static str, String)> {
+fn check_reached(r: &Reached, group: bool, inputs: &[String]) -> Result<PatternName, FieldFault> {
+    let fault = |field: &str, why: String| (field.to_string(), why);
     let name: PatternName = r
         .pattern
         .parse()
-        .map_err(|_| ("pattern", format!("{:?} is not a pattern name", r.pattern)))?;
+        .map_err(|_| fault("pattern", format!("{:?} is not a pattern name", r.pattern)))?;
     if name.to_string() != r.pattern {
-        return Err((
+        return Err(fault(
             "pattern",
             format!(
                 "{:?} is not written as kinsyn writes it ({name})",
@@ -436,7 +431,7 @@ fn check_reached(
             rotations,
         } if !group => (translations + rotations, false),
         _ => {
-            return Err((
+            return Err(fault(
                 "pattern",
                 format!(
                     "{:?} is {} pattern",
@@ -447,7 +442,7 @@ fn check_reached(
         }
     };
     if r.dof != dimension {
-        return Err((
+        return Err(fault(
             "dof",
             format!("{} is not the dimension of {name} ({dimension})", r.dof),
         ));
@@ -455,7 +450,7 @@ fn check_reached(
     if let Some(p) = &r.parameters
         && (!has_parameters || p.trim().is_empty() || p.chars().any(crate::markup::is_hidden))
     {
-        return Err((
+        return Err(fault(
             "parameters",
             if has_parameters {
                 format!("{p:?} is not one line of text")
@@ -465,7 +460,7 @@ fn check_reached(
         ));
     }
     if r.lock_sets.is_empty() || r.lock_sets.len() > r.subsets {
-        return Err((
+        return Err(fault(
             "lock_sets",
             format!(
                 "{} minimal lock sets for {} lock subsets",
@@ -474,13 +469,20 @@ fn check_reached(
             ),
         ));
     }
-    for (k, set) in r.lock_sets.iter().enumerate() {
-        check_lock_set(set, inputs).map_err(|why| ("lock_sets", format!("[{k}]: {why}")))?;
-        if r.lock_sets[..k].contains(set) {
-            return Err(("lock_sets", format!("{set:?} is listed twice")));
+    check_lock_sets("lock_sets", &r.lock_sets, inputs)?;
+    Ok(name)
+}
+
+/// Checks the lock sets `sets` of the field `field`: each once, each a lock set of `inputs`.
+fn check_lock_sets(field: &str, sets: &[String], inputs: &[String]) -> Result<(), FieldFault> {
+    for (k, set) in sets.iter().enumerate() {
+        let at = || format!("{field}[{k}]");
+        check_lock_set(set, inputs).map_err(|why| (at(), why))?;
+        if sets[..k].contains(set) {
+            return Err((at(), format!("{set:?} is listed twice")));
         }
     }
-    Ok(name)
+    Ok(())
 }
 
 /// Checks that `set` is `-` or labels of `inputs`, space separated, in input order.
