@@ -3,7 +3,8 @@
 //! `kinsyn-py`) shares with the command, so that both read the same files, compute the same
 //! `--json` reports and refuse bad input with the same one-line messages:
 //!
-//! - files: [`read_text`], [`parse_description`];
+//! - files: [`read_text`] (and [`read_text_within`], [`read_bytes_within`], [`check_file`]
+//!   with a [`SizeLimit`]), [`parse_description`];
 //! - errors: [`Error`], [`one_line`];
 //! - `kinsyn build`: [`build_checked`], [`build_flag`];
 //! - `kinsyn analyze`: [`analyse_placed`] and [`Analyzed::json`];
@@ -15,7 +16,8 @@
 //!   [`configurable_forward`], [`configurable_velocity`] (their `--json` reports as text);
 //! - `kinsyn components`: [`components`] with [`ComponentsOptions`] (its `--json` report);
 //! - `kinsyn sweep` and `kinsyn sweep merge`: the module [`sweep`] ([`sweep::sweep`],
-//!   [`sweep::merge`], the files' readers and writers).
+//!   [`sweep::merge`], the files' readers and writers; [`sweep::read_results`], the rows read
+//!   back and checked by [`kinsyn::sweep::rows::Known`]).
 //!
 //! The computations are the crate `kinsyn`'s; this crate turns options into requests and
 //! results into reports.
@@ -27,7 +29,10 @@ pub use cli::configurable::{
     forward as configurable_forward, inverse as configurable_inverse,
     velocity as configurable_velocity,
 };
-pub use cli::files::{MAX_FILE_BYTES, read_text};
+pub use cli::files::{
+    INPUT_FILES, MAX_FILE_BYTES, SizeLimit, check_file, read_bytes_within, read_text,
+    read_text_within,
+};
 pub use cli::manipulator::{
     AllAssemblies, Analyzed, DEFAULT_MAX_SUBSETS, MAX_SAMPLES, MAX_SUBSETS_CEILING, Placement,
     Selection, all_assemblies_of, analyse_placed, build_checked, build_flag, modes_json,

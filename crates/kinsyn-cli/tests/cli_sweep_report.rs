@@ -5,38 +5,69 @@ mod common;
 use common::{assert_refused, kinsyn, stdout};
 use kinsyn::sweep::{DesignRow, Reached};
 
+/// A row that reads back (`kinsyn::sweep::rows`): design `design` over catalogue chain
+/// `chain` (T1-001 `PPPS` of family PPPRRR, or T8-008 `RaU(a,b)RbU` of family RRRRRR, both
+/// with prismatic or revolute joints only in the positions used here) with one or two actuated
+/// joints per leg (3 or 6 inputs), reaching the last `kinds` of T3, X(z), D, each by one
+/// lock subset, and 1T3R by all the others.
 fn row(design: usize, inputs: usize, kinds: usize, family: &str) -> DesignRow {
+    let (chain, notation, letter) = if family == "PPPRRR" {
+        ("T1-001", "PPPS", 'P')
+    } else {
+        ("T8-008", "RaU(a,b)RbU", 'R')
+    };
+    // Distinct designs of one chain: actuated joint 1 + design % 2 (then the next one).
+    let first = 1 + design % 2;
+    let actuated: Vec<usize> = if inputs == 3 {
+        vec![first]
+    } else {
+        vec![first, first + 2]
+    };
+    let labels: Vec<String> = (1..=3)
+        .flat_map(|leg| actuated.iter().map(move |j| format!("{letter}{leg}.{j}")))
+        .collect();
     let group_kinds: Vec<String> = ["T3", "X", "D"][3 - kinds.min(3)..]
         .iter()
         .map(|s| (*s).to_string())
         .collect();
+    let groups: Vec<Reached> = group_kinds
+        .iter()
+        .map(|k| Reached {
+            pattern: if k == "X" { "X(z)".into() } else { k.clone() },
+            parameters: None,
+            dof: match k.as_str() {
+                "T3" => 3,
+                "X" => 4,
+                _ => 6,
+            },
+            subsets: 1,
+            lock_sets: vec![match k.as_str() {
+                "D" => "-".into(),
+                "X" => labels[0].clone(),
+                _ => labels[..2].join(" "),
+            }],
+        })
+        .collect();
     DesignRow {
         design,
-        chain: format!("T1-{design:03}"),
-        notation: "PPPS".into(),
+        chain: chain.into(),
+        notation: notation.into(),
         family: family.into(),
         legs: 3,
-        actuated: vec![1],
         inputs,
         dof: 6,
         subgroups: kinds,
-        groups: group_kinds
-            .iter()
-            .map(|k| Reached {
-                pattern: if k == "X" { "X(z)".into() } else { k.clone() },
-                parameters: None,
-                dof: 3,
-                subsets: 1,
-                lock_sets: vec![if k == "D" {
-                    "-".into()
-                } else {
-                    "P1.1 | P2.1".into()
-                }],
-            })
-            .collect(),
+        non_groups: vec![Reached {
+            pattern: "1T3R".into(),
+            parameters: None,
+            dof: 4,
+            subsets: (1 << inputs) - groups.len(),
+            lock_sets: vec![labels.join(" ")],
+        }],
+        groups,
         kinds,
         group_kinds,
-        non_groups: Vec::new(),
+        actuated,
         unsampled: 0,
         singular: 0,
         singular_lock_sets: Vec::new(),
@@ -102,18 +133,19 @@ fn report_writes_markdown_and_figures() {
         md.contains("**3 inputs: 2 kinds, 2 subgroups**, reached by 1 design:"),
         "{md}"
     );
-    assert!(md.contains("| 1 | T1-001 | `PPPS` | 1 | 6 | X D |"), "{md}");
+    assert!(md.contains("| 1 | T1-001 | `PPPS` | 2 | 6 | X D |"), "{md}");
     assert!(
         md.contains("**6 inputs: 3 kinds, 3 subgroups**, reached by 1 design:"),
         "{md}"
     );
     assert!(
-        md.contains("| 3 | T1-003 | `PPPS` | 1 | 6 | T3 X D |"),
+        md.contains("| 3 | T8-008 | `RaU(a,b)RbU` | 2,4 | 6 | T3 X D |"),
         "{md}"
     );
-    assert!(!md.contains("| 2 | T1-002 | `PPPS` | 1 | 6 |"), "{md}");
-    // A lock set holding '|' is escaped in the table.
-    assert!(md.contains("P1.1 \\| P2.1"), "{md}");
+    assert!(!md.contains("| 2 | T8-008 |"), "{md}");
+    // The best design's lock sets: X(z) by the first input locked, T3 by the first two.
+    assert!(md.contains("   | X | `X(z)` | 4 | R1.2 |"), "{md}");
+    assert!(md.contains("   | T3 | `T3` | 3 | R1.2 R1.4 |"), "{md}");
     assert!(md.contains("![capacity per family](capacity-by-family.png)"));
     for name in ["capacity-by-family", "capacity-vs-inputs"] {
         let png = std::fs::read(out.join(format!("{name}.png"))).unwrap();

@@ -34,6 +34,9 @@ fn kinsyn_native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(sweep::sweep_json, m)?)?;
     m.add_function(wrap_pyfunction!(sweep::sweep_merge_json, m)?)?;
     m.add_function(wrap_pyfunction!(sweep::sweep_partitions_json, m)?)?;
+    m.add_function(wrap_pyfunction!(sweep::sweep_rows_json, m)?)?;
+    m.add_function(wrap_pyfunction!(sweep::sweep_check_table, m)?)?;
+    m.add_function(wrap_pyfunction!(sweep::sweep_table_rows_json, m)?)?;
     m.add_class::<manipulator::Manipulator>()?;
     Ok(())
 }

@@ -1,10 +1,15 @@
 //! `kinsyn sweep` and `kinsyn sweep merge` (docs/sweep.md): the catalogue-wide multioperation
-//! sweep run into a directory (whole or one shard, resumable), shard directories merged, and
-//! the shards of a sweep listed, each by the command's own code ([`kinsyn_cli::sweep`]).
+//! sweep run into a directory (whole or one shard, resumable), shard directories merged, the
+//! shards of a sweep listed, and a sweep's rows read back (checked as `kinsyn sweep report`
+//! reads them), each by the command's own code ([`kinsyn_cli::sweep`]).
 
 use crate::error::{Error, py_err};
 use kinsyn::mechanism::SampleSettings;
-use kinsyn_cli::sweep::{Request, Shard, merge, outcome_json, run_request, shard_manifests};
+use kinsyn_cli::check_file;
+use kinsyn_cli::sweep::{
+    ROW_FILES, Request, Shard, check_rows, merge, outcome_json, read_results, rows_file,
+    run_request, shard_manifests,
+};
 use pyo3::prelude::*;
 use std::path::PathBuf;
 
@@ -125,4 +130,57 @@ pub fn sweep_partitions_json(
         .detach(|| shard_manifests(&request, count))
         .map_err(py_err)?;
     to_json(serde_json::to_value(&manifests))
+}
+
+/// The manifest and rows read back, as `{"manifest": …, "rows": […]}`.
+fn rows_json(
+    manifest: Option<&kinsyn_cli::sweep::Manifest>,
+    rows: &[kinsyn::sweep::DesignRow],
+) -> PyResult<String> {
+    to_json(Ok(
+        serde_json::json!({ "manifest": manifest, "rows": rows }),
+    ))
+}
+
+/// The rows of `path` (a sweep directory or a `.jsonl` file of rows), read and checked as
+/// `kinsyn sweep report` reads them (the file checks of every input, each row a design of the
+/// folder's sweep, or of the catalogue without a manifest), as JSON text `{"manifest": …,
+/// "rows": […]}`.
+#[pyfunction]
+#[expect(
+    clippy::needless_pass_by_value,
+    reason = "PyO3 converts Python paths to owned values"
+)]
+pub fn sweep_rows_json(py: Python<'_>, path: PathBuf) -> PyResult<String> {
+    let read = py.detach(|| read_results(&path)).map_err(py_err)?;
+    rows_json(read.manifest.as_ref(), &read.rows)
+}
+
+/// Checks that the table `path` (`designs.parquet`) may be read: a regular file within the
+/// size limit of files of rows.
+#[pyfunction]
+#[expect(
+    clippy::needless_pass_by_value,
+    reason = "PyO3 converts Python paths to owned values"
+)]
+pub fn sweep_check_table(path: PathBuf) -> PyResult<()> {
+    check_file(&path, "not a table of kinsyn sweep rows", ROW_FILES)
+        .map(|_| ())
+        .map_err(py_err)
+}
+
+/// The rows read from the table `path` (`designs.parquet`), given as JSON lines `rows`,
+/// checked as the rows of a file in its folder are, as JSON text `{"manifest": …, "rows":
+/// […]}`.
+#[pyfunction]
+#[expect(
+    clippy::needless_pass_by_value,
+    reason = "PyO3 converts Python paths and strings to owned values"
+)]
+pub fn sweep_table_rows_json(py: Python<'_>, path: PathBuf, rows: String) -> PyResult<String> {
+    let (_, folder) = rows_file(&path).map_err(py_err)?;
+    let (manifest, rows) = py
+        .detach(|| check_rows(&rows, &folder, &path))
+        .map_err(py_err)?;
+    rows_json(manifest.as_ref(), &rows)
 }

@@ -216,3 +216,40 @@ def test_force_replaces_what_the_command_s_force_replaces(tmp_path, cli_run):
     resumed = ks.run(None, cut, force=True, **SMALL)
     assert resumed.complete and resumed.resumed == 4
     assert_same_files(cut, cli_run[0])
+
+
+def test_read_checks_rows_and_files_as_the_report_does(tmp_path, cli_run):
+    """An edited but well-formed row, in the JSON lines or in the Parquet table, and a named
+    pipe are refused by read with the message `kinsyn sweep report` gives (never read, never
+    blocking); a row that checks out reads as before."""
+    import shutil
+
+    cli_dir, _ = cli_run
+    edited = tmp_path / "edited"
+    shutil.copytree(cli_dir, edited)
+    lines = (edited / "designs.jsonl").read_text().splitlines()
+    row = json.loads(lines[1])
+    row["dof"] = 99
+    lines[1] = json.dumps(row)
+    (edited / "designs.jsonl").write_text("\n".join(lines) + "\n")
+    with pytest.raises(kinsyn.InputError) as e:
+        ks.read(edited, source="jsonl")
+    assert str(e.value) == cli_error("sweep", "report", str(edited), "--out", str(tmp_path / "r"))
+    assert "designs.jsonl line 2: design 1: dof: 99 is more than 6" in str(e.value)
+    if ks._has_pyarrow():
+        import pyarrow as pa
+        import pyarrow.parquet as pq
+
+        table = pq.read_table(edited / "designs.parquet")
+        dof = table.column("dof").to_pylist()
+        dof[1] = 99
+        index = table.schema.get_field_index("dof")
+        table = table.set_column(index, table.schema.field(index), pa.array(dof, pa.uint32()))
+        pq.write_table(table, edited / "designs.parquet")
+        with pytest.raises(kinsyn.InputError, match="designs.parquet line 2: design 1: dof: 99"):
+            ks.read(edited)
+    fifo = tmp_path / "pipe" / "designs.jsonl"
+    fifo.parent.mkdir()
+    os.mkfifo(fifo)
+    with pytest.raises(kinsyn.InputError, match="not a regular file"):
+        ks.read(fifo)

@@ -18,6 +18,7 @@
 //! the letter added to the label); an actuated primitive joint (`!`) is hatched and its label
 //! ends in `!`. See docs/catalogue-site.md.
 
+use crate::markup::escape;
 use crate::notation::{Axis, Chain, JointKind, Mark, Primitive};
 use crate::synthesis;
 use std::fmt::Write as _;
@@ -75,7 +76,8 @@ fn group_letter(group: u8) -> char {
 /// of its primitives in the word, which lock sets count), with `axes` the direction of each
 /// primitive joint at the reference configuration (an entry's `word` and `axes`). The result is
 /// a standalone well-formed XML element `<svg>` that can be inlined in HTML; `title` is its
-/// accessible name (escaped here).
+/// accessible name (escaped here by [`crate::markup::escape`]; every other text is a joint
+/// letter, a number or an axis letter).
 ///
 /// Each joint letter is one `<g class="joint" data-letter="…">` element, each primitive joint
 /// one `<g class="primitive">` inside it with `data-position` (in the word), `data-axis`, and
@@ -412,8 +414,6 @@ fn sphere_slot(s: &mut String, x: f64, colour: &str, fill: &str) {
         LINE_Y + 24.0
     );
 }
-
-pub use crate::markup::escape;
 
 #[cfg(test)]
 mod tests {

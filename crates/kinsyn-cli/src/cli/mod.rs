@@ -376,8 +376,13 @@ fn execute(command: Command) -> Result<String, CliError> {
     }
 }
 
+/// `value` as the pretty JSON a command prints, one trailing newline, with every control or
+/// bidirectional-formatting character in its strings as a `\uXXXX` escape
+/// ([`kinsyn::markup::json_visible`]): valid JSON of the same value that cannot drive a terminal.
 pub(super) fn json<T: serde::Serialize>(value: &T) -> String {
-    let mut s = serde_json::to_string_pretty(value).expect("serialisable");
+    let mut s =
+        kinsyn::markup::json_visible(&serde_json::to_string_pretty(value).expect("serialisable"))
+            .into_owned();
     s.push('\n');
     s
 }

@@ -11,8 +11,9 @@ use super::CliError;
 use super::args::Reading;
 use super::output::OutputFolder;
 use kinsyn::catalogue::{Catalogue, Entry};
+use kinsyn::markup::{escape, json_in_html};
 use kinsyn::motion::{GroupKind, PatternName, PatternQuery};
-use kinsyn::schematic::{self, escape};
+use kinsyn::schematic;
 use kinsyn::synthesis::tables;
 use kinsyn::verification::Verification;
 use rayon::prelude::*;
@@ -93,7 +94,8 @@ fn query_spellings(names: &BTreeSet<PatternName>) -> BTreeMap<String, Vec<String
         .collect()
 }
 
-/// The facts the index filters, as JSON safe inside a `<script>` element.
+/// The facts the index filters, as JSON safe inside a `<script>` element
+/// ([`json_in_html`]: no `</script>` or `<!--` can be made up of the text).
 fn data_json(cat: &Catalogue) -> String {
     let names: BTreeSet<PatternName> = cat
         .entries
@@ -132,10 +134,7 @@ fn data_json(cat: &Catalogue) -> String {
         "queries": query_spellings(&names),
         "entries": entries,
     });
-    // '<' only occurs inside JSON strings, where \u003c means the same: no "</script>".
-    serde_json::to_string(&data)
-        .expect("serialisable")
-        .replace('<', "\\u003c")
+    json_in_html(&serde_json::to_string(&data).expect("serialisable"))
 }
 
 /// `index.html`.

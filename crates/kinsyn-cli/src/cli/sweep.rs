@@ -4,15 +4,17 @@
 
 mod files;
 mod merge;
+mod results;
 mod run;
 mod selection;
 mod table;
 
 pub use files::{
-    CHECKPOINT, Checkpoint, FILES, FORMAT, JSONL, MANIFEST, Manifest, PARQUET, read_manifest,
-    read_rows, row_line, write_results,
+    CHECKPOINT, Checkpoint, FILES, FORMAT, JSONL, MANIFEST, MAX_ROWS_BYTES, Manifest, PARQUET,
+    ROW_FILES, read_checkpoint, read_manifest, read_rows, row_line, write_results,
 };
 pub use merge::merge;
+pub use results::{SweepRows, check_rows, read_results, rows_file, with_known};
 pub use run::{SweepOptions, SweepOutcome, sweep};
 pub use selection::{Shard, SweepSelection};
 pub use table::parquet_bytes;
@@ -60,7 +62,7 @@ pub fn sweep_settings(
     actuated: &[usize],
     seed: u64,
 ) -> Result<SweepSettings, CliError> {
-    if !(3..=6).contains(&legs) {
+    if !kinsyn::sweep::LEGS.contains(&legs) {
         return Err(CliError::Input(format!(
             "--legs {legs}: give 3 to 6 (as kinsyn build)"
         )));
@@ -97,7 +99,7 @@ pub fn sweep_settings(
 }
 
 /// The committed catalogue, read once.
-fn catalogue() -> Result<Catalogue, CliError> {
+pub(crate) fn catalogue() -> Result<Catalogue, CliError> {
     Catalogue::committed()
         .map_err(|e| CliError::Internal(format!("the compiled-in catalogue does not read: {e}")))
 }

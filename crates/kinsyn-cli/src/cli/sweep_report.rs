@@ -3,14 +3,15 @@
 
 use super::output::OutputFolder;
 use super::plot::{draw_error, png, svg};
-use super::{CliError, json};
+use super::{CliError, json, sweep};
+use kinsyn::markup;
+use kinsyn::sweep::DesignRow;
 use kinsyn::sweep::ranking::{RankedDesign, Ranking};
-use kinsyn::sweep::{DesignRow, SweepSettings};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use std::fmt::Write as _;
-use std::io::BufRead as _;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
+use sweep::SweepRows;
 
 /// The most best designs `--top` keeps per number of inputs.
 pub const MAX_TOP: usize = 1000;
@@ -41,21 +42,10 @@ pub(super) struct ReportArgs {
     json: bool,
 }
 
-/// The rows of a sweep and where they came from.
-struct Results {
-    /// The file of rows read.
-    file: PathBuf,
-    /// The folder of the results (the file's).
-    folder: PathBuf,
-    rows: Vec<DesignRow>,
-    /// The sweep's settings when its manifest records them.
-    settings: Option<SweepSettings>,
-}
-
 /// `kinsyn sweep report RESULTS`: ranks the designs, writes the report and figures, and returns
 /// the summary (or the ranking as JSON).
 pub(super) fn report(args: &ReportArgs) -> Result<String, CliError> {
-    let results = read_results(&args.results)?;
+    let results = sweep::read_results(&args.results)?;
     let top = args.top as usize;
     let ranking = Ranking::new(&results.rows, top);
     let out = args
@@ -92,7 +82,7 @@ pub(super) fn report(args: &ReportArgs) -> Result<String, CliError> {
     if args.json {
         return Ok(json(&serde_json::json!({
             "results": results.file.display().to_string(),
-            "settings": results.settings,
+            "settings": results.manifest.as_ref().map(|m| &m.settings),
             "ranking": ranking,
             "files": files.iter().map(|f| f.display().to_string()).collect::<Vec<_>>(),
         })));
@@ -100,81 +90,8 @@ pub(super) fn report(args: &ReportArgs) -> Result<String, CliError> {
     Ok(summary(&results, &ranking, &files))
 }
 
-/// Reads the rows of `path` (a sweep folder or a .jsonl file): every non-blank line a
-/// [`DesignRow`], each design once.
-fn read_results(path: &Path) -> Result<Results, CliError> {
-    let shown = path.display();
-    let metadata = std::fs::metadata(path).map_err(|e| CliError::Input(format!("{shown}: {e}")))?;
-    let (file, folder) = if metadata.is_dir() {
-        let file = path.join("designs.jsonl");
-        if !file.is_file() {
-            return Err(CliError::Input(format!(
-                "{shown} has no designs.jsonl: give a sweep folder (kinsyn sweep --out) or a .jsonl file of design rows"
-            )));
-        }
-        (file, path.to_path_buf())
-    } else {
-        let folder = path
-            .parent()
-            .filter(|p| !p.as_os_str().is_empty())
-            .map_or_else(|| PathBuf::from("."), Path::to_path_buf);
-        (path.to_path_buf(), folder)
-    };
-    let rows = read_rows(&file)?;
-    let settings = std::fs::read_to_string(folder.join("sweep.json"))
-        .ok()
-        .and_then(|text| serde_json::from_str::<serde_json::Value>(&text).ok())
-        .and_then(|v| {
-            let settings = v.get("settings").cloned().unwrap_or(v);
-            serde_json::from_value::<SweepSettings>(settings).ok()
-        });
-    Ok(Results {
-        file,
-        folder,
-        rows,
-        settings,
-    })
-}
-
-/// The design rows of a JSON-lines file, refused with the first faulty line's number.
-fn read_rows(file: &Path) -> Result<Vec<DesignRow>, CliError> {
-    let shown = file.display();
-    let reader = std::fs::File::open(file)
-        .map(std::io::BufReader::new)
-        .map_err(|e| CliError::Input(format!("{shown}: {e}")))?;
-    let mut rows: Vec<DesignRow> = Vec::new();
-    let mut lines_of: std::collections::HashMap<usize, usize> = std::collections::HashMap::new();
-    for (i, line) in reader.split(b'\n').enumerate() {
-        let number = i + 1;
-        let bytes = line.map_err(|e| CliError::Input(format!("{shown}: {e}")))?;
-        let text = String::from_utf8(bytes)
-            .map_err(|_| CliError::Input(format!("{shown} line {number}: not UTF-8 text")))?;
-        if text.trim().is_empty() {
-            continue;
-        }
-        let row: DesignRow = serde_json::from_str(&text).map_err(|e| {
-            CliError::Input(format!(
-                "{shown} line {number}: not a design row of kinsyn sweep ({e})"
-            ))
-        })?;
-        if let Some(first) = lines_of.insert(row.design, number) {
-            return Err(CliError::Input(format!(
-                "{shown} line {number}: design {} is already on line {first}",
-                row.design
-            )));
-        }
-        rows.push(row);
-    }
-    if rows.is_empty() {
-        return Err(CliError::Input(format!(
-            "{shown}: no design rows (the file is empty)"
-        )));
-    }
-    Ok(rows)
-}
-
 /// The summary printed on stdout.
-fn summary(results: &Results, ranking: &Ranking, files: &[PathBuf]) -> String {
+fn summary(results: &SweepRows, ranking: &Ranking, files: &[PathBuf]) -> String {
     let mut text = String::new();
     let _ = writeln!(
         text,
@@ -246,13 +163,6 @@ fn kinds_list(d: &RankedDesign) -> String {
         .join(" ")
 }
 
-/// Text made safe for a Markdown table cell: one line, `|` escaped.
-fn cell(text: &str) -> String {
-    super::terminal::one_line(text).replace('|', "\\|")
-}
-
-/// `report.md`: the settings, counts, front, top designs with their lock sets, legs, family
-/// capacity, histogram, failures and the figures.
 /// The Pareto front as its points: for each number of inputs whose best capacity beats every
 /// smaller one, the designs tied there, counted, the first `top_k` (by the tie-breaks) listed.
 fn front_section(md: &mut String, r: &Ranking) {
@@ -284,26 +194,29 @@ fn front_section(md: &mut String, r: &Ranking) {
         for d in tied.iter().take(r.top_k) {
             let _ = writeln!(
                 md,
-                "| {} | {} | `{}` | {} | {} | {} |",
+                "| {} | {} | {} | {} | {} | {} |",
                 d.design,
-                cell(&d.chain),
-                cell(&d.notation),
+                markup::markdown(&d.chain),
+                markup::markdown_code(&d.notation),
                 joints(&d.actuated),
                 d.dof,
-                cell(&kinds_list(d))
+                markup::markdown(&kinds_list(d))
             );
         }
         let _ = writeln!(md);
     }
 }
 
-fn markdown_report(results: &Results, r: &Ranking) -> String {
+/// `report.md`: the settings, counts, front, top designs with their lock sets, legs, family
+/// capacity, histogram, failures and the figures. Every text from the rows or the file names
+/// passes the one Markdown escaper ([`markup::markdown`] for text, [`markup::markdown_code`] for code spans).
+fn markdown_report(results: &SweepRows, r: &Ranking) -> String {
     let mut md = String::new();
     let _ = writeln!(md, "# Multioperation sweep: ranking of the designs\n");
     let _ = writeln!(
         md,
-        "Rows: `{}`: {} designs, {} built, {} not built, {} with unsampled lock subsets, {} with {} lock subsets whose start is a singular configuration of the locked manipulator (not counted: the motion branches there, and the pattern sampled depends on the branch; see docs/deviations.md, \"Issue 17\").\n",
-        cell(&results.file.display().to_string()),
+        "Rows: {}: {} designs, {} built, {} not built, {} with unsampled lock subsets, {} with {} lock subsets whose start is a singular configuration of the locked manipulator (not counted: the motion branches there, and the pattern sampled depends on the branch; see docs/deviations.md, \"Issue 17\").\n",
+        markup::markdown_code(&results.file.display().to_string()),
         r.designs,
         r.built,
         r.failed.len(),
@@ -311,14 +224,14 @@ fn markdown_report(results: &Results, r: &Ranking) -> String {
         r.singular.0,
         r.singular.1
     );
-    match &results.settings {
+    match results.manifest.as_ref().map(|m| &m.settings) {
         Some(s) => {
             let _ = writeln!(
                 md,
-                "Settings (sweep.json): {} legs; actuated joints per leg: {}; sampling: `{}`.\n",
+                "Settings (sweep.json): {} legs; actuated joints per leg: {}; sampling: {}.\n",
                 s.legs,
                 joints(&s.actuated_per_leg),
-                cell(&serde_json::to_string(&s.sampling).unwrap_or_default())
+                markup::markdown_code(&serde_json::to_string(&s.sampling).unwrap_or_default())
             );
         }
         None => {
@@ -341,10 +254,10 @@ fn markdown_report(results: &Results, r: &Ranking) -> String {
     for l in &r.legs {
         let _ = writeln!(
             md,
-            "| {} | `{}` | {} | {} | {} |",
-            cell(&l.chain),
-            cell(&l.notation),
-            cell(&l.family),
+            "| {} | {} | {} | {} | {} |",
+            markup::markdown(&l.chain),
+            markup::markdown_code(&l.notation),
+            markup::markdown(&l.family),
             l.top_designs,
             l.front_designs
         );
@@ -356,7 +269,7 @@ fn markdown_report(results: &Results, r: &Ranking) -> String {
         let _ = writeln!(
             md,
             "| {} | {} | {:.2} | {} |",
-            cell(&f.family),
+            markup::markdown(&f.family),
             f.designs,
             f.mean_kinds,
             f.max_kinds
@@ -385,12 +298,12 @@ fn top_section(md: &mut String, r: &Ranking) {
         for (rank, d) in t.top.iter().enumerate() {
             let _ = writeln!(
                 md,
-                "{}. design {}: {} `{}` ({}), actuated {}: dof {}, {} kinds, {} subgroups{}\n",
+                "{}. design {}: {} {} ({}), actuated {}: dof {}, {} kinds, {} subgroups{}\n",
                 rank + 1,
                 d.design,
-                cell(&d.chain),
-                cell(&d.notation),
-                cell(&d.family),
+                markup::markdown(&d.chain),
+                markup::markdown_code(&d.notation),
+                markup::markdown(&d.family),
                 joints(&d.actuated),
                 d.dof,
                 d.kinds,
@@ -406,11 +319,11 @@ fn top_section(md: &mut String, r: &Ranking) {
             for k in &d.kind_locks {
                 let _ = writeln!(
                     md,
-                    "   | {} | `{}` | {} | {} |",
-                    cell(&k.kind),
-                    cell(&k.pattern),
+                    "   | {} | {} | {} | {} |",
+                    markup::markdown(&k.kind),
+                    markup::markdown_code(&k.pattern),
                     k.dof,
-                    cell(&k.lock_set)
+                    markup::markdown(&k.lock_set)
                 );
             }
             let _ = writeln!(md);
@@ -429,9 +342,9 @@ fn failures_section(md: &mut String, r: &Ranking) {
                 md,
                 "| {} | {} | {} | {} |",
                 f.design,
-                cell(&f.chain),
+                markup::markdown(&f.chain),
                 joints(&f.actuated),
-                cell(&f.error)
+                markup::markdown(&f.error)
             );
         }
         let _ = writeln!(md);
@@ -449,7 +362,7 @@ fn failures_section(md: &mut String, r: &Ranking) {
                 md,
                 "| {} | {} | {} | {} |",
                 u.design,
-                cell(&u.chain),
+                markup::markdown(&u.chain),
                 joints(&u.actuated),
                 u.unsampled
             );
@@ -492,7 +405,13 @@ fn draw_families<DB: DrawingBackend>(
     root.fill(&WHITE).map_err(draw_error)?;
     let n = r.families.len();
     let most = r.families.iter().map(|f| f.max_kinds).max().unwrap_or(0);
-    let families: Vec<String> = r.families.iter().map(|f| f.family.clone()).collect();
+    // plotters' SVG backend escapes the markup characters of text, not the characters XML
+    // cannot hold: those are written visibly first.
+    let families: Vec<String> = r
+        .families
+        .iter()
+        .map(|f| markup::visible(&f.family).into_owned())
+        .collect();
     let mut chart = ChartBuilder::on(root)
         .caption(
             "Multioperation capacity per family: group kinds reached",

@@ -1,48 +1,28 @@
 //! What reaches the user: results on stdout that stop quietly when the reader goes away, and
 //! errors and warnings on stderr that are always one line and never drive the terminal.
 
-use std::fmt::Write as _;
 use std::io::{self, Write};
 
 /// `message` made safe for one line of a terminal: line breaks, escape sequences and every
 /// other control or bidirectional-formatting character are written as Rust escapes (`\n`,
 /// `\u{1b}`, `\u{202e}`), so that echoed input can neither add lines nor reorder or recolour
-/// the text around it.
+/// the text around it ([`kinsyn::markup::visible`]).
 #[must_use]
 pub fn one_line(message: &str) -> String {
-    let mut s = String::with_capacity(message.len());
-    for c in message.chars() {
-        if c.is_control() {
-            s.extend(c.escape_debug());
-        } else if is_format(c) {
-            let _ = write!(s, "\\u{{{:x}}}", u32::from(c));
-        } else {
-            s.push(c);
-        }
-    }
-    s
+    kinsyn::markup::visible(message).into_owned()
 }
 
-/// Invisible characters that change how the text around them is shown: bidirectional
-/// embeddings, overrides and isolates, zero-width characters, the BOM and the line and
-/// paragraph separators.
-fn is_format(c: char) -> bool {
-    matches!(
-        c,
-        '\u{061c}'
-            | '\u{200b}'..='\u{200f}'
-            | '\u{2028}'..='\u{202e}'
-            | '\u{2060}'..='\u{206f}'
-            | '\u{feff}'
-            | '\u{fff9}'..='\u{fffb}'
-    )
-}
-
-/// Writes `text` to stdout. A reader that has gone away (`kinsyn … | head`) is not an error:
-/// the command ends quietly, as the conventional SIGPIPE behaviour would.
+/// Writes `text` to stdout, every line made safe for a terminal: the line breaks and tabs
+/// that lay it out kept, every other control or bidirectional-formatting character written as
+/// its Rust escape ([`kinsyn::markup::visible_lines`]), so that a name, id or path read from a
+/// file cannot drive the terminal. JSON reaches here already escaped
+/// ([`kinsyn::markup::json_visible`]) and passes unchanged. A reader that has gone away
+/// (`kinsyn … | head`) is not an error: the command ends quietly, as the conventional SIGPIPE
+/// behaviour would.
 pub fn print(text: &str) -> io::Result<()> {
+    let shown = kinsyn::markup::visible_lines(text);
     let mut out = io::stdout().lock();
-    match out.write_all(text.as_bytes()).and_then(|()| out.flush()) {
+    match out.write_all(shown.as_bytes()).and_then(|()| out.flush()) {
         Err(e) if e.kind() == io::ErrorKind::BrokenPipe => Ok(()),
         other => other,
     }

@@ -266,16 +266,6 @@ def _has_pyarrow() -> bool:
     return True
 
 
-def _records(path: Path) -> List[Dict[str, Any]]:
-    """The rows of ``designs.parquet`` or ``designs.jsonl`` as plain Python values."""
-    if path.suffix == ".parquet":
-        import pyarrow.parquet as pq
-
-        return pq.read_table(path).to_pylist()
-    with open(path, encoding="utf-8") as f:
-        return [json.loads(line) for line in f if line.strip()]
-
-
 def _cells(row: Dict[str, Any]) -> Dict[str, Any]:
     """One row with the columns of :data:`COLUMNS`: ``groups`` and ``non_groups`` as lists of
     dicts (Parquet holds them as JSON text), ``actuated`` and ``group_kinds`` as lists, a
@@ -298,14 +288,16 @@ def read(path: PathType, *, source: Optional[str] = None) -> pd.DataFrame:
     ``source="parquet"`` or ``"jsonl"`` chooses) or from one of those files. ``groups`` and
     ``non_groups`` are lists of dicts (``pattern``, ``parameters``, ``dof``, ``subsets``,
     ``lock_sets``); ``error`` is ``None`` for a design that was evaluated. Reading a directory
-    puts its manifest in ``df.attrs["manifest"]``."""
+    puts its manifest in ``df.attrs["manifest"]``.
+
+    The files are read as ``kinsyn sweep report`` reads them: regular files within the size
+    limit of files of rows (docs/limits.md), every row a design of the folder's sweep (of the
+    catalogue without ``sweep.json``) whose fields agree; anything else raises
+    :class:`kinsyn.InputError` naming the file and line."""
     p = Path(fspath(path))
-    manifest = None
     if p.is_dir():
         if source not in (None, "parquet", "jsonl"):
             raise InputError(f"source={source!r}: give 'parquet' or 'jsonl'")
-        if (p / "sweep.json").is_file():
-            manifest = json.loads((p / "sweep.json").read_text("utf-8"))
         if source is None:
             source = "parquet" if _has_pyarrow() and (p / "designs.parquet").is_file() else "jsonl"
         file = p / f"designs.{source}"
@@ -314,17 +306,26 @@ def read(path: PathType, *, source: Optional[str] = None) -> pd.DataFrame:
                 f"{p}: no {file.name}: not a complete sweep directory (run its kinsyn sweep "
                 "again to finish it)"
             )
-    elif p.is_file():
+    elif p.exists():
         if p.suffix not in (".parquet", ".jsonl"):
             raise InputError(f"{p}: not designs.parquet or designs.jsonl")
         file = p
     else:
         raise InputError(f"{p}: No such file or directory")
-    if file.suffix == ".parquet" and not _has_pyarrow():
-        raise InputError(f"{file}: reading Parquet needs pyarrow (pip install pyarrow)")
-    df = pd.DataFrame([_cells(r) for r in _records(file)], columns=COLUMNS)
+    if file.suffix == ".parquet":
+        if not _has_pyarrow():
+            raise InputError(f"{file}: reading Parquet needs pyarrow (pip install pyarrow)")
+        import pyarrow.parquet as pq
+
+        _native.sweep_check_table(fspath(file))
+        table = [_cells(r) for r in pq.read_table(file).to_pylist()]
+        lines = "\n".join(json.dumps(r) for r in table)
+        read_back = json.loads(_native.sweep_table_rows_json(fspath(file), lines))
+    else:
+        read_back = json.loads(_native.sweep_rows_json(fspath(file)))
+    df = pd.DataFrame([_cells(r) for r in read_back["rows"]], columns=COLUMNS)
     df[_INTEGERS] = df[_INTEGERS].astype("int64")
     df["error"] = df["error"].astype(object).where(df["error"].notna(), None)
-    if manifest is not None:
-        df.attrs["manifest"] = manifest
+    if p.is_dir() and read_back["manifest"] is not None:
+        df.attrs["manifest"] = read_back["manifest"]
     return df

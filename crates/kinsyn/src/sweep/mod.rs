@@ -18,6 +18,7 @@
 //! resumed, and its parts merged, with the same rows as one run.
 
 pub mod ranking;
+pub mod rows;
 
 use crate::catalogue::Catalogue;
 use crate::manipulator::build::{BuildSpec, build};
@@ -25,6 +26,9 @@ use crate::manipulator::{Manipulator, PatternModes};
 use crate::mechanism::SampleSettings;
 use itertools::Itertools;
 use serde::{Deserialize, Serialize};
+
+/// The legs of a sweep's manipulators: 3 to 6, as [`build`] builds them (paper 000 §3).
+pub const LEGS: std::ops::RangeInclusive<usize> = 3..=6;
 
 /// What a sweep evaluates: the manipulators built and how their motions are sampled.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -86,6 +90,7 @@ pub fn designs(catalogue: &Catalogue, settings: &SweepSettings) -> Vec<Design> {
 
 /// A pattern a design reaches, with the lock sets that reach it.
 #[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct Reached {
     /// The pattern's name (`X(z)`, `T3`, `2T1R`, ...).
     pub pattern: String,
@@ -112,8 +117,10 @@ impl From<&PatternModes> for Reached {
     }
 }
 
-/// One design's multioperation capacity: a row of the sweep's results.
+/// One design's multioperation capacity: a row of the sweep's results. Rows read back from a
+/// file are checked by [`rows::Known`] (a known design, fields that agree).
 #[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct DesignRow {
     /// The design's index in the sweep.
     pub design: usize,

@@ -4,7 +4,10 @@
 use super::selection::{Shard, SweepSelection};
 use super::table;
 use crate::cli::CliError;
-use kinsyn::sweep::{DesignRow, SweepSettings};
+use crate::cli::files::{SizeLimit, read_bytes_within, read_text, read_text_within, text_of};
+use kinsyn::catalogue::Catalogue;
+use kinsyn::sweep::rows::Known;
+use kinsyn::sweep::{Design, DesignRow, SweepSettings};
 use serde::{Deserialize, Serialize};
 use std::io::Write as _;
 use std::path::{Path, PathBuf};
@@ -22,6 +25,21 @@ pub const CHECKPOINT: &str = "checkpoint.jsonl";
 /// Every file a sweep writes into its directory: what a fresh start or a merge may not find
 /// there without `--force`.
 pub const FILES: [&str; 4] = [MANIFEST, JSONL, PARQUET, CHECKPOINT];
+
+/// The largest file of rows read (`designs.jsonl`, `checkpoint.jsonl`, `designs.parquet`),
+/// 512 MiB: twice the largest sweep docs/scale.md plans (6 legs with 2 actuated joints per
+/// leg, about 250 MB measured on a shard; the 3-legged sweep is 13.7 MB). Reading holds the
+/// text and the rows in memory, about 4.6 times the file (docs/limits.md, "Files").
+pub const MAX_ROWS_BYTES: u64 = 1 << 29;
+
+/// The size limit of the files of rows: [`MAX_ROWS_BYTES`].
+pub const ROW_FILES: SizeLimit = SizeLimit {
+    bytes: MAX_ROWS_BYTES,
+    files: "files of sweep rows",
+};
+
+/// What a file of rows that does not read is not.
+const NOT_ROWS: &str = "not a file of kinsyn sweep rows";
 
 /// `sweep.json`: what a sweep directory holds. Two directories with equal manifests hold the
 /// same rows (a row depends on its design and the settings only).
@@ -98,19 +116,88 @@ impl Manifest {
     pub fn text(&self) -> String {
         crate::cli::json(self)
     }
+
+    /// The designs of this directory (its shard of the sweep, or all of it), by index, once
+    /// the manifest is checked to be one kinsyn writes: settings within the options' ranges
+    /// (`--legs`, `--actuated`, the default sampling with its seed), a selection of verified
+    /// `catalogue` chains in catalogue order, a shard K/N with 1 ≤ K ≤ N, and counts and rule
+    /// those of that sweep. `path` names the manifest in refusals.
+    ///
+    /// # Errors
+    /// [`CliError::Input`] naming what does not match.
+    pub fn designs(&self, catalogue: &Catalogue, path: &Path) -> Result<Vec<Design>, CliError> {
+        let damaged = |why: String| {
+            CliError::Input(format!(
+                "{}: a damaged sweep manifest: {why}",
+                path.display()
+            ))
+        };
+        let s = &self.settings;
+        let settings = super::sweep_settings(s.legs, &s.actuated_per_leg, s.sampling.seed)
+            .map_err(|e| damaged(e.to_string()))?;
+        if settings != *s {
+            return Err(damaged(format!(
+                "the settings are not those kinsyn sweep writes ({})",
+                serde_json::to_string(&settings).unwrap_or_default()
+            )));
+        }
+        let chains = self.selection.chains.as_ref().map(|c| c.join(","));
+        let selection = SweepSelection::new(
+            catalogue,
+            chains.as_deref(),
+            self.selection.family.as_deref(),
+        )
+        .map_err(|e| damaged(e.to_string()))?;
+        if selection != self.selection {
+            return Err(damaged(format!(
+                "the selection is not in the catalogue's spelling and order ({selection})"
+            )));
+        }
+        if let Some(shard) = self.shard {
+            Shard::parse(&shard.to_string()).map_err(|e| damaged(e.to_string()))?;
+        }
+        let all = selection.designs(catalogue, &settings)?;
+        let expected = Manifest {
+            kinsyn: self.kinsyn.clone(),
+            complete: self.complete,
+            ..Manifest::new(&settings, &selection, self.shard, all.len())
+        };
+        if (expected.sweep_designs, expected.designs) != (self.sweep_designs, self.designs) {
+            return Err(CliError::Input(format!(
+                "{}: the sweep it describes has {} designs ({} in this directory) with this kinsyn's catalogue, not the {} ({}) it records: the results of another catalogue, or a damaged manifest",
+                path.display(),
+                expected.sweep_designs,
+                expected.designs,
+                self.sweep_designs,
+                self.designs
+            )));
+        }
+        if expected != *self {
+            return Err(damaged(format!(
+                "the rule is not that of its shard ({:?})",
+                expected.rule
+            )));
+        }
+        Ok(all
+            .into_iter()
+            .filter(|d| self.shard.is_none_or(|s| s.contains(d.index)))
+            .collect())
+    }
 }
 
-/// The manifest of directory `dir`, or `None` when it has none.
+/// The manifest of directory `dir`, or `None` when it has none, read as every input file is
+/// ([`read_text`]: a regular UTF-8 file of at most 1 MiB).
 ///
 /// # Errors
 /// [`CliError::Input`] when `sweep.json` exists but is not a sweep manifest of this format.
 pub fn read_manifest(dir: &Path) -> Result<Option<Manifest>, CliError> {
     let path = dir.join(MANIFEST);
-    let text = match std::fs::read_to_string(&path) {
-        Ok(t) => t,
-        Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(None),
-        Err(e) => return Err(CliError::Input(format!("{}: {e}", path.display()))),
-    };
+    if let Err(e) = std::fs::symlink_metadata(&path)
+        && e.kind() == std::io::ErrorKind::NotFound
+    {
+        return Ok(None);
+    }
+    let text = read_text(&path, "not a sweep manifest")?;
     let value: serde_json::Value = serde_json::from_str(&text)
         .map_err(|e| CliError::Input(format!("{}: not a sweep manifest: {e}", path.display())))?;
     let format = value.get("format").and_then(serde_json::Value::as_str);
@@ -136,30 +223,34 @@ pub fn row_line(row: &DesignRow) -> String {
     s
 }
 
-/// The rows of a JSON-lines file: every line that ends with a newline (a last line without
-/// one, torn by an interruption, is left out), and the length in bytes of those lines.
+/// The rows of the file of rows `path` (`designs.jsonl`, or any JSON-lines file of rows),
+/// every non-blank line a row of a design `known` ([`Known::parse_rows`]), each design once.
+/// The file is read as every input file is, within [`ROW_FILES`].
 ///
 /// # Errors
-/// [`CliError::Input`] when a complete line is not a row (a damaged file).
-pub fn read_rows(path: &Path) -> Result<(Vec<DesignRow>, u64), CliError> {
-    let bytes =
-        std::fs::read(path).map_err(|e| CliError::Input(format!("{}: {e}", path.display())))?;
+/// [`CliError::Input`] for a file that does not read, or naming the first line that is not
+/// such a row (`FILE line 3: design 7: dof: 99 is more than 6`).
+pub fn read_rows(path: &Path, known: &Known) -> Result<Vec<DesignRow>, CliError> {
+    let text = read_text_within(path, NOT_ROWS, ROW_FILES)?;
+    known
+        .parse_rows(&text)
+        .map_err(|e| CliError::Input(format!("{} {e}", path.display())))
+}
+
+/// The rows of a run's checkpoint `path`, as [`read_rows`] reads them, from the lines that end
+/// with a newline (a last line without one, torn by an interruption, is left out), and the
+/// length in bytes of those lines.
+///
+/// # Errors
+/// As [`read_rows`].
+pub fn read_checkpoint(path: &Path, known: &Known) -> Result<(Vec<DesignRow>, u64), CliError> {
+    let mut bytes = read_bytes_within(path, NOT_ROWS, ROW_FILES)?;
     let end = bytes.iter().rposition(|&b| b == b'\n').map_or(0, |i| i + 1);
-    let text = std::str::from_utf8(&bytes[..end])
-        .map_err(|e| CliError::Input(format!("{}: not UTF-8: {e}", path.display())))?;
-    let rows = text
-        .lines()
-        .enumerate()
-        .map(|(i, line)| {
-            serde_json::from_str(line).map_err(|e| {
-                CliError::Input(format!(
-                    "{} line {}: not a design row: {e}",
-                    path.display(),
-                    i + 1
-                ))
-            })
-        })
-        .collect::<Result<Vec<DesignRow>, _>>()?;
+    bytes.truncate(end);
+    let text = text_of(path, NOT_ROWS, bytes)?;
+    let rows = known
+        .parse_rows(&text)
+        .map_err(|e| CliError::Input(format!("{} {e}", path.display())))?;
     Ok((rows, end as u64))
 }
 

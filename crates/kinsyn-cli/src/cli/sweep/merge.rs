@@ -6,6 +6,7 @@ use super::selection::Shard;
 use crate::cli::CliError;
 use crate::cli::output::OutputFolder;
 use kinsyn::sweep::DesignRow;
+use kinsyn::sweep::rows::Known;
 use std::path::{Path, PathBuf};
 
 /// The manifests of `dirs`, each a complete shard of the same sweep, each shard once, with
@@ -93,14 +94,29 @@ pub fn merge(dirs: &[PathBuf], out: &Path, force: bool) -> Result<Manifest, CliE
         )));
     }
     let whole = Manifest::new(&first.settings, &first.selection, None, first.sweep_designs);
+    let catalogue = super::catalogue()?;
+    let mut bytes = 0u64;
+    for (dir, _, _) in &shards {
+        let path = dir.join(files::JSONL);
+        bytes += std::fs::metadata(&path).map_or(0, |m| m.len());
+        if bytes > files::MAX_ROWS_BYTES {
+            return Err(CliError::Input(format!(
+                "the shards' {} files hold more than {} bytes, the most a file of sweep rows may hold (docs/limits.md): the merged file could not be read back",
+                files::JSONL,
+                files::MAX_ROWS_BYTES
+            )));
+        }
+    }
     let mut rows: Vec<DesignRow> = Vec::with_capacity(whole.designs);
     for (dir, manifest, shard) in &shards {
+        let designs = manifest.designs(&catalogue, &dir.join(files::MANIFEST))?;
         let path = dir.join(files::JSONL);
-        let (part, _) = read_rows(&path)?;
-        if part.len() != manifest.designs || part.iter().any(|r| !shard.contains(r.design)) {
+        let part = read_rows(&path, &Known::sweep(&designs, manifest.settings.legs))?;
+        if part.len() != manifest.designs {
             return Err(CliError::Input(format!(
-                "{}: its rows are not those of shard {shard} ({} designs); the directory is damaged",
+                "{}: {} rows, not the {} designs of shard {shard}; the directory is damaged",
                 path.display(),
+                part.len(),
                 manifest.designs
             )));
         }

@@ -1,11 +1,12 @@
 //! One run of a sweep into a directory: the designs not yet in its checkpoint evaluated in
 //! parallel, each row checkpointed as soon as it is finished, then the result files.
 
-use super::files::{self, Checkpoint, Manifest, read_manifest, read_rows, write_results};
+use super::files::{self, Checkpoint, Manifest, read_checkpoint, read_manifest, write_results};
 use super::selection::{Shard, SweepSelection};
 use crate::cli::CliError;
 use crate::cli::output::{self, OutputFolder};
 use kinsyn::catalogue::Catalogue;
+use kinsyn::sweep::rows::Known;
 use kinsyn::sweep::{Design, DesignRow, SweepSettings};
 use rayon::prelude::*;
 use serde::Serialize;
@@ -177,7 +178,7 @@ pub fn sweep(
     }
     let checkpoint_path = dir.join(files::CHECKPOINT);
     let (done, keep) = if found.is_some() && checkpoint_path.exists() {
-        checkpoint_rows(&checkpoint_path, &mine)?
+        checkpoint_rows(&checkpoint_path, &mine, options.settings.legs)?
     } else {
         (BTreeMap::new(), 0)
     };
@@ -260,29 +261,18 @@ fn evaluate(
     }
 }
 
-/// The rows of an interrupted run's checkpoint, by design index (the complete lines, each
-/// design once), and the length of those lines in bytes.
+/// The rows of an interrupted run's checkpoint, by design index (the complete lines, each a
+/// design of `mine` built with `legs` legs, each once: [`read_checkpoint`]), and the length of
+/// those lines in bytes.
 fn checkpoint_rows(
     path: &Path,
     mine: &[Design],
+    legs: usize,
 ) -> Result<(BTreeMap<usize, DesignRow>, u64), CliError> {
-    let (rows, keep) = read_rows(path)?;
-    let by_index: BTreeMap<usize, &Design> = mine.iter().map(|d| (d.index, d)).collect();
-    let mut done = BTreeMap::new();
-    for row in rows {
-        let fits = by_index
-            .get(&row.design)
-            .is_some_and(|d| d.chain == row.chain && d.actuated == row.actuated);
-        if !fits {
-            return Err(CliError::Input(format!(
-                "{}: design {} ({} actuated {:?}) is not one of this sweep's; the checkpoint is damaged: remove it to start again",
-                path.display(),
-                row.design,
-                row.chain,
-                row.actuated
-            )));
-        }
-        done.entry(row.design).or_insert(row);
-    }
-    Ok((done, keep))
+    let (rows, keep) = read_checkpoint(path, &Known::sweep(mine, legs)).map_err(|e| {
+        CliError::Input(format!(
+            "{e}; the checkpoint is damaged: remove it to start again"
+        ))
+    })?;
+    Ok((rows.into_iter().map(|r| (r.design, r)).collect(), keep))
 }
