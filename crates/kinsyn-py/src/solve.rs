@@ -32,6 +32,7 @@ fn solve_report(
         seed,
         runs,
         threads,
+        max_paths: kinsyn::homotopy::DEFAULT_MAX_PATHS,
         certify,
         show: Show::None,
     };

@@ -95,7 +95,7 @@ fn bezout_numbers_by_hand() {
         grouped.multihomogeneous_degrees(),
         vec![vec![1, 1], vec![1, 1]]
     );
-    assert_eq!(grouped.multihomogeneous_bezout(), 2);
+    assert_eq!(grouped.multihomogeneous_bezout(), Some(2));
     assert!(
         grouped.clone().with_groups(vec![vec![0]]).is_err(),
         "every variable in a group"

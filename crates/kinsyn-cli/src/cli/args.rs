@@ -255,6 +255,13 @@ pub(super) enum Command {
         /// Worker threads for the paths (default: one per core).
         #[arg(long)]
         threads: Option<usize>,
+        /// Refuse a start system with more paths than this, before tracking any (per run). The
+        /// default, 65536, is a few minutes on two cores for systems of up to a dozen unknowns;
+        /// at most 1048576 (2^20). Systems of more than 100 unknowns are refused whatever this
+        /// says (docs/limits.md).
+        #[arg(long, value_name = "N", default_value_t = kinsyn::homotopy::DEFAULT_MAX_PATHS,
+              value_parser = clap::value_parser!(u64).range(1..=kinsyn::homotopy::MAX_PATHS))]
+        max_paths: u64,
         /// Which solutions to list: real (the real non-singular ones), all (every finite one),
         /// none.
         #[arg(long, value_enum, default_value = "real")]
@@ -294,7 +301,8 @@ pub(super) enum Command {
         #[arg(long, allow_hyphen_values = true)]
         inputs: Option<String>,
         /// Every input of the manipulator an unknown: the operation modes over input and pose
-        /// space (much larger systems: minutes where fixed inputs take a second).
+        /// space (much larger systems: minutes where fixed inputs take a second; the 4-RUU's
+        /// needs --max-paths 700000 with --method regeneration).
         #[arg(long)]
         free_inputs: bool,
         /// The algorithm: by-dimension (a sliced system per dimension; robust) or regeneration
@@ -305,6 +313,16 @@ pub(super) enum Command {
         /// Seed of every random choice (slices, randomisations, loops).
         #[arg(long, default_value_t = 1)]
         seed: u64,
+        /// The most paths to track in all. The start systems' paths are estimated from the
+        /// degrees before any is tracked (by dimension: the Bézout numbers of the sliced
+        /// systems; regeneration: Σ 2·e1⋯em over the equations by increasing degree), and a
+        /// system estimated beyond this is refused; monodromy loops and membership tests then
+        /// track more, within the same limit. The default, 131072, is a few minutes on two
+        /// cores; at most 4194304 (2^22). Systems of more than 32 unknowns or 128 equations
+        /// are refused whatever this says (docs/limits.md).
+        #[arg(long, value_name = "N", default_value_t = kinsyn::homotopy::DEFAULT_DECOMPOSE_PATHS,
+              value_parser = clap::value_parser!(u64).range(1..=kinsyn::homotopy::MAX_DECOMPOSE_PATHS))]
+        max_paths: u64,
         /// Print JSON instead of text.
         #[arg(long)]
         json: bool,

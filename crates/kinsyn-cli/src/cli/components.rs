@@ -3,14 +3,14 @@
 //! modes — by numerical irreducible decomposition (docs/operation-modes.md).
 
 use super::manipulator::{input_texts, inputs_or_reference, load, pose_text};
-use super::solve::read_input;
+use super::solve::{paths_text, read_input};
 use super::{CliError, json, terminal};
 use kinsyn::homotopy::{
-    Component, DecomposeSettings, Decomposition, RegenerationProgress, decompose,
-    regenerate_with_progress,
+    Component, DecomposeError, DecomposeSettings, Decomposition, MAX_DECOMPOSE_PATHS,
+    RegenerationProgress, decompose, decompose_paths, regenerate_with_progress, regeneration_paths,
 };
 use kinsyn::manipulator::{
-    DecompositionMethod, InputValues, LocalMotion, Manipulator, ModeComponent,
+    DecompositionMethod, InputValues, LocalMotion, Manipulator, ModeComponent, OperationModeError,
     OperationModeSettings, OperationModes,
 };
 use kinsyn::poly::C64;
@@ -28,6 +28,46 @@ pub struct ComponentsOptions {
     pub inputs: Option<String>,
     /// For a manipulator: every input an unknown (modes over input and pose space).
     pub free_inputs: bool,
+    /// The most paths to track in all (`--max-paths`;
+    /// [`kinsyn::homotopy::DEFAULT_DECOMPOSE_PATHS`] by default, at most
+    /// [`MAX_DECOMPOSE_PATHS`]).
+    pub max_paths: u64,
+}
+
+/// The refusal of a decomposition, in one line naming `source` and, for a path limit, the
+/// estimate, the limit and the option that raises it. The same for a Bertini file and for a
+/// manipulator's constraints, whose decomposition runs the same library code.
+fn refusal(source: &str, method: DecompositionMethod, e: &DecomposeError) -> CliError {
+    let raise = |limit: u64| {
+        if limit < MAX_DECOMPOSE_PATHS {
+            format!(
+                "more than --max-paths {limit}: raise it (at most {MAX_DECOMPOSE_PATHS} = 2^22)"
+            )
+        } else {
+            format!("more than the limit of {limit} (2^22), the most --max-paths takes")
+        }
+    };
+    CliError::Input(match e {
+        DecomposeError::TooManyPaths { estimate, limit } => format!(
+            "{source}: {} is estimated at {} paths before any is tracked ({}), {}",
+            method_name(method),
+            paths_text(*estimate),
+            match method {
+                DecompositionMethod::ByDimension =>
+                    "the Bézout numbers of the sliced systems, one per dimension",
+                DecompositionMethod::Regeneration =>
+                    "Σ 2·e1⋯em over the equations by increasing degree",
+            },
+            raise(*limit)
+        ),
+        DecomposeError::PathLimit { tracked, estimate } => format!(
+            "{source}: {} stopped after {tracked} paths (the start systems were estimated at {}; monodromy loops and membership tests took the rest), {}",
+            method_name(method),
+            paths_text(*estimate),
+            raise(*tracked)
+        ),
+        other => format!("{source}: {other}"),
+    })
 }
 
 /// `kinsyn components FILE`: a Bertini input file or a manipulator file, as text or as the
@@ -49,6 +89,7 @@ pub fn components(
     )?;
     let settings = DecomposeSettings {
         seed: options.seed,
+        max_paths: options.max_paths,
         ..DecomposeSettings::default()
     };
     if text.trim_start().starts_with('{') {
@@ -62,11 +103,19 @@ pub fn components(
     }
     let input = read_input(path)?;
     let system = &input.system;
-    let d = with_feedback(options.method, |progress| match options.method {
-        DecompositionMethod::Regeneration => regenerate_with_progress(system, &settings, progress),
-        DecompositionMethod::ByDimension => decompose(system, &settings),
+    let estimate = match options.method {
+        DecompositionMethod::Regeneration => regeneration_paths(system),
+        DecompositionMethod::ByDimension => decompose_paths(system),
+    };
+    let d = with_feedback(options.method, Some(estimate), |progress| {
+        match options.method {
+            DecompositionMethod::Regeneration => {
+                regenerate_with_progress(system, &settings, progress)
+            }
+            DecompositionMethod::ByDimension => decompose(system, &settings),
+        }
     })
-    .map_err(|e| CliError::Input(format!("{}: {e}", path.display())))?;
+    .map_err(|e| refusal(&path.display().to_string(), options.method, &e))?;
     if as_json {
         return Ok(json(&serde_json::json!({
             "file": path.display().to_string(),
@@ -79,6 +128,7 @@ pub fn components(
                 "dimension": dim, "point": complex(x)})).collect::<Vec<_>>(),
             "junk": d.junk,
             "paths": d.paths,
+            "estimated_paths": d.estimated_paths.to_string(),
             "seconds": d.seconds,
         })));
     }
@@ -112,14 +162,19 @@ pub fn components(
 }
 
 /// Runs a decomposition with feedback on a terminal: a bar over the equations for
-/// regeneration (which reports after each), a spinner otherwise.
+/// regeneration (which reports after each), a spinner otherwise; both state the `estimate` of
+/// the paths (when known before the system is built: for a Bertini file).
 fn with_feedback<T>(
     method: DecompositionMethod,
+    estimate: Option<u128>,
     work: impl FnOnce(&mut dyn FnMut(RegenerationProgress)) -> T,
 ) -> T {
+    let cost = estimate.map_or_else(String::new, |e| {
+        format!(" (an estimated {} paths)", paths_text(e))
+    });
     match method {
         DecompositionMethod::Regeneration => {
-            let bar = terminal::progress(0, "equations", "regeneration");
+            let bar = terminal::progress(0, "equations", &format!("regeneration{cost}"));
             let result = work(&mut |p: RegenerationProgress| {
                 bar.set_length(p.of as u64);
                 bar.set_position(p.equations as u64);
@@ -127,9 +182,10 @@ fn with_feedback<T>(
             bar.finish_and_clear();
             result
         }
-        DecompositionMethod::ByDimension => {
-            terminal::working("decomposing, dimension by dimension", || work(&mut |_| {}))
-        }
+        DecompositionMethod::ByDimension => terminal::working(
+            &format!("decomposing, dimension by dimension{cost}"),
+            || work(&mut |_| {}),
+        ),
     }
 }
 
@@ -248,10 +304,15 @@ fn manipulator_components(
         method: options.method,
         ..OperationModeSettings::default()
     };
-    let modes = with_feedback(options.method, |progress| {
+    let modes = with_feedback(options.method, None, |progress| {
         m.operation_modes_with_progress(&inputs, &settings, progress)
     })
-    .map_err(|e| CliError::Input(format!("{}: {e}", path.display())))?;
+    .map_err(|e| match e {
+        OperationModeError::Decompose(e) => {
+            refusal(&path.display().to_string(), options.method, &e)
+        }
+        other => CliError::Input(format!("{}: {other}", path.display())),
+    })?;
     let input_text = input_texts(&m, &all);
     if as_json {
         return Ok(json(&manipulator_json(&m, &modes, &input_text, options)));
@@ -298,6 +359,7 @@ fn manipulator_json(
             "dimension": dim, "point": complex(x)})).collect::<Vec<_>>(),
         "junk": d.junk,
         "paths": d.paths,
+        "estimated_paths": d.estimated_paths.to_string(),
         "seconds": d.seconds,
     })
 }

@@ -31,6 +31,9 @@ pub struct SolveOptions {
     pub runs: usize,
     /// Worker threads (`None`: one per core).
     pub threads: Option<usize>,
+    /// The most paths of a run (`--max-paths`; [`homotopy::DEFAULT_MAX_PATHS`] by default, at
+    /// most [`homotopy::MAX_PATHS`]).
+    pub max_paths: u64,
     /// Certify the regular solutions.
     pub certify: bool,
     /// Which solutions the text lists.
@@ -72,7 +75,7 @@ fn count(n: usize, word: &str) -> String {
 }
 
 /// A path count as text: the number, or "more than 10^38" when it saturated (at `u128::MAX`).
-fn paths_text(n: u128) -> String {
+pub(crate) fn paths_text(n: u128) -> String {
     if n == u128::MAX {
         "more than 10^38".into()
     } else {
@@ -80,14 +83,88 @@ fn paths_text(n: u128) -> String {
     }
 }
 
+/// The multi-homogeneous count as text: [`paths_text`], or "not counted" when the variable
+/// groups are too many to count ([`kinsyn::poly::multihomogeneous::MAX_GROUP_STATES`]).
+fn multihomogeneous_text(system: &System) -> String {
+    system
+        .multihomogeneous_bezout()
+        .map_or_else(|| "not counted".into(), paths_text)
+}
+
+fn start_name(start: StartSystem) -> &'static str {
+    match start {
+        StartSystem::TotalDegree => "total-degree",
+        StartSystem::MultiHomogeneous => "multi-homogeneous",
+    }
+}
+
+/// How a refusal names the option that raises the path limit: `kinsyn solve`'s `--max-paths`,
+/// or nothing where the command has no such option (`analyze --all-assemblies`, which keeps the
+/// default).
+#[derive(Clone, Copy)]
+pub enum PathOption {
+    /// `--max-paths` raises the limit.
+    MaxPaths,
+    /// The default limit holds.
+    Default,
+}
+
+/// The cost of a solve, decided before any path is tracked: the library's checks
+/// ([`homotopy::check_solvable`]: unknowns, constant equations, the start system's paths against
+/// `settings.max_paths`) as one line that names `source`, the number and the limit, and the
+/// option that raises it. The paths of one run if it may go ahead.
+pub fn check_cost(
+    source: &str,
+    system: &System,
+    settings: &SolveSettings,
+    option: PathOption,
+) -> Result<u128, CliError> {
+    homotopy::check_solvable(system, settings).map_err(|e| {
+        CliError::Input(match e {
+            homotopy::HomotopyError::TooManyPaths { paths, limit } => {
+                let hint = match settings.start {
+                    StartSystem::TotalDegree => system
+                        .multihomogeneous_bezout()
+                        .filter(|m| *m < paths && *m <= u128::from(homotopy::MAX_PATHS))
+                        .map(|m| {
+                            format!("; --start multi-homogeneous needs {m} for these variable groups")
+                        })
+                        .unwrap_or_default(),
+                    StartSystem::MultiHomogeneous => String::new(),
+                };
+                let raise = match option {
+                    PathOption::MaxPaths if limit < homotopy::MAX_PATHS => format!(
+                        "more than --max-paths {limit}: raise it (at most {} = 2^20)",
+                        homotopy::MAX_PATHS
+                    ),
+                    PathOption::MaxPaths => format!(
+                        "more than the limit of {limit} (2^20), the most --max-paths takes"
+                    ),
+                    PathOption::Default => format!("more than the limit of {limit}"),
+                };
+                format!(
+                    "{source}: the {} start system has {} paths, {raise}{hint}",
+                    start_name(settings.start),
+                    paths_text(paths)
+                )
+            }
+            homotopy::HomotopyError::TooManyUnknowns { unknowns } => format!(
+                "{source}: {unknowns} unknowns: homotopy continuation here takes at most {} (a hard limit: each step factors the Jacobian; docs/limits.md)",
+                homotopy::MAX_UNKNOWNS
+            ),
+            homotopy::HomotopyError::TooManyGroups { groups } => format!(
+                "{source}: {groups} variable groups are too many to count the multi-homogeneous start solutions (at most {} states, docs/limits.md): use --start total-degree",
+                kinsyn::poly::multihomogeneous::MAX_GROUP_STATES
+            ),
+            other => format!("{source}: {other}"),
+        })
+    })
+}
+
 /// Refuses, naming the file and the equation, a system homotopy continuation cannot solve:
 /// not square, an equation that is a constant (no solution, or no isolated one if zero), a
-/// coefficient that overflowed double precision, or more paths than [`homotopy::MAX_PATHS`].
-fn check_solvable(
-    file: &str,
-    input: &bertini::BertiniInput,
-    start: StartSystem,
-) -> Result<(), CliError> {
+/// coefficient that overflowed double precision. The cost is checked next ([`check_cost`]).
+fn check_solvable(file: &str, input: &bertini::BertiniInput) -> Result<(), CliError> {
     let system = &input.system;
     let (equations, variables) = (system.len(), system.nvars());
     if equations != variables {
@@ -137,27 +214,6 @@ fn check_solvable(
             )));
         }
     }
-    let paths = path_count(system, start);
-    if paths > homotopy::MAX_PATHS {
-        let hint = match start {
-            StartSystem::TotalDegree if system.multihomogeneous_bezout() <= homotopy::MAX_PATHS => {
-                format!(
-                    "; --start multi-homogeneous needs {} for these variable groups",
-                    system.multihomogeneous_bezout()
-                )
-            }
-            _ => String::new(),
-        };
-        return Err(CliError::Input(format!(
-            "{file}: the {} start system has {} paths; the limit is {} (2^20){hint}",
-            match start {
-                StartSystem::TotalDegree => "total-degree",
-                StartSystem::MultiHomogeneous => "multi-homogeneous",
-            },
-            paths_text(paths),
-            homotopy::MAX_PATHS
-        )));
-    }
     Ok(())
 }
 
@@ -179,21 +235,17 @@ pub fn with_threads<T: Send>(
     }
 }
 
-/// The number of paths of the chosen start system.
-fn path_count(system: &System, start: StartSystem) -> u128 {
-    match start {
-        StartSystem::TotalDegree => system.bezout_number(),
-        StartSystem::MultiHomogeneous => system.multihomogeneous_bezout(),
-    }
-}
-
-/// Solves with a progress bar over the paths (shown only on a terminal).
+/// Solves with a progress bar over the paths (shown only on a terminal), after the cost is
+/// checked ([`check_cost`], the refusal naming `source` and `option`).
 pub fn solve_with_bar(
+    source: &str,
     system: &System,
     settings: &SolveSettings,
     runs: usize,
+    option: PathOption,
 ) -> Result<RunsReport, CliError> {
-    let paths = usize::try_from(path_count(system, settings.start)).unwrap_or(usize::MAX);
+    let paths = check_cost(source, system, settings, option)?;
+    let paths = usize::try_from(paths).unwrap_or(usize::MAX);
     let bar = terminal::progress(paths.saturating_mul(runs), "paths", "solve");
     let mut reports = Vec::with_capacity(runs);
     for k in 0..runs as u64 {
@@ -258,16 +310,23 @@ pub fn solve_system(text: &str, source: &str, options: &SolveOptions) -> Result<
         )));
     }
     let input = parse_input(text, source)?;
-    check_solvable(source, &input, options.start)?;
-    let system = input.system;
     let settings = SolveSettings {
         seed: options.seed,
         start: options.start,
         certify: options.certify,
+        max_paths: options.max_paths,
         ..SolveSettings::default()
     };
+    check_solvable(source, &input)?;
+    let system = input.system;
     let runs = with_threads(options.threads, || {
-        solve_with_bar(&system, &settings, options.runs)
+        solve_with_bar(
+            source,
+            &system,
+            &settings,
+            options.runs,
+            PathOption::MaxPaths,
+        )
     })??;
     let threads = options.threads.unwrap_or_else(rayon::current_num_threads);
     Ok(Solved {
@@ -373,7 +432,7 @@ fn text(
         },
         report.paths(),
         paths_text(system.bezout_number()),
-        paths_text(system.multihomogeneous_bezout()),
+        multihomogeneous_text(system),
         system.groups().len(),
         if system.groups().len() == 1 { "" } else { "s" },
         options.seed
@@ -528,7 +587,7 @@ impl SolveJson {
             variables: system.variables().to_vec(),
             equations: system.len(),
             bezout_number: paths_text(system.bezout_number()),
-            multihomogeneous_bezout_number: paths_text(system.multihomogeneous_bezout()),
+            multihomogeneous_bezout_number: multihomogeneous_text(system),
             start: options.start,
             seed: options.seed,
             threads,

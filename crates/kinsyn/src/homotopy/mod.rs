@@ -27,6 +27,7 @@
 //! assert_eq!(report.at_infinity(), 0, "Bézout's 2 paths, both finite");
 //! ```
 
+mod nearby;
 mod parameter;
 mod regeneration;
 mod start;
@@ -38,17 +39,22 @@ pub use parameter::{
     track_parameters,
 };
 
-pub use regeneration::{RegenerationProgress, regenerate, regenerate_with_progress};
+pub use regeneration::{
+    RegenerationProgress, regenerate, regenerate_with_progress, regeneration_paths,
+};
 pub use start::StartSystem;
 pub use tracker::{PathFailure, TrackerSettings};
 pub use witness::{
-    Component, DecomposeError, DecomposeSettings, Decomposition, decompose, points_on_slice,
+    Component, DEFAULT_DECOMPOSE_PATHS, DecomposeError, DecomposeSettings, Decomposition,
+    MAX_DECOMPOSE_EQUATIONS, MAX_DECOMPOSE_PATHS, MAX_DECOMPOSE_UNKNOWNS, check_system, decompose,
+    decompose_paths, points_on_slice,
 };
 
 use crate::certify::{Certificate, Reality, certify_roots};
 pub use crate::poly::C64;
 use crate::poly::System;
 use nalgebra::{DMatrix, DVector};
+use nearby::NearPoints;
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 use rayon::prelude::*;
@@ -56,9 +62,20 @@ use start::ProjectiveHomotopy;
 use std::fmt::Write as _;
 use tracker::Tracker;
 
-/// The most paths [`solve`] tracks: beyond, the system is refused rather than left to run for
-/// hours (a tighter start system or a parameter homotopy is the way).
-pub const MAX_PATHS: u128 = 1 << 20;
+/// The most paths [`solve`] tracks, whatever [`SolveSettings::max_paths`] says: every start
+/// solution and every path's end are held together in memory (2²⁰ paths of a system in 20
+/// unknowns take about a gigabyte), and beyond it the system is refused rather than left to
+/// run for hours (a tighter start system or a parameter homotopy is the way).
+pub const MAX_PATHS: u64 = 1 << 20;
+
+/// The default of [`SolveSettings::max_paths`]: 2¹⁶ = 65 536 paths, a few minutes on two
+/// cores for systems of the size kinsyn meets (docs/limits.md, "Measured cost").
+pub const DEFAULT_MAX_PATHS: u64 = 1 << 16;
+
+/// The most unknowns (and equations) [`solve`] takes: each step of a path factors the
+/// `n × n` Jacobian, and the certificates take interval matrices of that size
+/// (docs/limits.md, "Measured cost").
+pub const MAX_UNKNOWNS: usize = 100;
 
 /// An endpoint is at infinity when a homogenising coordinate is below this fraction of its
 /// group's coordinates.
@@ -98,9 +115,40 @@ pub enum HomotopyError {
     /// An equation is a non-zero constant (no solution) or zero (not isolated).
     #[error("equation {0} is constant: the system has no isolated solutions")]
     ConstantEquation(usize),
-    /// More paths than [`MAX_PATHS`].
-    #[error("{0} paths exceed the limit of {MAX_PATHS}")]
-    TooManyPaths(u128),
+    /// More unknowns than [`MAX_UNKNOWNS`].
+    #[error("{unknowns} unknowns exceed the limit of {MAX_UNKNOWNS}")]
+    TooManyUnknowns {
+        /// The system's unknowns.
+        unknowns: usize,
+    },
+    /// The system's program would exceed [`crate::poly::MAX_PROGRAM_SIZE`]
+    /// ([`System::program_size`]).
+    #[error(
+        "the system's program of values and Jacobian would hold up to {size} factors, beyond the limit of {}",
+        crate::poly::MAX_PROGRAM_SIZE
+    )]
+    ProgramSize {
+        /// The bound on its size.
+        size: u128,
+    },
+    /// The variable groups are too many to count the multi-homogeneous start solutions
+    /// ([`crate::poly::multihomogeneous::MAX_GROUP_STATES`]).
+    #[error(
+        "{groups} variable groups are too many to count the multi-homogeneous start solutions (at most {} states)",
+        crate::poly::multihomogeneous::MAX_GROUP_STATES
+    )]
+    TooManyGroups {
+        /// The system's variable groups.
+        groups: usize,
+    },
+    /// More paths than the limit ([`SolveSettings::max_paths`], at most [`MAX_PATHS`]).
+    #[error("{paths} paths exceed the limit of {limit}")]
+    TooManyPaths {
+        /// The start system's paths (saturating at `u128::MAX`).
+        paths: u128,
+        /// The limit.
+        limit: u64,
+    },
 }
 
 /// How to solve.
@@ -117,6 +165,9 @@ pub struct SolveSettings {
     /// How many times paths with suspect endpoints (coinciding regular endpoints: a path jump;
     /// failures) are tracked again with stricter steps.
     pub retrack_rounds: usize,
+    /// The most paths to track: a start system with more is refused before any is tracked
+    /// ([`DEFAULT_MAX_PATHS`]; at most [`MAX_PATHS`] is honoured).
+    pub max_paths: u64,
 }
 
 impl Default for SolveSettings {
@@ -127,6 +178,7 @@ impl Default for SolveSettings {
             tracker: TrackerSettings::default(),
             certify: true,
             retrack_rounds: 2,
+            max_paths: DEFAULT_MAX_PATHS,
         }
     }
 }
@@ -308,8 +360,8 @@ impl SolveReport {
 /// All isolated solutions of the square `system` (module documentation).
 ///
 /// # Errors
-/// [`HomotopyError`] if the system is not square, has a constant equation, or needs more than
-/// [`MAX_PATHS`] paths.
+/// [`HomotopyError`] if the system is not square, has more than [`MAX_UNKNOWNS`] unknowns or a
+/// constant equation, or needs more paths than [`SolveSettings::max_paths`] ([`check_solvable`]).
 pub fn solve(system: &System, settings: &SolveSettings) -> Result<SolveReport, HomotopyError> {
     solve_with_progress(system, settings, &|| {})
 }
@@ -324,22 +376,7 @@ pub fn solve_with_progress(
     progress: &(dyn Fn() + Sync),
 ) -> Result<SolveReport, HomotopyError> {
     let clock = std::time::Instant::now();
-    if !system.is_square() {
-        return Err(HomotopyError::NotSquare {
-            equations: system.len(),
-            variables: system.nvars(),
-        });
-    }
-    if let Some(i) = system.degrees().iter().position(|d| *d == 0) {
-        return Err(HomotopyError::ConstantEquation(i));
-    }
-    let count = match settings.start {
-        StartSystem::TotalDegree => system.bezout_number(),
-        StartSystem::MultiHomogeneous => system.multihomogeneous_bezout(),
-    };
-    if count > MAX_PATHS {
-        return Err(HomotopyError::TooManyPaths(count));
-    }
+    check_solvable(system, settings)?;
     let mut rng = ChaCha8Rng::seed_from_u64(settings.seed);
     let homotopy = ProjectiveHomotopy::new(system, settings.start, &mut rng);
     let starts = homotopy.start_solutions();
@@ -384,6 +421,56 @@ pub fn solve_with_progress(
         retracked,
         seconds: clock.elapsed().as_secs_f64(),
     })
+}
+
+/// The number of paths of the start system `start` for `system`: its Bézout number, or its
+/// multi-homogeneous Bézout number for its variable groups (`None` when those are too many to
+/// count, [`crate::poly::multihomogeneous::MAX_GROUP_STATES`]).
+#[must_use]
+pub fn path_count(system: &System, start: StartSystem) -> Option<u128> {
+    match start {
+        StartSystem::TotalDegree => Some(system.bezout_number()),
+        StartSystem::MultiHomogeneous => system.multihomogeneous_bezout(),
+    }
+}
+
+/// What [`solve`] checks before it tracks any path, at a cost of the system's size alone: a
+/// square system of at most [`MAX_UNKNOWNS`] unknowns and a program within
+/// [`crate::poly::MAX_PROGRAM_SIZE`], without a constant equation, whose start system has at
+/// most [`SolveSettings::max_paths`] (and [`MAX_PATHS`]) paths. Returns those paths.
+///
+/// # Errors
+/// The [`HomotopyError`] [`solve`] would return before tracking.
+pub fn check_solvable(system: &System, settings: &SolveSettings) -> Result<u128, HomotopyError> {
+    if !system.is_square() {
+        return Err(HomotopyError::NotSquare {
+            equations: system.len(),
+            variables: system.nvars(),
+        });
+    }
+    if system.nvars() > MAX_UNKNOWNS {
+        return Err(HomotopyError::TooManyUnknowns {
+            unknowns: system.nvars(),
+        });
+    }
+    let size = system.program_size();
+    if size > crate::poly::MAX_PROGRAM_SIZE {
+        return Err(HomotopyError::ProgramSize { size });
+    }
+    if let Some(i) = system.degrees().iter().position(|d| *d == 0) {
+        return Err(HomotopyError::ConstantEquation(i));
+    }
+    let count = path_count(system, settings.start).ok_or(HomotopyError::TooManyGroups {
+        groups: system.groups().len(),
+    })?;
+    let limit = settings.max_paths.min(MAX_PATHS);
+    if count > u128::from(limit) {
+        return Err(HomotopyError::TooManyPaths {
+            paths: count,
+            limit,
+        });
+    }
+    Ok(count)
 }
 
 /// Independent solves of one system with different random choices (seeds `seed, seed + 1, …`):
@@ -441,21 +528,32 @@ pub fn solve_runs(
 #[must_use]
 pub fn combine_runs(runs: Vec<SolveReport>) -> RunsReport {
     let mut union: Vec<Vec<C64>> = Vec::new();
+    let mut index = NearPoints::default();
     for s in runs
         .iter()
         .flat_map(|r| r.solutions.iter().filter(|s| s.regular))
     {
-        if !union.iter().any(|u| close(u, &s.x, 1e-6)) {
+        let known = index
+            .candidates(&s.x, 1e-6)
+            .into_iter()
+            .any(|k| close(&union[k], &s.x, 1e-6));
+        if !known {
+            index.insert(union.len(), &s.x);
             union.push(s.x.clone());
         }
     }
     let complete = runs
         .iter()
         .map(|r| {
+            let mut found = NearPoints::default();
+            for (k, s) in r.solutions.iter().enumerate().filter(|(_, s)| s.regular) {
+                found.insert(k, &s.x);
+            }
             union.iter().all(|u| {
-                r.solutions
-                    .iter()
-                    .any(|s| s.regular && close(u, &s.x, 1e-6))
+                found
+                    .candidates(u, 1e-6)
+                    .into_iter()
+                    .any(|k| close(u, &r.solutions[k].x, 1e-6))
             })
         })
         .collect();
@@ -602,21 +700,25 @@ fn close(a: &[C64], b: &[C64], tolerance: f64) -> bool {
 /// regular solution is the end of exactly one path of a γ-trick homotopy, so a second one
 /// jumped).
 fn suspect_paths(ends: &[PathEnd]) -> Vec<usize> {
+    let regular = |e: &PathEnd| e.kind == EndpointKind::Regular;
+    let mut index = NearPoints::default();
+    for (k, e) in ends.iter().enumerate().filter(|(_, e)| regular(e)) {
+        index.insert(k, e.x.as_deref().expect("finite"));
+    }
     let mut suspects = Vec::new();
     for (k, e) in ends.iter().enumerate() {
         if e.kind == EndpointKind::Failed {
             suspects.push(k);
             continue;
         }
-        if e.kind != EndpointKind::Regular {
+        if !regular(e) {
             continue;
         }
         let x = e.x.as_deref().expect("finite");
-        let twin = ends.iter().enumerate().any(|(l, f)| {
-            l != k
-                && f.kind == EndpointKind::Regular
-                && close(x, f.x.as_deref().expect("finite"), 1e-6)
-        });
+        let twin = index
+            .candidates(x, 1e-6)
+            .into_iter()
+            .any(|l| l != k && close(x, ends[l].x.as_deref().expect("finite"), 1e-6));
         if twin {
             suspects.push(k);
         }
@@ -651,6 +753,7 @@ fn certify_solutions(system: &System, solutions: &mut [Solution]) {
 fn distinct_solutions(system: &System, ends: &[PathEnd]) -> Vec<Solution> {
     let real_system = system.is_real();
     let mut solutions: Vec<Solution> = Vec::new();
+    let mut index = NearPoints::default();
     let mut finite: Vec<&PathEnd> = ends.iter().filter(|e| e.x.is_some()).collect();
     finite.sort_by_key(|e| e.kind != EndpointKind::Regular);
     for e in finite {
@@ -660,7 +763,13 @@ fn distinct_solutions(system: &System, ends: &[PathEnd]) -> Vec<Solution> {
         } else {
             1e-4
         };
-        if let Some(s) = solutions.iter_mut().find(|s| close(&s.x, x, tolerance)) {
+        // The first solution (in the order found) within the tolerance, as a scan would give.
+        let same = index
+            .candidates(x, tolerance)
+            .into_iter()
+            .filter(|k| close(&solutions[*k].x, x, tolerance))
+            .min();
+        if let Some(s) = same.map(|k| &mut solutions[k]) {
             s.multiplicity += 1;
             s.paths.push(e.path);
             s.regular &= e.kind == EndpointKind::Regular;
@@ -679,6 +788,7 @@ fn distinct_solutions(system: &System, ends: &[PathEnd]) -> Vec<Solution> {
             .iter()
             .map(|v| v.norm())
             .fold(0.0, f64::max);
+        index.insert(solutions.len(), x);
         solutions.push(Solution {
             x: x.to_vec(),
             regular: e.kind == EndpointKind::Regular,

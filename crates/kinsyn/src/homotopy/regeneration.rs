@@ -33,11 +33,12 @@
 //! The equations are brought in by increasing degree, then number of terms (in the order given
 //! among ties): short, low-degree equations first keep the intermediate sets small.
 
+use super::nearby::PointList;
 use super::parameter::{FamilyEnd, track_parameters, track_parameters_to_end};
 use super::tracker::{PathFailure, TrackerSettings};
 use super::witness::{
-    Component, DecomposeError, DecomposeSettings, Decomposition, MEMBERSHIP_TOLERANCE, SAME_POINT,
-    Witness, check_system, family, gaussian, hyperplane, irreducible_pieces, on_larger_component,
+    Component, DecomposeError, DecomposeSettings, Decomposition, MEMBERSHIP_TOLERANCE, PathBudget,
+    SAME_POINT, Witness, family, gaussian, hyperplane, irreducible_pieces, on_larger_component,
     random_combinations, vanishes,
 };
 use super::{C64, relative_distance};
@@ -74,12 +75,39 @@ pub struct RegenerationProgress {
 /// such a set are not followed).
 ///
 /// # Errors
-/// [`DecomposeError`] for a system without equations or unknowns, or with a zero equation.
+/// [`DecomposeError`] for a system without equations or unknowns, too large, with a zero
+/// equation, or needing more paths than [`DecomposeSettings::max_paths`]
+/// ([`regeneration_paths`]; the limit is checked before any path is tracked, and again as
+/// paths are tracked).
 pub fn regenerate(
     system: &System,
     settings: &DecomposeSettings,
 ) -> Result<Decomposition, DecomposeError> {
     regenerate_with_progress(system, settings, &mut |_| {})
+}
+
+/// The paths of the regeneration steps of [`regenerate`], from the degrees alone. The
+/// equations are brought in by increasing degree `e_1 ≤ e_2 ≤ …`; before step `m` the witness
+/// points of all dimensions are points of distinct components of `V(f_1 … f_{m−1})`, at most
+/// `Π_{i<m} e_i` of them (the refined Bézout theorem: the degrees of the components of `m − 1`
+/// hypersurfaces sum to at most the product of theirs), and each is followed along `e_m` paths
+/// twice (the moving hyperplane, then the homotopy to `f_m`). So at most
+/// `Σ_m 2 Π_{i≤m} e_i` paths. Saturates at `u128::MAX`.
+///
+/// The 4-RUU at fixed inputs (ten quadrics): `2 (2 + 4 + … + 2¹⁰) = 4092`. Retried paths,
+/// monodromy loops, trace and membership tests track more, in proportion to the witness points
+/// found, within [`DecomposeSettings::max_paths`] in all.
+#[must_use]
+pub fn regeneration_paths(system: &System) -> u128 {
+    let mut degrees = system.degrees();
+    degrees.sort_unstable();
+    let mut points: u128 = 1;
+    let mut paths: u128 = 0;
+    for e in degrees {
+        points = points.saturating_mul(u128::from(e));
+        paths = paths.saturating_add(points.saturating_mul(2));
+    }
+    paths
 }
 
 /// [`regenerate`], reporting after each equation.
@@ -92,7 +120,8 @@ pub fn regenerate_with_progress(
     progress: &mut dyn FnMut(RegenerationProgress),
 ) -> Result<Decomposition, DecomposeError> {
     let clock = std::time::Instant::now();
-    check_system(system)?;
+    let estimated_paths = regeneration_paths(system);
+    let budget = PathBudget::new(system, settings, estimated_paths)?;
     let (n, big_n) = (system.len(), system.nvars());
     let mut rng = ChaCha8Rng::seed_from_u64(settings.seed);
     let flag: Vec<Vec<C64>> = (0..big_n)
@@ -104,6 +133,7 @@ pub fn regenerate_with_progress(
         unresolved: Vec::new(),
         junk: 0,
         paths: 0,
+        estimated_paths,
         seconds: 0.0,
     };
     let mut branches = vec![Branch {
@@ -142,6 +172,7 @@ pub fn regenerate_with_progress(
                 dim: branch.dim,
                 flag: &flag,
                 settings,
+                budget: &budget,
             };
             let (regular, singular, paths) = step.regenerate(&off, &mut rng)?;
             out.paths += paths;
@@ -156,7 +187,8 @@ pub fn regenerate_with_progress(
                 });
             }
         }
-        let (junk, unresolved, paths) = sort_suspects(system, &next, suspects, &flag, settings)?;
+        let (junk, unresolved, paths) =
+            sort_suspects(system, &next, suspects, &flag, settings, &budget)?;
         out.junk += junk;
         out.paths += paths;
         let (rescued, unresolved) = rescue(system, &equations[..=m], unresolved, &flag, &mut rng);
@@ -169,7 +201,14 @@ pub fn regenerate_with_progress(
             paths: out.paths,
         });
     }
-    finish(system, branches, &flag, settings, &mut rng, &mut out)?;
+    finish(
+        system,
+        branches,
+        &flag,
+        (settings, &budget),
+        &mut rng,
+        &mut out,
+    )?;
     out.components
         .sort_by_key(|c| (std::cmp::Reverse(c.dimension), std::cmp::Reverse(c.degree)));
     out.seconds = clock.elapsed().as_secs_f64();
@@ -182,7 +221,7 @@ fn finish(
     system: &System,
     mut branches: Vec<Branch>,
     flag: &[Vec<C64>],
-    settings: &DecomposeSettings,
+    (settings, budget): (&DecomposeSettings, &PathBudget),
     rng: &mut ChaCha8Rng,
     out: &mut Decomposition,
 ) -> Result<(), DecomposeError> {
@@ -199,7 +238,7 @@ fn finish(
                 0,
             )
         } else {
-            irreducible_pieces(witness, settings, rng)
+            irreducible_pieces(witness, settings, rng, budget)?
         };
         out.paths += paths;
         for (members, passed) in pieces {
@@ -209,7 +248,7 @@ fn finish(
                 .zip(&witnesses)
                 .filter(|(b, _)| b.dim > branch.dim)
                 .map(|(_, w)| w);
-            let (inside, paths) = on_larger_component(larger, &points[0], settings);
+            let (inside, paths) = on_larger_component(larger, &points[0], settings, budget)?;
             out.paths += paths;
             if inside {
                 out.junk += 1;
@@ -256,6 +295,7 @@ struct Step<'a> {
     dim: usize,
     flag: &'a [Vec<C64>],
     settings: &'a DecomposeSettings,
+    budget: &'a PathBudget,
 }
 
 impl Step<'_> {
@@ -282,7 +322,7 @@ impl Step<'_> {
             .collect();
         let mut starts = Vec::new();
         for h in &targets {
-            let (ends, tracked) = with_retry(points, tracker, |xs, t| {
+            let (ends, tracked) = with_retry(points, tracker, self.budget, |xs, t| {
                 track_parameters(&moving, &self.flag[k - 1], h, xs, t)
             })?;
             paths += tracked;
@@ -300,35 +340,25 @@ impl Step<'_> {
         let mut equations = active;
         equations.push(blend);
         let regeneration = family(system, equations, fixed, 0, 1)?;
-        let (ends, tracked) = with_retry(&starts, tracker, |xs, t| {
+        let (ends, tracked) = with_retry(&starts, tracker, self.budget, |xs, t| {
             track_parameters_to_end(&regeneration, &[C64::from(1.0)], &[C64::from(0.0)], xs, t)
         })?;
         paths += tracked;
-        let mut regular: Vec<Vec<C64>> = Vec::new();
-        let mut singular: Vec<Vec<C64>> = Vec::new();
+        let mut regular = PointList::default();
+        let mut singular = PointList::default();
         for end in ends {
             match end {
                 FamilyEnd::Regular(x) => {
-                    if !regular
-                        .iter()
-                        .any(|y| relative_distance(y, &x) <= SAME_POINT)
-                    {
-                        regular.push(x);
-                    }
+                    regular.insert_new(x, SAME_POINT);
                 }
                 FamilyEnd::Singular(x) => {
                     // A multiple endpoint is reached by as many paths as its multiplicity.
-                    if !singular
-                        .iter()
-                        .any(|y| relative_distance(y, &x) <= MEMBERSHIP_TOLERANCE)
-                    {
-                        singular.push(x);
-                    }
+                    singular.insert_new(x, MEMBERSHIP_TOLERANCE);
                 }
                 FamilyEnd::Infinite => {}
             }
         }
-        Ok((regular, singular, paths))
+        Ok((regular.into_points(), singular.into_points(), paths))
     }
 }
 
@@ -338,12 +368,14 @@ impl Step<'_> {
 fn with_retry<T>(
     starts: &[Vec<C64>],
     tracker: TrackerSettings,
+    budget: &PathBudget,
     track: impl Fn(
         &[Vec<C64>],
         TrackerSettings,
     ) -> Result<Vec<Result<T, PathFailure>>, super::ParameterError>,
 ) -> Result<(Vec<T>, usize), DecomposeError> {
     let family = |e: super::ParameterError| DecomposeError::Family(e.to_string());
+    budget.spend(starts.len())?;
     let first = track(starts, tracker).map_err(family)?;
     let failed: Vec<Vec<C64>> = starts
         .iter()
@@ -353,6 +385,7 @@ fn with_retry<T>(
         .collect();
     let mut ends: Vec<T> = first.into_iter().flatten().collect();
     if !failed.is_empty() {
+        budget.spend(failed.len())?;
         ends.extend(
             track(&failed, tracker.stricter())
                 .map_err(family)?
@@ -367,14 +400,13 @@ fn with_retry<T>(
 /// two branches has the same points on the flag's slice), empty branches dropped.
 fn without_repeats(branches: Vec<Branch>) -> Vec<Branch> {
     let mut kept: Vec<Branch> = Vec::new();
+    let mut seen: std::collections::BTreeMap<usize, PointList> = std::collections::BTreeMap::new();
     for mut b in branches {
-        b.points.retain(|x| {
-            !kept.iter().filter(|k| k.dim == b.dim).any(|k| {
-                k.points
-                    .iter()
-                    .any(|y| relative_distance(y, x) <= SAME_POINT)
-            })
-        });
+        let earlier = seen.entry(b.dim).or_default();
+        b.points.retain(|x| !earlier.contains(x, SAME_POINT));
+        for x in &b.points {
+            earlier.push(x.clone());
+        }
         if !b.points.is_empty() {
             kept.push(b);
         }
@@ -391,6 +423,7 @@ fn sort_suspects(
     suspects: Vec<(usize, Vec<C64>)>,
     flag: &[Vec<C64>],
     settings: &DecomposeSettings,
+    budget: &PathBudget,
 ) -> Result<(usize, Vec<(usize, Vec<C64>)>, usize), DecomposeError> {
     if suspects.is_empty() {
         return Ok((0, Vec::new(), 0));
@@ -403,7 +436,7 @@ fn sort_suspects(
     let mut unresolved = Vec::new();
     for (dim, x) in suspects {
         let candidates = witnesses.iter().filter(|(d, _)| *d >= dim).map(|(_, w)| w);
-        let (inside, p) = on_larger_component(candidates, &x, settings);
+        let (inside, p) = on_larger_component(candidates, &x, settings, budget)?;
         paths += p;
         if inside {
             junk += 1;

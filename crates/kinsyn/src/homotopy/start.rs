@@ -20,6 +20,7 @@
 
 use super::C64;
 use super::tracker::Homotopy;
+use crate::poly::multihomogeneous::Assignments;
 use crate::poly::{Program, System, Workspace};
 use nalgebra::{DMatrix, DVector};
 use rand::Rng;
@@ -45,8 +46,9 @@ fn random_complex(rng: &mut ChaCha8Rng) -> C64 {
 enum Start {
     TotalDegree(Vec<u32>),
     /// `[equation][group][factor]` → coefficients over the group's coordinates (its variables
-    /// in group order, then its homogenising coordinate).
-    LinearProduct(Vec<Vec<Vec<Vec<C64>>>>),
+    /// in group order, then its homogenising coordinate); and the assignments of equations to
+    /// groups that complete, which the enumeration of the start solutions follows.
+    LinearProduct(Vec<Vec<Vec<Vec<C64>>>>, Assignments),
 }
 
 /// The γ-trick homotopy from a start system to a homogenised target, in projective coordinates
@@ -115,11 +117,10 @@ impl ProjectiveHomotopy {
         let start = match kind {
             StartSystem::TotalDegree => Start::TotalDegree(system.degrees()),
             StartSystem::MultiHomogeneous => {
-                let d = system
-                    .clone()
-                    .with_groups(variable_groups)
-                    .expect("the system's own groups")
-                    .multihomogeneous_degrees();
+                let d = system.multihomogeneous_degrees();
+                let assignments = system
+                    .assignments()
+                    .expect("solve counts the assignments before it builds the homotopy");
                 Start::LinearProduct(
                     d.iter()
                         .map(|row| {
@@ -133,6 +134,7 @@ impl ProjectiveHomotopy {
                                 .collect()
                         })
                         .collect(),
+                    assignments,
                 )
             }
         };
@@ -152,7 +154,9 @@ impl ProjectiveHomotopy {
     pub(crate) fn start_solutions(&self) -> Vec<DVector<C64>> {
         match &self.start {
             Start::TotalDegree(degrees) => self.roots_of_unity(degrees),
-            Start::LinearProduct(forms) => self.linear_product_solutions(forms),
+            Start::LinearProduct(forms, assignments) => {
+                self.linear_product_solutions(forms, assignments)
+            }
         }
     }
 
@@ -188,27 +192,26 @@ impl ProjectiveHomotopy {
         z
     }
 
-    fn linear_product_solutions(&self, forms: &[Vec<Vec<Vec<C64>>>]) -> Vec<DVector<C64>> {
-        let sizes: Vec<usize> = self.groups.iter().map(|g| g.len() - 1).collect();
+    fn linear_product_solutions(
+        &self,
+        forms: &[Vec<Vec<Vec<C64>>>],
+        assignments: &Assignments,
+    ) -> Vec<DVector<C64>> {
         let mut out = Vec::new();
-        // Every assignment of equations to groups with group j receiving sizes[j] equations,
-        // and every choice of one factor per equation.
-        let mut assignment = Vec::with_capacity(forms.len());
-        self.assign(
-            forms,
-            &sizes,
-            &mut vec![0; sizes.len()],
-            &mut assignment,
-            &mut out,
-        );
+        // Every assignment of equations to groups with group j receiving as many equations as
+        // it has variables, and every choice of one factor per equation; only steps from
+        // which the assignment completes are taken, so the walk costs the start solutions,
+        // not the dead ends.
+        let mut chosen = Vec::with_capacity(forms.len());
+        self.assign(forms, assignments, 0, &mut chosen, &mut out);
         out
     }
 
     fn assign(
         &self,
         forms: &[Vec<Vec<Vec<C64>>>],
-        sizes: &[usize],
-        used: &mut [usize],
+        assignments: &Assignments,
+        state: usize,
         chosen: &mut Vec<(usize, usize)>,
         out: &mut Vec<DVector<C64>>,
     ) {
@@ -219,15 +222,14 @@ impl ProjectiveHomotopy {
             }
             return;
         }
-        for j in 0..sizes.len() {
-            if used[j] < sizes[j] {
-                used[j] += 1;
-                for k in 0..forms[i][j].len() {
-                    chosen.push((j, k));
-                    self.assign(forms, sizes, used, chosen, out);
-                    chosen.pop();
-                }
-                used[j] -= 1;
+        for (j, factors) in forms[i].iter().enumerate() {
+            let Some(next) = assignments.step(i, state, j) else {
+                continue;
+            };
+            for k in 0..factors.len() {
+                chosen.push((j, k));
+                self.assign(forms, assignments, next, chosen, out);
+                chosen.pop();
             }
         }
     }
@@ -276,7 +278,7 @@ impl ProjectiveHomotopy {
                     gz[(i, self.n)] = -h.powi(d - 1) * f64::from(d);
                 }
             }
-            Start::LinearProduct(forms) => {
+            Start::LinearProduct(forms, _) => {
                 for (i, row) in forms.iter().enumerate() {
                     // All factors' values, then the product and its gradient by the product rule.
                     let mut factors: Vec<(usize, &Vec<C64>, C64)> = Vec::new();

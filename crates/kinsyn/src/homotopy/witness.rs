@@ -27,6 +27,7 @@
 //!
 //! All random choices come from one seed.
 
+use super::nearby::NearPoints;
 use super::parameter::{
     FamilyEnd, ParameterError, ParametrizedSystem, track_parameters, track_parameters_to_end,
 };
@@ -35,6 +36,26 @@ use crate::poly::{Poly, System};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 use rand_distr::{Distribution, StandardNormal};
+use std::cell::Cell;
+
+/// The default of [`DecomposeSettings::max_paths`]: 2¹⁷ = 131 072 paths, a few minutes on two
+/// cores for the systems of a manipulator (docs/limits.md, "Measured cost"). The 4-RUU at fixed
+/// inputs estimates 510 (by dimension) and 4 092 (regeneration).
+pub const DEFAULT_DECOMPOSE_PATHS: u64 = 1 << 17;
+
+/// The most paths a decomposition tracks, whatever [`DecomposeSettings::max_paths`] says:
+/// 2²² = 4 194 304, about two hours (the 4-RUU over its input space, `--free-inputs`, estimates
+/// 699 052 paths by regeneration).
+pub const MAX_DECOMPOSE_PATHS: u64 = 1 << 22;
+
+/// The most unknowns a decomposition takes: the slice families of dimension `d` have
+/// `N + d (N + 1)` variables (the slices' coefficients are their parameters), so the work and
+/// memory grow as `N⁴` (docs/limits.md, "Measured cost").
+pub const MAX_DECOMPOSE_UNKNOWNS: usize = 32;
+
+/// The most equations a decomposition takes: an over-determined system is randomised to as
+/// many combinations as unknowns, each a sum over every equation.
+pub const MAX_DECOMPOSE_EQUATIONS: usize = 4 * MAX_DECOMPOSE_UNKNOWNS;
 
 /// Why a system cannot be decomposed.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -61,6 +82,48 @@ pub enum DecomposeError {
     /// The sliced family could not be formed (a variable named like a slice parameter).
     #[error("the slice family: {0}")]
     Family(String),
+    /// More unknowns than [`MAX_DECOMPOSE_UNKNOWNS`] or equations than
+    /// [`MAX_DECOMPOSE_EQUATIONS`].
+    #[error(
+        "{equations} equations in {unknowns} unknowns: a decomposition takes at most {MAX_DECOMPOSE_EQUATIONS} equations in {MAX_DECOMPOSE_UNKNOWNS} unknowns"
+    )]
+    TooLarge {
+        /// Equations.
+        equations: usize,
+        /// Unknowns.
+        unknowns: usize,
+    },
+    /// The programs of the randomised system would exceed [`crate::poly::MAX_PROGRAM_SIZE`]:
+    /// up to `N` combinations, each holding every equation's terms
+    /// ([`System::program_size`] times `N`).
+    #[error(
+        "the randomised system's program would hold up to {size} factors, beyond the limit of {}",
+        crate::poly::MAX_PROGRAM_SIZE
+    )]
+    ProgramSize {
+        /// The bound on its size.
+        size: u128,
+    },
+    /// The start systems (or regeneration steps) need more paths than the limit, known from
+    /// the degrees before any path is tracked ([`decompose_paths`], [`super::regeneration_paths`]).
+    #[error("an estimated {estimate} paths exceed the limit of {limit}")]
+    TooManyPaths {
+        /// The bound on the paths of the start systems (saturating at `u128::MAX`).
+        estimate: u128,
+        /// The limit ([`DecomposeSettings::max_paths`], at most [`MAX_DECOMPOSE_PATHS`]).
+        limit: u64,
+    },
+    /// The paths tracked (start systems, monodromy loops, trace and membership tests) reached
+    /// the limit: the decomposition stopped.
+    #[error(
+        "stopped after {tracked} paths, the limit (the start systems were estimated at {estimate})"
+    )]
+    PathLimit {
+        /// The paths tracked when it stopped.
+        tracked: u64,
+        /// The estimate the decomposition started from.
+        estimate: u128,
+    },
 }
 
 /// How to decompose.
@@ -81,6 +144,11 @@ pub struct DecomposeSettings {
     /// A piece passes the trace test when the nonlinear part of its trace is below this
     /// fraction of the size of its points' traces.
     pub trace_tolerance: f64,
+    /// The most paths to track in all (at most [`MAX_DECOMPOSE_PATHS`] is honoured): a system
+    /// whose start systems alone are estimated at more is refused before any path is tracked
+    /// ([`decompose_paths`], [`super::regeneration_paths`]); one whose monodromy loops and
+    /// membership tests take the total beyond it stops with [`DecomposeError::PathLimit`].
+    pub max_paths: u64,
 }
 
 impl Default for DecomposeSettings {
@@ -95,6 +163,7 @@ impl Default for DecomposeSettings {
             max_loops: 20,
             stall_loops: 5,
             trace_tolerance: 1e-6,
+            max_paths: DEFAULT_DECOMPOSE_PATHS,
         }
     }
 }
@@ -131,6 +200,9 @@ pub struct Decomposition {
     pub junk: usize,
     /// Paths tracked (solves, loops, trace and membership tests).
     pub paths: usize,
+    /// The paths of the start systems (or regeneration steps) as estimated from the degrees
+    /// before any was tracked ([`decompose_paths`], [`super::regeneration_paths`]).
+    pub estimated_paths: u128,
     /// Wall time.
     pub seconds: f64,
 }
@@ -167,8 +239,20 @@ pub fn decompose(
     settings: &DecomposeSettings,
 ) -> Result<Decomposition, DecomposeError> {
     let clock = std::time::Instant::now();
-    check_system(system)?;
+    let estimated_paths = decompose_paths(system);
+    let budget = PathBudget::new(system, settings, estimated_paths)?;
     let (n, big_n) = (system.len(), system.nvars());
+    if let Some((dimension, paths)) =
+        sliced_paths(system).find(|(_, p)| *p > u128::from(super::MAX_PATHS))
+    {
+        return Err(DecomposeError::Solve {
+            dimension,
+            source: HomotopyError::TooManyPaths {
+                paths,
+                limit: super::MAX_PATHS,
+            },
+        });
+    }
     let mut rng = ChaCha8Rng::seed_from_u64(settings.seed);
     let lowest = big_n.saturating_sub(n);
     let mut witnesses: Vec<Option<Witness>> = (0..big_n).map(|_| None).collect();
@@ -179,6 +263,7 @@ pub fn decompose(
         unresolved: Vec::new(),
         junk: 0,
         paths: 0,
+        estimated_paths,
         seconds: 0.0,
     };
     for d in (lowest..big_n).rev() {
@@ -190,12 +275,15 @@ pub fn decompose(
             .map_err(|e| DecomposeError::Family(e.to_string()))?;
         let solve_settings = SolveSettings {
             seed: settings.seed.wrapping_mul(1000).wrapping_add(d as u64),
+            max_paths: super::MAX_PATHS,
             ..settings.solve.clone()
         };
+        budget.spend_u128(sliced.bezout_number())?;
         let report = solve(&sliced, &solve_settings).map_err(|source| DecomposeError::Solve {
             dimension: d,
             source,
         })?;
+        budget.spend(report.retracked)?;
         decomposition.paths += report.paths();
         let mut points = Vec::new();
         for s in &report.solutions {
@@ -203,7 +291,7 @@ pub fn decompose(
                 points.push(s.x.clone());
             } else if !s.regular && satisfies(system, &s.x, settings.residual_tolerance.sqrt()) {
                 let (on_larger, paths) =
-                    on_larger_component(witnesses.iter().flatten(), &s.x, settings);
+                    on_larger_component(witnesses.iter().flatten(), &s.x, settings, &budget)?;
                 decomposition.paths += paths;
                 if on_larger {
                     decomposition.junk += 1;
@@ -226,7 +314,7 @@ pub fn decompose(
                 0,
             )
         } else {
-            irreducible_pieces(&witness, settings, &mut rng)
+            irreducible_pieces(&witness, settings, &mut rng, &budget)?
         };
         decomposition.paths += paths;
         for (members, passed) in pieces {
@@ -254,8 +342,12 @@ pub(super) fn gaussian(rng: &mut ChaCha8Rng) -> C64 {
 }
 
 /// A system [`decompose`] and [`super::regenerate`] can work on: some equations, some
-/// unknowns, no equation identically zero.
-pub(super) fn check_system(system: &System) -> Result<(), DecomposeError> {
+/// unknowns, at most [`MAX_DECOMPOSE_EQUATIONS`] and [`MAX_DECOMPOSE_UNKNOWNS`], programs
+/// within [`crate::poly::MAX_PROGRAM_SIZE`], no equation identically zero.
+///
+/// # Errors
+/// The [`DecomposeError`] the decomposition would return before any work.
+pub fn check_system(system: &System) -> Result<(), DecomposeError> {
     let (n, big_n) = (system.len(), system.nvars());
     if n == 0 || big_n == 0 {
         return Err(DecomposeError::Empty {
@@ -263,10 +355,99 @@ pub(super) fn check_system(system: &System) -> Result<(), DecomposeError> {
             variables: big_n,
         });
     }
+    if n > MAX_DECOMPOSE_EQUATIONS || big_n > MAX_DECOMPOSE_UNKNOWNS {
+        return Err(DecomposeError::TooLarge {
+            equations: n,
+            unknowns: big_n,
+        });
+    }
+    // Each of the up to N random combinations holds every equation's terms.
+    let size = system.program_size().saturating_mul(big_n as u128);
+    if size > crate::poly::MAX_PROGRAM_SIZE {
+        return Err(DecomposeError::ProgramSize { size });
+    }
     if let Some(i) = system.equations().iter().position(Poly::is_empty) {
         return Err(DecomposeError::ZeroEquation(i));
     }
     Ok(())
+}
+
+/// The paths of the start systems of [`decompose`], from the degrees alone: for each dimension
+/// `d` from `N − 1` down to `max(N − n, 0)` the Bézout number of the sliced system — the
+/// equations' degrees when there are exactly `N − d` of them, else `N − d` random combinations
+/// of the largest degree — and `d` linear slices. Saturates at `u128::MAX`.
+///
+/// 21 equations `x_i² − 1` in 21 unknowns: `2 + 4 + … + 2²¹ = 2²² − 2`. The monodromy loops,
+/// trace and membership tests track more, in proportion to the witness points found, within
+/// [`DecomposeSettings::max_paths`] in all.
+#[must_use]
+pub fn decompose_paths(system: &System) -> u128 {
+    sliced_paths(system)
+        .map(|(_, p)| p)
+        .fold(0u128, u128::saturating_add)
+}
+
+/// Each dimension of [`decompose`] with the Bézout number of its sliced system.
+fn sliced_paths(system: &System) -> impl Iterator<Item = (usize, u128)> {
+    let (n, big_n) = (system.len(), system.nvars());
+    let largest = u128::from(system.degrees().into_iter().max().unwrap_or(0));
+    let bezout = system.bezout_number();
+    (big_n.saturating_sub(n)..big_n).map(move |d| {
+        let count = big_n - d;
+        let paths = if count == n {
+            bezout
+        } else {
+            (0..count).fold(1u128, |b, _| b.saturating_mul(largest))
+        };
+        (d, paths)
+    })
+}
+
+/// The paths a decomposition may still track: each tracking is charged before it starts
+/// ([`DecomposeSettings::max_paths`]).
+pub(super) struct PathBudget {
+    limit: u64,
+    estimate: u128,
+    tracked: Cell<u64>,
+}
+
+impl PathBudget {
+    /// The budget of a decomposition of `system` whose start systems need `estimate` paths:
+    /// the system checked ([`check_system`]) and the estimate within the limit.
+    pub(super) fn new(
+        system: &System,
+        settings: &DecomposeSettings,
+        estimate: u128,
+    ) -> Result<Self, DecomposeError> {
+        check_system(system)?;
+        let limit = settings.max_paths.min(MAX_DECOMPOSE_PATHS);
+        if estimate > u128::from(limit) {
+            return Err(DecomposeError::TooManyPaths { estimate, limit });
+        }
+        Ok(Self {
+            limit,
+            estimate,
+            tracked: Cell::new(0),
+        })
+    }
+
+    /// Charges `paths` about to be tracked.
+    pub(super) fn spend(&self, paths: usize) -> Result<(), DecomposeError> {
+        self.spend_u128(paths as u128)
+    }
+
+    /// Charges `paths` about to be tracked.
+    pub(super) fn spend_u128(&self, paths: u128) -> Result<(), DecomposeError> {
+        let tracked = u128::from(self.tracked.get()).saturating_add(paths);
+        if tracked > u128::from(self.limit) {
+            return Err(DecomposeError::PathLimit {
+                tracked: self.tracked.get(),
+                estimate: self.estimate,
+            });
+        }
+        self.tracked.set(u64::try_from(tracked).unwrap_or(u64::MAX));
+        Ok(())
+    }
 }
 
 /// `count` random complex combinations of `equations` (the equations themselves when there
@@ -377,7 +558,8 @@ pub(super) fn on_larger_component<'a>(
     witnesses: impl IntoIterator<Item = &'a Witness>,
     y: &[C64],
     settings: &DecomposeSettings,
-) -> (bool, usize) {
+    budget: &PathBudget,
+) -> Result<(bool, usize), DecomposeError> {
     let big_n = y.len();
     let mut paths = 0;
     for w in witnesses {
@@ -385,6 +567,7 @@ pub(super) fn on_larger_component<'a>(
         for row in target.chunks_mut(big_n + 1) {
             row[big_n] = -row[..big_n].iter().zip(y).map(|(a, v)| a * v).sum::<C64>();
         }
+        budget.spend(w.points.len())?;
         paths += w.points.len();
         // The endgame, since `y` may be a singular point of the slice family (where the
         // component meets another one).
@@ -403,10 +586,10 @@ pub(super) fn on_larger_component<'a>(
             }
             FamilyEnd::Infinite => false,
         }) {
-            return (true, paths);
+            return Ok((true, paths));
         }
     }
-    (false, paths)
+    Ok((false, paths))
 }
 
 /// A singular point and an endpoint of the membership test are the same point within this
@@ -419,16 +602,23 @@ pub(super) const SAME_POINT: f64 = 1e-6;
 
 /// The irreducible pieces of a positive-dimensional witness set (indices into its points, and
 /// whether the trace test confirmed the piece), and the paths tracked.
+#[allow(clippy::type_complexity)]
 pub(super) fn irreducible_pieces(
     w: &Witness,
     settings: &DecomposeSettings,
     rng: &mut ChaCha8Rng,
-) -> (Vec<(Vec<usize>, bool)>, usize) {
+    budget: &PathBudget,
+) -> Result<(Vec<(Vec<usize>, bool)>, usize), DecomposeError> {
     let m = w.points.len();
     let mut paths = 0;
+    budget.spend(2 * m)?;
     let (nonlinear, scale, traced) = trace_parts(w, settings, rng);
     paths += 2 * m;
     let mut parent: Vec<usize> = (0..m).collect();
+    let mut index = NearPoints::default();
+    for (j, x) in w.points.iter().enumerate() {
+        index.insert(j, x);
+    }
     let passes = |members: &[usize]| -> bool {
         members.iter().all(|i| traced[*i]) && {
             let s: C64 = members.iter().map(|i| nonlinear[*i]).sum();
@@ -455,6 +645,7 @@ pub(super) fn irreducible_pieces(
                 .iter()
                 .map(|i| current[*i].clone().expect("live"))
                 .collect();
+            budget.spend(starts.len())?;
             paths += starts.len();
             let Ok(ends) = track_parameters(&w.family, a, b, &starts, settings.solve.tracker)
             else {
@@ -467,7 +658,13 @@ pub(super) fn irreducible_pieces(
         let mut merged = false;
         for (i, end) in current.iter().enumerate() {
             let Some(end) = end else { continue };
-            if let Some(j) = (0..m).find(|j| relative_distance(&w.points[*j], end) <= SAME_POINT) {
+            // The first witness point the loop returned to, as a scan would find it.
+            let back = index
+                .candidates(end, SAME_POINT)
+                .into_iter()
+                .filter(|j| relative_distance(&w.points[*j], end) <= SAME_POINT)
+                .min();
+            if let Some(j) = back {
                 merged |= union(&mut parent, i, j);
             }
         }
@@ -479,7 +676,7 @@ pub(super) fn irreducible_pieces(
     let mut pieces: Vec<(Vec<usize>, bool)> = done.drain(..).map(|g| (g, true)).collect();
     pieces.extend(combine_failing(failing, &passes));
     pieces.sort_by_key(|(g, _)| std::cmp::Reverse(g.len()));
-    (pieces, paths)
+    Ok((pieces, paths))
 }
 
 /// The most failing monodromy groups whose unions are searched for passing combinations.

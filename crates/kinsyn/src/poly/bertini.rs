@@ -36,15 +36,37 @@
 //! product or power whose total degree would exceed [`MAX_DEGREE`] is refused before it is
 //! expanded (degrees computed in `u64`, so they never wrap), and so is a value or coefficient
 //! that becomes infinite or NaN in double precision (`1e308*1e308`, and so `(1e308*1e308)*0`).
+//!
+//! What reading may cost is bounded before the work is done, whatever the file: expressions
+//! nest at most [`MAX_NESTING`] deep (parentheses, signs and powers; the reader's recursion
+//! is one level per parenthesis, so its stack is bounded too); a product or power is refused
+//! before it is multiplied when the bound on its terms exceeds [`MAX_TERMS`] or the bound on
+//! its work exceeds what is left of the file's [`ExpansionBudget`] ([`expansion`]); at most
+//! [`MAX_VARIABLES`] variables and [`MAX_EQUATIONS`] functions are declared. [`parse_program`]
+//! reads a file and compiles its system's straight-line program: everything a solver builds
+//! from the text before it tracks a path.
 //! Refused with an explanation: `pathvariable` and `parameter` (Bertini's user-defined
 //! homotopies: kinsyn's parameter homotopy takes its parameters as data of the family, not from
 //! the file) and `random`/`random_real`
 //! (constants drawn anew by every run: a file read twice would give two different systems;
 //! write the drawn value as a `constant`).
 
-use super::{C64, MAX_DEGREE, Poly, PolyError, System};
+use super::expansion::{self, ExpansionBudget, MAX_TERMS};
+use super::{
+    C64, MAX_DEGREE, MAX_EQUATIONS, MAX_PROGRAM_SIZE, MAX_VARIABLES, Poly, PolyError, System,
+};
 use std::collections::HashMap;
 use std::fmt::Write as _;
+
+/// The deepest nesting of an expression: parentheses, signs and powers written one inside
+/// another (`((x))`, `- - x` and `x^1^1` each nest two deep). The reader descends one level
+/// of its grammar per parenthesis and reads signs and chains of `^` in loops, so this bounds
+/// its stack (256 levels take well under a mebibyte, in debug builds too) and the operands it
+/// holds at once; real files nest a handful.
+pub const MAX_NESTING: usize = 256;
+
+/// The most characters of an expression an error message quotes (then `…`).
+const QUOTED_CHARS: usize = 60;
 
 /// A Bertini input file as read by [`parse`].
 #[derive(Clone, Debug, PartialEq)]
@@ -112,6 +134,67 @@ pub enum BertiniErrorKind {
         /// Its total degree.
         degree: u64,
     },
+    /// A product, power or sum whose expansion would have more than [`MAX_TERMS`] terms
+    /// (an upper bound, [`expansion`]): refused where it is written, before it is expanded.
+    #[error(
+        "expanding '{found}' in {context} would give {terms} terms, beyond the limit of {MAX_TERMS}"
+    )]
+    Terms {
+        /// The expression, as written.
+        found: String,
+        /// The function, constant or subfunction being defined.
+        context: String,
+        /// Its terms (an upper bound for a product or power).
+        terms: u128,
+    },
+    /// A product or power (or a copy of a long subfunction) whose expansion would take more
+    /// term operations than the file has left ([`ExpansionBudget`]): refused before it is
+    /// expanded.
+    #[error(
+        "expanding '{found}' in {context} would take {work} term products, beyond the {left} left of the {total} a file in {} may take (2^26 words of memory)",
+        variables_text(*nvars)
+    )]
+    Work {
+        /// The expression, as written.
+        found: String,
+        /// The function, constant or subfunction being defined.
+        context: String,
+        /// Its term products (an upper bound).
+        work: u128,
+        /// The term operations the file has left.
+        left: u64,
+        /// The term operations a file in this many variables may take.
+        total: u64,
+        /// The file's variables.
+        nvars: usize,
+    },
+    /// Parentheses, signs and powers nested deeper than [`MAX_NESTING`].
+    #[error(
+        "{context} nests parentheses, signs and powers more than {MAX_NESTING} deep (the limit)"
+    )]
+    Nesting {
+        /// The function, constant or subfunction being defined.
+        context: String,
+    },
+    /// More variables than [`MAX_VARIABLES`] or functions than [`MAX_EQUATIONS`].
+    #[error("{count} {what} declared, beyond the limit of {limit}")]
+    Size {
+        /// `variables` or `functions`.
+        what: &'static str,
+        /// How many are declared (at least).
+        count: usize,
+        /// The limit.
+        limit: usize,
+    },
+    /// A system whose straight-line program would exceed [`MAX_PROGRAM_SIZE`]
+    /// ([`System::program_size`]).
+    #[error(
+        "the system's program of values and Jacobian would hold up to {size} factors, beyond the limit of {MAX_PROGRAM_SIZE}"
+    )]
+    ProgramSize {
+        /// The bound on its size.
+        size: u128,
+    },
     /// An expression whose value (or a coefficient of its expansion) is infinite or NaN in
     /// double precision: an overflow such as `1e308*1e308`, or what follows from one
     /// (`(1e308*1e308)*0` is NaN).
@@ -134,6 +217,11 @@ pub enum BertiniErrorKind {
     /// The variables and functions do not form a system.
     #[error("{0}")]
     System(PolyError),
+}
+
+/// `1 variable`, `3 variables`.
+fn variables_text(n: usize) -> String {
+    format!("{n} variable{}", if n == 1 { "" } else { "s" })
 }
 
 fn err(line: usize, kind: BertiniErrorKind) -> BertiniError {
@@ -457,6 +545,26 @@ pub fn parse(text: &str) -> Result<BertiniInput, BertiniError> {
     }
 }
 
+/// Reads a Bertini input file ([`parse`]) and compiles its system's straight-line program of
+/// values and Jacobian ([`System::program`]): the text taken as far as a solver takes it before
+/// tracking, at a cost bounded by the limits of this module whatever the text.
+///
+/// # Errors
+/// As [`parse`]; [`BertiniErrorKind::ProgramSize`] for a system whose program would exceed
+/// [`MAX_PROGRAM_SIZE`].
+pub fn parse_program(text: &str) -> Result<(BertiniInput, super::Program), BertiniError> {
+    let input = parse(text)?;
+    let size = input.system.program_size();
+    if size > MAX_PROGRAM_SIZE {
+        return Err(err(
+            text.lines().count().max(1),
+            BertiniErrorKind::ProgramSize { size },
+        ));
+    }
+    let program = input.system.program();
+    Ok((input, program))
+}
+
 fn config_entry(st: &Statement<'_>) -> Result<(String, String), BertiniError> {
     let Some((key, value)) = st.text.split_once(':') else {
         return Err(syntax(
@@ -511,6 +619,8 @@ struct InputReader {
     names: HashMap<String, Name>,
     /// Whether an assignment has been read (variables must be declared before).
     assigned: bool,
+    /// What the expansions of the file may still take.
+    budget: ExpansionBudget,
 }
 
 impl InputReader {
@@ -631,6 +741,12 @@ impl InputReader {
                     }
                     self.groups.len() - 1
                 };
+                check_size(
+                    "variables",
+                    self.variables.len() + list.len(),
+                    MAX_VARIABLES,
+                    line,
+                )?;
                 for (n, l) in list {
                     let index = self.variables.len();
                     self.declare(&n, l, Name::Variable(index))?;
@@ -639,6 +755,12 @@ impl InputReader {
                 }
             }
             "function" => {
+                check_size(
+                    "functions",
+                    self.functions.len() + list.len(),
+                    MAX_EQUATIONS,
+                    line,
+                )?;
                 for (n, l) in list {
                     self.declare(&n, l, Name::Function(self.functions.len()))?;
                     self.functions.push((n, l, None));
@@ -668,6 +790,7 @@ impl InputReader {
             reader: self,
             context: name,
             line,
+            depth: 0,
         };
         let value = parser.expression()?;
         if let Some(t) = rhs.get(parser.pos) {
@@ -797,6 +920,19 @@ impl InputReader {
     }
 }
 
+/// The error for `count` declared `what`s, if beyond `limit`.
+fn check_size(
+    what: &'static str,
+    count: usize,
+    limit: usize,
+    line: usize,
+) -> Result<(), BertiniError> {
+    if count <= limit {
+        return Ok(());
+    }
+    Err(err(line, BertiniErrorKind::Size { what, count, limit }))
+}
+
 /// The value of a polynomial without variables (`None` if it has any).
 fn constant_value(p: &Poly) -> Option<C64> {
     let mut value = C64::new(0.0, 0.0);
@@ -818,6 +954,9 @@ struct ExprParser<'a> {
     reader: &'a InputReader,
     context: &'a str,
     line: usize,
+    /// The levels of nesting around the current position: parentheses, signs and `^`
+    /// (at most [`MAX_NESTING`]).
+    depth: usize,
 }
 
 impl ExprParser<'_> {
@@ -853,25 +992,29 @@ impl ExprParser<'_> {
     /// `p` if every coefficient is finite; else the error naming the expression from `start`
     /// to here (the first place where a value overflowed or became NaN).
     fn finite(&self, p: Poly, start: usize, line: usize) -> Result<Poly, BertiniError> {
-        if p.terms().all(|(_, c)| c.re.is_finite() && c.im.is_finite()) {
+        if p.is_finite() {
             Ok(p)
         } else {
-            Err(err(
-                line,
-                BertiniErrorKind::NotFinite {
-                    found: self.source(start),
-                    context: self.context.to_string(),
-                },
-            ))
+            Err(self.not_finite(start, line))
         }
     }
 
-    /// The error for an expression from `start` to here of total degree `degree`, if it
+    fn not_finite(&self, start: usize, line: usize) -> BertiniError {
+        err(
+            line,
+            BertiniErrorKind::NotFinite {
+                found: self.source(start, self.pos),
+                context: self.context.to_string(),
+            },
+        )
+    }
+
+    /// The error for an expression from `start` to `end` of total degree `degree`, if it
     /// exceeds [`MAX_DEGREE`].
     fn degree_within_limit(
         &self,
         degree: u64,
-        start: usize,
+        (start, end): (usize, usize),
         line: usize,
     ) -> Result<(), BertiniError> {
         if degree <= u64::from(MAX_DEGREE) {
@@ -880,11 +1023,89 @@ impl ExprParser<'_> {
         Err(err(
             line,
             BertiniErrorKind::Degree {
-                found: self.source(start),
+                found: self.source(start, end),
                 context: self.context.to_string(),
                 degree,
             },
         ))
+    }
+
+    /// Spends `work` term operations of the file's budget, or the error naming the expression
+    /// from `start` to `end` that would exceed it.
+    fn spend(
+        &self,
+        work: u128,
+        (start, end): (usize, usize),
+        line: usize,
+    ) -> Result<(), BertiniError> {
+        let n = self.nvars();
+        self.reader.budget.spend(work, n).map_err(|left| {
+            err(
+                line,
+                BertiniErrorKind::Work {
+                    found: self.source(start, end),
+                    context: self.context.to_string(),
+                    work,
+                    left,
+                    total: ExpansionBudget::total_terms(n),
+                    nvars: n,
+                },
+            )
+        })
+    }
+
+    /// Checks a product or power before it is expanded: its degree, its terms and its work
+    /// ([`expansion`]); `span` is the expression as written.
+    fn before_expanding(
+        &self,
+        degree: u64,
+        estimate: expansion::Estimate,
+        span: (usize, usize),
+        line: usize,
+    ) -> Result<(), BertiniError> {
+        self.degree_within_limit(degree, span, line)?;
+        self.terms_within_limit(estimate.terms, span, line)?;
+        self.spend(estimate.work, span, line)
+    }
+
+    /// The error for an expression from `start` to `end` of (at most) `terms` terms, if that
+    /// exceeds [`MAX_TERMS`].
+    fn terms_within_limit(
+        &self,
+        terms: u128,
+        (start, end): (usize, usize),
+        line: usize,
+    ) -> Result<(), BertiniError> {
+        if terms <= MAX_TERMS as u128 {
+            return Ok(());
+        }
+        Err(err(
+            line,
+            BertiniErrorKind::Terms {
+                found: self.source(start, end),
+                context: self.context.to_string(),
+                terms,
+            },
+        ))
+    }
+
+    /// `acc ± rhs`, in place: the sum's new coefficients checked finite and its terms against
+    /// [`MAX_TERMS`], the terms of `rhs` spent.
+    fn add(
+        &self,
+        mut acc: Poly,
+        rhs: Poly,
+        negate: bool,
+        start: usize,
+        line: usize,
+    ) -> Result<Poly, BertiniError> {
+        self.spend(rhs.len() as u128, (start, self.pos), line)?;
+        let rhs = if negate { -rhs } else { rhs };
+        if !acc.add_assign_finite(rhs) {
+            return Err(self.not_finite(start, line));
+        }
+        self.terms_within_limit(acc.len() as u128, (start, self.pos), line)?;
+        Ok(acc)
     }
 
     fn expression(&mut self) -> Result<Poly, BertiniError> {
@@ -892,17 +1113,16 @@ impl ExprParser<'_> {
         let line = self.current_line();
         let mut acc = self.term()?;
         loop {
-            if self.peek_sym('+') {
-                self.pos += 1;
-                let rhs = self.term()?;
-                acc = self.finite(acc + rhs, start, line)?;
+            let negate = if self.peek_sym('+') {
+                false
             } else if self.peek_sym('-') {
-                self.pos += 1;
-                let rhs = self.term()?;
-                acc = self.finite(acc - rhs, start, line)?;
+                true
             } else {
                 return Ok(acc);
-            }
+            };
+            self.pos += 1;
+            let rhs = self.term()?;
+            acc = self.add(acc, rhs, negate, start, line)?;
         }
     }
 
@@ -915,29 +1135,36 @@ impl ExprParser<'_> {
                 self.pos += 1;
                 let rhs = self.unary()?;
                 let degree = u64::from(acc.total_degree()) + u64::from(rhs.total_degree());
-                self.degree_within_limit(degree, start, line)?;
+                let estimate = expansion::product(&acc, &rhs);
+                self.before_expanding(degree, estimate, (start, self.pos), line)?;
                 acc = self.finite(acc * rhs, start, line)?;
             } else if self.peek_sym('/') {
                 let line = self.current_line();
                 self.pos += 1;
                 let start = self.pos;
                 let d = self.unary()?;
-                let found = self.source(start);
                 match constant_value(&d) {
                     None => {
                         return Err(self.not_polynomial(
                             line,
-                            format!("division by '{found}'"),
+                            format!("division by '{}'", self.source(start, self.pos)),
                             "only constant denominators are allowed",
                         ));
                     }
                     Some(c) if c == C64::new(0.0, 0.0) => {
                         return Err(syntax(
                             line,
-                            format!("division by zero ('{found}') in {}", self.context),
+                            format!(
+                                "division by zero ('{}') in {}",
+                                self.source(start, self.pos),
+                                self.context
+                            ),
                         ));
                     }
-                    Some(c) => acc = self.finite(divide(&acc, c), start, line)?,
+                    Some(c) => {
+                        self.spend(acc.len() as u128, (start, self.pos), line)?;
+                        acc = self.finite(divide(&acc, c), start, line)?;
+                    }
                 }
             } else {
                 return Ok(acc);
@@ -945,60 +1172,183 @@ impl ExprParser<'_> {
         }
     }
 
-    /// The tokens from `start` to the current position, as written (spaced).
-    fn source(&self, start: usize) -> String {
-        self.tokens[start..self.pos]
-            .iter()
-            .map(|t| match &t.tok {
-                Tok::Name(s) | Tok::Number(_, s) => s.clone(),
-                Tok::Sym(c) => c.to_string(),
-            })
-            .collect()
+    /// The tokens from `start` to `end`, as written (spaced), shortened to about
+    /// [`QUOTED_CHARS`] characters with `…`: an error message quotes it, and stays one short
+    /// line whatever the expression.
+    fn source(&self, start: usize, end: usize) -> String {
+        let mut out = String::new();
+        for t in &self.tokens[start..end.min(self.tokens.len())] {
+            match &t.tok {
+                Tok::Name(s) | Tok::Number(_, s) => out.push_str(s),
+                Tok::Sym(c) => out.push(*c),
+            }
+            if let Some((cut, _)) = out.char_indices().nth(QUOTED_CHARS) {
+                out.truncate(cut);
+                out.push('…');
+                break;
+            }
+        }
+        out
+    }
+
+    /// Signs (`-`, `+`) before a power: read in a loop (no stack), each one level of nesting
+    /// ([`Self::enter`]); whether they negate. The caller leaves the levels ([`Self::leave`]):
+    /// the returned count.
+    fn signs(&mut self) -> Result<(bool, usize), BertiniError> {
+        let mut negate = false;
+        let mut levels = 0;
+        loop {
+            if self.peek_sym('-') {
+                negate = !negate;
+            } else if !self.peek_sym('+') {
+                return Ok((negate, levels));
+            }
+            self.enter()?;
+            levels += 1;
+            self.pos += 1;
+        }
+    }
+
+    /// One more level of nesting (a parenthesis, a sign, a `^`), refused past [`MAX_NESTING`].
+    fn enter(&mut self) -> Result<(), BertiniError> {
+        if self.depth == MAX_NESTING {
+            return Err(err(
+                self.current_line(),
+                BertiniErrorKind::Nesting {
+                    context: self.context.to_string(),
+                },
+            ));
+        }
+        self.depth += 1;
+        Ok(())
+    }
+
+    fn leave(&mut self, levels: usize) {
+        self.depth -= levels;
     }
 
     fn unary(&mut self) -> Result<Poly, BertiniError> {
-        if self.peek_sym('-') {
-            self.pos += 1;
-            return Ok(-self.unary()?);
+        let start = self.pos;
+        let line = self.current_line();
+        let (negate, levels) = self.signs()?;
+        let p = self.power()?;
+        self.leave(levels);
+        if negate {
+            self.spend(p.len() as u128, (start, self.pos), line)?;
+            Ok(-p)
+        } else {
+            Ok(p)
         }
-        if self.peek_sym('+') {
-            self.pos += 1;
-            return self.unary();
-        }
-        self.power()
     }
 
+    /// `base ^ e1 ^ e2 …`, right-associative (`x^2^3` is `x^8`), each exponent signs and a
+    /// primary: read as a list (each `^` and sign one level of nesting, [`MAX_NESTING`]) and
+    /// folded from the right, without recursion. Every power but the base's is of constants.
     fn power(&mut self) -> Result<Poly, BertiniError> {
+        struct Operand {
+            /// Where the operand starts (after its signs).
+            start: usize,
+            /// The line of the `^` before it.
+            line: usize,
+            /// Where its exponent (the `^`'s right side, signs included) starts.
+            exponent_start: usize,
+            negate: bool,
+            value: Poly,
+        }
         let whole = self.pos;
         let base = self.primary()?;
         if !self.peek_sym('^') {
             return Ok(base);
         }
-        let line = self.current_line();
-        self.pos += 1;
-        let start = self.pos;
-        let exponent = self.unary()?;
-        let found = self.source(start);
-        let k = constant_value(&exponent).and_then(|c| {
+        let mut chain = Vec::new();
+        let mut operand_start = whole;
+        let mut levels = 0;
+        while self.peek_sym('^') {
+            let line = self.current_line();
+            self.enter()?;
+            self.pos += 1;
+            let exponent_start = self.pos;
+            let (negate, signs) = self.signs()?;
+            levels += 1 + signs;
+            let start = self.pos;
+            let value = self.primary()?;
+            chain.push(Operand {
+                start: operand_start,
+                line,
+                exponent_start,
+                negate,
+                value,
+            });
+            operand_start = start;
+        }
+        self.leave(levels);
+        let end = self.pos;
+        // Fold from the right: the last operand, with its signs, is the last exponent; each
+        // power found is, with the signs of the operand it raised, the exponent of the `^`
+        // before. The base's own signs belong to `unary`.
+        let last = chain.len() - 1;
+        let mut exponent = std::mem::replace(&mut chain[last].value, Poly::zero(0));
+        if chain[last].negate {
+            exponent = -exponent;
+        }
+        let mut raised = Vec::with_capacity(chain.len());
+        raised.push(base);
+        for o in &mut chain[..last] {
+            raised.push(std::mem::replace(&mut o.value, Poly::zero(0)));
+        }
+        for k in (0..chain.len()).rev() {
+            let op = &chain[k];
+            let base = raised.pop().expect("one raised operand per '^'");
+            let value = self.raise(base, &exponent, (op.start, end), op.exponent_start, op.line)?;
+            exponent = if k > 0 && chain[k - 1].negate {
+                -value
+            } else {
+                value
+            };
+        }
+        Ok(exponent)
+    }
+
+    /// `base ^ exponent`, the power written from `span.0` to `span.1`, its exponent from
+    /// `exponent_start` (after the `^` on line `line`).
+    fn raise(
+        &self,
+        base: Poly,
+        exponent: &Poly,
+        span: (usize, usize),
+        exponent_start: usize,
+        line: usize,
+    ) -> Result<Poly, BertiniError> {
+        let k = constant_value(exponent).and_then(|c| {
             let integral = c.im == 0.0 && c.re >= 0.0 && c.re.fract() == 0.0 && c.re < 65536.0;
             #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
             let k = c.re as u32;
             integral.then_some(k)
         });
-        match k {
-            Some(k) => {
-                self.degree_within_limit(
-                    u64::from(base.total_degree()) * u64::from(k),
-                    whole,
-                    line,
-                )?;
-                self.finite(base.pow(k), whole, line)
-            }
-            None => Err(self.not_polynomial(
+        let Some(k) = k else {
+            return Err(self.not_polynomial(
                 line,
-                format!("the power '^{found}'"),
+                format!("the power '^{}'", self.source(exponent_start, span.1)),
                 "exponents must be constant non-negative integers",
-            )),
+            ));
+        };
+        self.before_expanding(
+            u64::from(base.total_degree()) * u64::from(k),
+            expansion::power(&base, k),
+            span,
+            line,
+        )?;
+        let p = base.pow(k);
+        if p.is_finite() {
+            Ok(p)
+        } else {
+            Err(err(
+                line,
+                BertiniErrorKind::NotFinite {
+                    found: self.source(span.0, span.1),
+                    context: self.context.to_string(),
+                },
+            ))
         }
     }
 
@@ -1012,9 +1362,14 @@ impl ExprParser<'_> {
         };
         self.pos += 1;
         match t.tok {
-            Tok::Number(v, _) => Ok(Poly::real(n, v)),
+            Tok::Number(v, _) => {
+                self.spend(1, (self.pos - 1, self.pos), t.line)?;
+                Ok(Poly::real(n, v))
+            }
             Tok::Sym('(') => {
+                self.enter()?;
                 let inner = self.expression()?;
+                self.leave(1);
                 if !self.peek_sym(')') {
                     return Err(syntax(
                         self.current_line(),
@@ -1042,11 +1397,19 @@ impl ExprParser<'_> {
         }
     }
 
+    /// The value of a name, its terms spent (a subfunction is copied where it is used).
     fn name_value(&self, name: &str, line: usize) -> Result<Poly, BertiniError> {
         let n = self.nvars();
+        let here = (self.pos - 1, self.pos);
         match name {
-            "I" => return Ok(Poly::constant(n, C64::new(0.0, 1.0))),
-            "Pi" => return Ok(Poly::real(n, std::f64::consts::PI)),
+            "I" => {
+                self.spend(1, here, line)?;
+                return Ok(Poly::constant(n, C64::new(0.0, 1.0)));
+            }
+            "Pi" => {
+                self.spend(1, here, line)?;
+                return Ok(Poly::real(n, std::f64::consts::PI));
+            }
             _ => {}
         }
         let unknown = || {
@@ -1058,15 +1421,25 @@ impl ExprParser<'_> {
                 },
             )
         };
+        let copy = |p: &Poly| -> Result<Poly, BertiniError> {
+            self.spend(p.len() as u128, here, line)?;
+            Ok(p.clone())
+        };
         match self.reader.names.get(name) {
-            Some(Name::Variable(i)) => Ok(Poly::variable(n, *i)),
-            Some(Name::Subfunction(p)) => Ok(p.clone()),
+            Some(Name::Variable(i)) => {
+                self.spend(1, here, line)?;
+                Ok(Poly::variable(n, *i))
+            }
+            Some(Name::Subfunction(p)) => copy(p),
             Some(Name::Function(k)) => match &self.reader.functions[*k].2 {
-                Some(p) => Ok(p.clone()),
+                Some(p) => copy(p),
                 None => Err(unknown()),
             },
             Some(Name::Constant(k)) => match self.reader.constants[*k].2 {
-                Some(c) => Ok(Poly::constant(n, c)),
+                Some(c) => {
+                    self.spend(1, here, line)?;
+                    Ok(Poly::constant(n, c))
+                }
                 None => Err(err(
                     line,
                     BertiniErrorKind::Declaration(format!(

@@ -24,15 +24,17 @@
 //! ```
 
 pub mod bertini;
+pub mod expansion;
 pub mod families;
 pub mod geometry;
+pub mod multihomogeneous;
 pub mod phc;
 mod program;
 
 pub use program::{Program, Scalar, Workspace};
 
 use std::collections::BTreeMap;
-use std::ops::{Add, Mul, Neg, Sub};
+use std::ops::{Add, AddAssign, Mul, Neg, Sub, SubAssign};
 
 /// A complex number in double precision: the coefficients and values of polynomials.
 pub type C64 = nalgebra::Complex<f64>;
@@ -43,6 +45,21 @@ pub type C64 = nalgebra::Complex<f64>;
 /// [`crate::homotopy::MAX_PATHS`] paths. Degrees are computed in `u64` against it, so they
 /// never wrap.
 pub const MAX_DEGREE: u32 = 1 << 20;
+
+/// The most variables a system read from text ([`bertini::parse`]) may declare. Every term of
+/// a polynomial holds one exponent per variable, so the variables multiply the memory of
+/// everything the reader expands; the solvers have tighter limits of their own
+/// ([`crate::homotopy::MAX_UNKNOWNS`], [`crate::homotopy::MAX_DECOMPOSE_UNKNOWNS`]).
+pub const MAX_VARIABLES: usize = 1000;
+
+/// The most equations (functions) a system read from text may declare: the Jacobian of a
+/// system has `equations × variables` entries.
+pub const MAX_EQUATIONS: usize = 1000;
+
+/// The largest [`System::program_size`] the solvers compile: 2²² factors, about 100 MB of
+/// program and a few milliseconds per evaluation of the values and the Jacobian. Katsura-10's
+/// is about 2 000, a manipulator's constraints with free inputs about 20 000.
+pub const MAX_PROGRAM_SIZE: u128 = 1 << 22;
 
 /// Why polynomials or a system cannot be formed.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
@@ -125,22 +142,45 @@ impl Poly {
         p
     }
 
-    fn add_term(&mut self, e: Vec<u32>, c: C64) {
+    /// Adds the term `c · x^e`; returns the coefficient of `x^e` now (0 when it cancelled).
+    fn add_term(&mut self, e: Vec<u32>, c: C64) -> C64 {
         use std::collections::btree_map::Entry;
-        if c == C64::new(0.0, 0.0) {
-            return;
+        let zero = C64::new(0.0, 0.0);
+        if c == zero {
+            return self.terms.get(&e).copied().unwrap_or(zero);
         }
         match self.terms.entry(e) {
-            Entry::Vacant(v) => {
-                v.insert(c);
-            }
+            Entry::Vacant(v) => *v.insert(c),
             Entry::Occupied(mut o) => {
                 *o.get_mut() += c;
-                if *o.get() == C64::new(0.0, 0.0) {
+                let sum = *o.get();
+                if sum == zero {
                     o.remove();
                 }
+                sum
             }
         }
+    }
+
+    /// Adds `rhs` in place, as `+=`; whether every coefficient it changed is finite afterwards
+    /// (a sum of finite coefficients may overflow to infinity). The cost is `rhs`'s terms, not
+    /// `self`'s: what a reader adding term after term needs.
+    pub(crate) fn add_assign_finite(&mut self, rhs: Poly) -> bool {
+        same_ring(self, &rhs);
+        let mut finite = true;
+        for (e, c) in rhs.terms {
+            let sum = self.add_term(e, c);
+            finite &= sum.re.is_finite() && sum.im.is_finite();
+        }
+        finite
+    }
+
+    /// Whether every coefficient is finite (neither infinite nor NaN).
+    #[must_use]
+    pub fn is_finite(&self) -> bool {
+        self.terms
+            .values()
+            .all(|c| c.re.is_finite() && c.im.is_finite())
     }
 
     /// The number of variables of the ring.
@@ -241,10 +281,14 @@ impl Poly {
         out
     }
 
-    /// `p^k` (`p^0 = 1`).
+    /// `p^k` (`p^0 = 1`), by multiplying by `p` again and again: `k − 1` products, whose cost
+    /// [`expansion::power`] bounds before any is done.
     #[must_use]
     pub fn pow(&self, k: u32) -> Self {
-        (0..k).fold(Self::real(self.nvars, 1.0), |acc, _| acc * self)
+        if k == 0 {
+            return Self::real(self.nvars, 1.0);
+        }
+        (1..k).fold(self.clone(), |acc, _| &acc * self)
     }
 
     /// The polynomial with every coefficient replaced by its modulus, `Σ |c_α| x^α`: at the
@@ -379,15 +423,51 @@ impl Mul<&Poly> for &Poly {
     }
 }
 
-macro_rules! owned_ops {
-    ($($tr:ident $f:ident),*) => {$(
+// Sums and differences with an owned left operand add into it in place: a long sum costs the
+// terms added, not the terms of the running total at every step (a sum of n monomials is then
+// O(n log n) work, not O(n²)).
+impl AddAssign<Poly> for Poly {
+    fn add_assign(&mut self, rhs: Poly) {
+        same_ring(self, &rhs);
+        for (e, c) in rhs.terms {
+            self.add_term(e, c);
+        }
+    }
+}
+
+impl AddAssign<&Poly> for Poly {
+    fn add_assign(&mut self, rhs: &Poly) {
+        same_ring(self, rhs);
+        for (e, c) in &rhs.terms {
+            self.add_term(e.clone(), *c);
+        }
+    }
+}
+
+impl SubAssign<Poly> for Poly {
+    fn sub_assign(&mut self, rhs: Poly) {
+        *self += -rhs;
+    }
+}
+
+impl SubAssign<&Poly> for Poly {
+    fn sub_assign(&mut self, rhs: &Poly) {
+        same_ring(self, rhs);
+        for (e, c) in &rhs.terms {
+            self.add_term(e.clone(), -*c);
+        }
+    }
+}
+
+macro_rules! owned_sums {
+    ($($tr:ident $f:ident $assign:tt),*) => {$(
         impl $tr<Poly> for Poly {
             type Output = Poly;
-            fn $f(self, rhs: Poly) -> Poly { (&self).$f(&rhs) }
+            fn $f(mut self, rhs: Poly) -> Poly { self $assign rhs; self }
         }
         impl $tr<&Poly> for Poly {
             type Output = Poly;
-            fn $f(self, rhs: &Poly) -> Poly { (&self).$f(rhs) }
+            fn $f(mut self, rhs: &Poly) -> Poly { self $assign rhs; self }
         }
         impl $tr<Poly> for &Poly {
             type Output = Poly;
@@ -395,12 +475,37 @@ macro_rules! owned_ops {
         }
     )*};
 }
-owned_ops!(Add add, Sub sub, Mul mul);
+owned_sums!(Add add +=, Sub sub -=);
+
+impl Mul<Poly> for Poly {
+    type Output = Poly;
+    fn mul(self, rhs: Poly) -> Poly {
+        &self * &rhs
+    }
+}
+
+impl Mul<&Poly> for Poly {
+    type Output = Poly;
+    fn mul(self, rhs: &Poly) -> Poly {
+        &self * rhs
+    }
+}
+
+impl Mul<Poly> for &Poly {
+    type Output = Poly;
+    fn mul(self, rhs: Poly) -> Poly {
+        self * &rhs
+    }
+}
 
 impl Neg for Poly {
     type Output = Poly;
-    fn neg(self) -> Poly {
-        -&self
+    /// Every coefficient negated in place (exact in floating point).
+    fn neg(mut self) -> Poly {
+        for c in self.terms.values_mut() {
+            *c = -*c;
+        }
+        self
     }
 }
 
@@ -435,8 +540,9 @@ impl System {
     /// [`PolyError::VariableCount`] if an equation's ring has another number of variables,
     /// [`PolyError::VariableName`] if a name is empty or repeated.
     pub fn new(variables: Vec<String>, equations: Vec<Poly>) -> Result<Self, PolyError> {
-        for (k, name) in variables.iter().enumerate() {
-            if name.is_empty() || variables[..k].contains(name) {
+        let mut seen = std::collections::HashSet::with_capacity(variables.len());
+        for name in &variables {
+            if name.is_empty() || !seen.insert(name.as_str()) {
                 return Err(PolyError::VariableName(name.clone()));
             }
         }
@@ -562,32 +668,20 @@ impl System {
     /// `Π_j α_j^{n_j}` in `Π_i Σ_j d_ij α_j` (`n_j` the size of group `j`, `d_ij` the degree
     /// of equation `i` in it), the number of paths of the multi-homogeneous start system.
     /// Zero unless the system is square; saturates at `u128::MAX` (read: more than 10^38).
+    /// `None` when the groups are too many to count ([`multihomogeneous::MAX_GROUP_STATES`]).
     #[must_use]
-    pub fn multihomogeneous_bezout(&self) -> u128 {
+    pub fn multihomogeneous_bezout(&self) -> Option<u128> {
         if !self.is_square() {
-            return 0;
+            return Some(0);
         }
-        let d = self.multihomogeneous_degrees();
+        self.assignments().map(|a| a.count())
+    }
+
+    /// The assignments of the equations to the variable groups behind
+    /// [`Self::multihomogeneous_bezout`]; `None` when their states are too many.
+    pub(crate) fn assignments(&self) -> Option<multihomogeneous::Assignments> {
         let sizes: Vec<usize> = self.groups.iter().map(Vec::len).collect();
-        // Count the assignments of equations to groups, group j receiving n_j equations,
-        // weighted by the product of the chosen degrees (a memoised walk over the equations).
-        let mut counts: BTreeMap<Vec<usize>, u128> = BTreeMap::new();
-        counts.insert(vec![0; sizes.len()], 1);
-        for row in &d {
-            let mut next = BTreeMap::new();
-            for (used, w) in &counts {
-                for (j, dij) in row.iter().enumerate() {
-                    if *dij > 0 && used[j] < sizes[j] {
-                        let mut u = used.clone();
-                        u[j] += 1;
-                        let slot = next.entry(u).or_insert(0u128);
-                        *slot = slot.saturating_add(w.saturating_mul(u128::from(*dij)));
-                    }
-                }
-            }
-            counts = next;
-        }
-        counts.get(&sizes).copied().unwrap_or(0)
+        multihomogeneous::Assignments::new(&self.multihomogeneous_degrees(), &sizes)
     }
 
     /// The values of the equations at `x`.
@@ -635,6 +729,23 @@ impl System {
                 .collect(),
             kept,
         )
+    }
+
+    /// An upper bound on the size of the straight-line program of the equations and their
+    /// Jacobian, homogenised or not: `Σ (s + 1)(s + 2)` over the terms, `s` the number of
+    /// variables a term involves (a term's monomial and those of its `s` partial derivatives
+    /// list at most `s + 1` factors each, one more when homogenised). Known from the terms
+    /// before anything is compiled; the solvers refuse beyond [`MAX_PROGRAM_SIZE`].
+    #[must_use]
+    pub fn program_size(&self) -> u128 {
+        self.equations
+            .iter()
+            .flat_map(Poly::terms)
+            .map(|(e, _)| {
+                let s = e.iter().filter(|k| **k > 0).count() as u128;
+                (s + 1) * (s + 2)
+            })
+            .fold(0, u128::saturating_add)
     }
 
     /// The straight-line program of the equations and their Jacobian.

@@ -56,6 +56,24 @@ pub struct Program {
     outputs: Vec<(usize, usize)>,
 }
 
+/// The monomials of a [`Program`] by their non-zero exponents `(variable, exponent)`, in
+/// increasing variable order.
+#[derive(Default)]
+struct MonomialIndex {
+    index: HashMap<Vec<(u32, u32)>, usize>,
+}
+
+impl MonomialIndex {
+    fn get_or_insert(&mut self, support: &[(u32, u32)], insert: impl FnOnce() -> usize) -> usize {
+        if let Some(m) = self.index.get(support) {
+            return *m;
+        }
+        let m = insert();
+        self.index.insert(support.to_vec(), m);
+        m
+    }
+}
+
 /// Scratch space of a [`Program`] over one scalar type: the power table, the monomials and the
 /// coefficients converted once. Make one per thread with [`Program::workspace`].
 #[derive(Clone, Debug)]
@@ -68,12 +86,17 @@ pub struct Workspace<S> {
 impl Program {
     /// Compiles `equations` (each a polynomial in `nvars` variables).
     ///
+    /// The partial derivatives are taken term by term from the variables each term involves,
+    /// never as whole polynomials per variable, and monomials are indexed by their non-zero
+    /// exponents only: the work and memory are those of the terms and their supports, not of
+    /// `equations × nvars` polynomials of `nvars`-long exponent vectors (1 000 linear equations
+    /// in 1 000 unknowns once took gigabytes here).
+    ///
     /// # Panics
     /// If an equation's ring does not have `nvars` variables.
     #[must_use]
     pub fn new(equations: &[Poly], nvars: usize) -> Self {
         let mut max_power = vec![0u32; nvars];
-        let mut derivatives = Vec::with_capacity(equations.len() * nvars);
         for p in equations {
             assert_eq!(p.nvars(), nvars, "an equation of another ring");
             for (e, _) in p.terms() {
@@ -82,38 +105,69 @@ impl Program {
                 }
             }
         }
-        for p in equations {
-            for i in 0..nvars {
-                derivatives.push(p.derivative(i));
-            }
-        }
         let mut power_offset = Vec::with_capacity(nvars);
         let mut power_len = 1; // entry 0 is the constant 1
         for m in &max_power {
             power_offset.push(power_len);
             power_len += *m as usize;
         }
-        let mut index: HashMap<Vec<u32>, usize> = HashMap::new();
+        let mut index = MonomialIndex::default();
         let mut monomials = Vec::new();
         let mut factors = Vec::new();
         let mut terms = Vec::new();
         let mut outputs = Vec::with_capacity(equations.len() * (nvars + 1));
-        for p in equations.iter().chain(&derivatives) {
+        let mut monomial = |support: &[(u32, u32)], factors: &mut Vec<usize>| {
+            index.get_or_insert(support, || {
+                let first = factors.len();
+                for (i, k) in support {
+                    factors.push(power_offset[*i as usize] + *k as usize - 1);
+                }
+                monomials.push((first, factors.len()));
+                monomials.len() - 1
+            })
+        };
+        // The derivative terms of each equation, `(variable, coefficient, monomial)`, in the
+        // order of the equation's terms.
+        let mut derivatives: Vec<Vec<(u32, C64, usize)>> = Vec::with_capacity(equations.len());
+        let mut support: Vec<(u32, u32)> = Vec::new();
+        for p in equations {
             let start = terms.len();
+            let mut dp = Vec::new();
             for (e, c) in p.terms() {
-                let m = *index.entry(e.to_vec()).or_insert_with(|| {
-                    let first = factors.len();
-                    for (i, k) in e.iter().enumerate() {
-                        if *k > 0 {
-                            factors.push(power_offset[i] + *k as usize - 1);
-                        }
-                    }
-                    monomials.push((first, factors.len()));
-                    monomials.len() - 1
-                });
-                terms.push((c, m));
+                support.clear();
+                support.extend(
+                    e.iter()
+                        .enumerate()
+                        .filter(|(_, k)| **k > 0)
+                        .map(|(i, k)| (u32::try_from(i).expect("fewer than 2^32 variables"), *k)),
+                );
+                terms.push((c, monomial(&support, &mut factors)));
+                for s in 0..support.len() {
+                    let (i, k) = support[s];
+                    support[s].1 = k - 1;
+                    let reduced: Vec<(u32, u32)> =
+                        support.iter().copied().filter(|(_, k)| *k > 0).collect();
+                    support[s].1 = k;
+                    dp.push((i, c * f64::from(k), monomial(&reduced, &mut factors)));
+                }
             }
             outputs.push((start, terms.len()));
+            derivatives.push(dp);
+        }
+        for mut dp in derivatives {
+            // By variable; within one, in the order of the equation's terms (a stable sort):
+            // the order in which `Poly::derivative` lists them, since removing one power of
+            // `x_i` keeps the lexicographic order of the exponent vectors.
+            dp.sort_by_key(|(i, _, _)| *i);
+            let mut at = 0;
+            for i in 0..nvars {
+                let start = terms.len();
+                while at < dp.len() && dp[at].0 as usize == i {
+                    terms.push((dp[at].1, dp[at].2));
+                    at += 1;
+                }
+                outputs.push((start, terms.len()));
+            }
         }
         Self {
             nvars,

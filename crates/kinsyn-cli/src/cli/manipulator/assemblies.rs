@@ -2,7 +2,7 @@
 //! inputs, from its constraint polynomials in Study parameters solved by homotopy continuation.
 
 use super::{clean, input_texts, inputs_or_reference, leg_warnings, load_with_body, warn};
-use crate::cli::solve::{certificate_line, solve_with_bar};
+use crate::cli::solve::{PathOption, certificate_line, solve_with_bar};
 use crate::cli::{CliError, json};
 use kinsyn::homotopy::{SolveReport, SolveSettings};
 use kinsyn::manipulator::{LegKind, Manipulator, PositionRequest};
@@ -94,9 +94,15 @@ pub fn all_assemblies_of(
         ..SolveSettings::default()
     };
     // One run: its report is the only one.
-    let report = solve_with_bar(ps.system(), &settings, 1)?
-        .runs
-        .swap_remove(0);
+    let report = solve_with_bar(
+        "--all-assemblies",
+        ps.system(),
+        &settings,
+        1,
+        PathOption::Default,
+    )?
+    .runs
+    .swap_remove(0);
     // The assembly Newton continuation reaches from the reference, to mark it.
     let request = PositionRequest {
         inputs: inputs.clone(),
