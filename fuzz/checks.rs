@@ -351,3 +351,207 @@ pub fn check_bertini(data: &[u8]) {
         }
     }
 }
+
+/// The most unknowns and start paths of the systems the components target decomposes: small
+/// systems, so that one execution takes milliseconds (larger ones are refused or skipped).
+const COMPONENTS_UNKNOWNS: usize = 3;
+const COMPONENTS_PATHS: u128 = 48;
+
+/// A small Bertini system's numerical irreducible decomposition (`kinsyn components`) either
+/// is refused before any path is tracked or is a list of components whose dimensions are below
+/// the number of unknowns, whose degrees count their witness points, whose witness points lie
+/// on the system and on the slice of their dimension, and whose sample points lie on the
+/// system; it tracks no more paths than its limit allows.
+pub fn check_components(data: &[u8]) {
+    use kinsyn::homotopy::{DecomposeSettings, check_system, decompose, decompose_paths};
+    use kinsyn::poly::{C64, bertini};
+    let Ok(text) = std::str::from_utf8(data) else {
+        return;
+    };
+    let Ok(input) = bertini::parse(text) else {
+        return;
+    };
+    let system = &input.system;
+    if check_system(system).is_err()
+        || system.nvars() > COMPONENTS_UNKNOWNS
+        || decompose_paths(system) > COMPONENTS_PATHS
+    {
+        return;
+    }
+    let settings = DecomposeSettings {
+        max_paths: 4096,
+        ..DecomposeSettings::default()
+    };
+    let Ok(d) = decompose(system, &settings) else {
+        return;
+    };
+    assert!(d.estimated_paths <= COMPONENTS_PATHS);
+    assert!(
+        d.paths as u64 <= settings.max_paths,
+        "{text:?}: {} paths tracked, limit {}",
+        d.paths,
+        settings.max_paths
+    );
+    let n = system.nvars();
+    // On the system: each equation small beside the size of its terms (taken at least 1).
+    let on_system = |x: &[C64], what: &str| {
+        assert_eq!(x.len(), n, "{text:?}: {what} of {} coordinates", x.len());
+        let size: Vec<C64> = x.iter().map(|c| C64::new(c.norm(), 0.0)).collect();
+        for (i, p) in system.equations().iter().enumerate() {
+            let scale = p.magnitudes().eval(&size).re.max(1.0);
+            if !scale.is_finite() {
+                continue;
+            }
+            let r = p.eval(x).norm();
+            assert!(
+                r <= 1e-6 * scale,
+                "{text:?}: {what} {x:?}: equation {i} leaves {r:e} (terms {scale:e})"
+            );
+        }
+    };
+    for c in &d.components {
+        assert!(c.dimension < n, "{text:?}: a component of dimension {}", c.dimension);
+        assert_eq!(c.degree, c.witness_points.len(), "{text:?}");
+        assert!(c.degree >= 1, "{text:?}: a component of degree 0");
+        let slice = &d.slices[c.dimension];
+        assert_eq!(slice.len(), c.dimension);
+        for w in &c.witness_points {
+            on_system(w, "a witness point");
+            let size = 1.0 + w.iter().map(|c| c.norm()).fold(0.0, f64::max);
+            for h in slice {
+                let v: C64 = h[..n].iter().zip(w).map(|(a, x)| a * x).sum::<C64>() + h[n];
+                let scale = h.iter().map(|a| a.norm()).fold(0.0, f64::max) * size;
+                assert!(
+                    v.norm() <= 1e-6 * scale,
+                    "{text:?}: a witness point off its slice by {:e}",
+                    v.norm()
+                );
+            }
+        }
+        on_system(&c.sample_point, "a sample point");
+    }
+}
+
+/// The most start paths of a position system the assemblies target solves.
+const ASSEMBLIES_PATHS: u64 = 64;
+
+/// `analyze --all-assemblies` on a description (either format, read as `/2`): the polynomial
+/// position system at the reference inputs, when the legs have one, vanishes at the assembly
+/// that Newton continuation reaches from the reference (the polynomial form and the
+/// description's geometry are two formulations of one mechanism); the solve either is refused
+/// before tracking or gives real regular solutions that are displacements whose own chart
+/// representative solves the system again.
+pub fn check_assemblies(data: &[u8]) {
+    use kinsyn::homotopy::{SolveSettings, check_solvable, solve};
+    use kinsyn::manipulator::PositionRequest;
+    use kinsyn::poly::C64;
+    use kinsyn::poly::geometry::Chart;
+    let Ok(text) = std::str::from_utf8(data) else {
+        return;
+    };
+    let Ok(m) = Manipulator::from_json(text) else {
+        return;
+    };
+    let inputs: Vec<(usize, f64)> = (0..m.actuators().len()).map(|a| (a, 0.0)).collect();
+    let seed = 1;
+    let Ok(ps) = m.position_system(&inputs, &Chart::random_linear(seed)) else {
+        return;
+    };
+    let system = ps.system();
+    // Each equation small beside the size of its terms at the point (taken at least 1).
+    let residual = |x: &[f64]| -> f64 {
+        let x: Vec<C64> = x.iter().map(|v| C64::new(*v, 0.0)).collect();
+        let size: Vec<C64> = x.iter().map(|c| C64::new(c.norm(), 0.0)).collect();
+        system
+            .equations()
+            .iter()
+            .map(|p| p.eval(&x).norm() / p.magnitudes().eval(&size).re.max(1.0))
+            .fold(0.0, f64::max)
+    };
+    let request = PositionRequest {
+        inputs: inputs.clone(),
+        ..PositionRequest::default()
+    };
+    if let Ok(p) = m.solve_position(&m.reference(), &request) {
+        let pose = m.platform_frame(&p.q);
+        if let Some(x) = ps.solution_of(&pose) {
+            let r = residual(&x);
+            assert!(
+                r <= 1e-6,
+                "{}: the assembly at the reference inputs leaves {r:e} in its position system",
+                m.name()
+            );
+        }
+    }
+    let settings = SolveSettings {
+        seed,
+        max_paths: ASSEMBLIES_PATHS,
+        ..SolveSettings::default()
+    };
+    if check_solvable(system, &settings).is_err() {
+        return;
+    }
+    let Ok(report) = solve(system, &settings) else {
+        return;
+    };
+    assert!(report.paths() as u64 <= ASSEMBLIES_PATHS);
+    for s in report.solutions.iter().filter(|s| s.regular && s.real) {
+        let x: Vec<f64> = s.x.iter().map(|c| c.re).collect();
+        let Ok(pose) = ps.displacement(&x) else {
+            continue;
+        };
+        let again = ps
+            .solution_of(&pose)
+            .unwrap_or_else(|| panic!("{}: a solution's pose misses the chart", m.name()));
+        let r = residual(&again);
+        assert!(
+            r <= 1e-6,
+            "{}: a real assembly's own representative leaves {r:e}",
+            m.name()
+        );
+    }
+}
+
+/// The committed catalogue and the designs of the default sweep over it, built once.
+fn sweep_designs() -> &'static (kinsyn::catalogue::Catalogue, Vec<kinsyn::sweep::Design>) {
+    use kinsyn::catalogue::Catalogue;
+    use kinsyn::sweep::{SweepSettings, designs};
+    static D: OnceLock<(Catalogue, Vec<kinsyn::sweep::Design>)> = OnceLock::new();
+    D.get_or_init(|| {
+        let catalogue = Catalogue::committed().expect("the committed catalogue reads");
+        let list = designs(&catalogue, &SweepSettings::default());
+        (catalogue, list)
+    })
+}
+
+/// The rows of a sweep's checkpoint or `designs.jsonl` as every reader reads them back
+/// (`Known::parse_rows`), against the default sweep's designs and against any design over the
+/// verified catalogue: accepted rows name each design once, pass the row check again, and
+/// their own JSON lines read back to the same rows.
+pub fn check_checkpoint(data: &[u8]) {
+    use kinsyn::sweep::SweepSettings;
+    use kinsyn::sweep::rows::Known;
+    let Ok(text) = std::str::from_utf8(data) else {
+        return;
+    };
+    let (catalogue, designs) = sweep_designs();
+    let legs = SweepSettings::default().legs;
+    for known in [Known::sweep(designs, legs), Known::catalogue(catalogue)] {
+        let Ok(rows) = known.parse_rows(text) else {
+            continue;
+        };
+        let mut seen = std::collections::HashSet::new();
+        let mut lines = String::new();
+        for row in &rows {
+            assert!(seen.insert(row.design), "design {} twice", row.design);
+            assert_eq!(known.check(row), Ok(()), "an accepted row fails its check");
+            assert!(row.dof <= 6 && row.inputs == row.legs * row.actuated.len());
+            lines.push_str(&serde_json::to_string(row).expect("a row serialises"));
+            lines.push('\n');
+        }
+        let again = known
+            .parse_rows(&lines)
+            .unwrap_or_else(|e| panic!("accepted rows written again do not read: {e}\n{lines}"));
+        assert_eq!(again, rows, "accepted rows read back differently");
+    }
+}

@@ -68,3 +68,18 @@ fn position_corpus() {
 fn bertini_corpus() {
     replay("bertini", checks::check_bertini);
 }
+
+#[test]
+fn components_corpus() {
+    replay("components", checks::check_components);
+}
+
+#[test]
+fn assemblies_corpus() {
+    replay("assemblies", checks::check_assemblies);
+}
+
+#[test]
+fn checkpoint_corpus() {
+    replay("checkpoint", checks::check_checkpoint);
+}
