@@ -306,7 +306,10 @@ pub fn check_bertini(data: &[u8]) {
     assert_eq!(input.functions.len(), system.len());
     for p in system.equations() {
         assert_eq!(p.nvars(), system.nvars());
-        assert!(p.total_degree() <= MAX_DEGREE, "{text:?}: degree beyond the limit");
+        assert!(
+            p.total_degree() <= MAX_DEGREE,
+            "{text:?}: degree beyond the limit"
+        );
         for (_, c) in p.terms() {
             assert!(c.re.is_finite() && c.im.is_finite(), "{text:?}: {c}");
         }
@@ -339,7 +342,12 @@ pub fn check_bertini(data: &[u8]) {
         }
     };
     for (i, p) in system.equations().iter().enumerate() {
-        close(values[i], p.eval(&x), p.magnitudes().eval(&size).re, "value");
+        close(
+            values[i],
+            p.eval(&x),
+            p.magnitudes().eval(&size).re,
+            "value",
+        );
         for j in 0..n {
             let d = p.derivative(j);
             close(
@@ -410,7 +418,11 @@ pub fn check_components(data: &[u8]) {
         }
     };
     for c in &d.components {
-        assert!(c.dimension < n, "{text:?}: a component of dimension {}", c.dimension);
+        assert!(
+            c.dimension < n,
+            "{text:?}: a component of dimension {}",
+            c.dimension
+        );
         assert_eq!(c.degree, c.witness_points.len(), "{text:?}");
         assert!(c.degree >= 1, "{text:?}: a component of degree 0");
         let slice = &d.slices[c.dimension];
