@@ -1299,7 +1299,13 @@ impl ExprParser<'_> {
         for k in (0..chain.len()).rev() {
             let op = &chain[k];
             let base = raised.pop().expect("one raised operand per '^'");
-            let value = self.raise(base, &exponent, (op.start, end), op.exponent_start, op.line)?;
+            let value = self.raise(
+                &base,
+                &exponent,
+                (op.start, end),
+                op.exponent_start,
+                op.line,
+            )?;
             exponent = if k > 0 && chain[k - 1].negate {
                 -value
             } else {
@@ -1313,7 +1319,7 @@ impl ExprParser<'_> {
     /// `exponent_start` (after the `^` on line `line`).
     fn raise(
         &self,
-        base: Poly,
+        base: &Poly,
         exponent: &Poly,
         span: (usize, usize),
         exponent_start: usize,
@@ -1334,7 +1340,7 @@ impl ExprParser<'_> {
         };
         self.before_expanding(
             u64::from(base.total_degree()) * u64::from(k),
-            expansion::power(&base, k),
+            expansion::power(base, k),
             span,
             line,
         )?;
