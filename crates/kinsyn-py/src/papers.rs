@@ -54,9 +54,11 @@ pub fn configurable_velocity_json(
 
 /// `kinsyn components FILE [--inputs I] [--free-inputs] [--method M] --seed S --json`, as JSON
 /// text: the irreducible components of a manipulator file's constraint variety or of a Bertini
-/// input file's system. `method` is `by-dimension` (the default) or `regeneration`.
+/// input file's system. `method` is `by-dimension` (the default) or `regeneration`; `max_paths`
+/// is `--max-paths` (the most paths tracked in all, counted before any tracking).
 #[pyfunction]
-#[pyo3(signature = (path, inputs = None, free_inputs = false, method = "by-dimension", seed = 1))]
+#[pyo3(signature = (path, inputs = None, free_inputs = false, method = "by-dimension", seed = 1,
+    max_paths = kinsyn::homotopy::DEFAULT_DECOMPOSE_PATHS))]
 #[expect(
     clippy::needless_pass_by_value,
     reason = "PyO3 converts a Python path (str or os.PathLike) to an owned PathBuf"
@@ -68,6 +70,7 @@ pub fn components_json(
     free_inputs: bool,
     method: &str,
     seed: u64,
+    max_paths: u64,
 ) -> PyResult<String> {
     // The command's clap parses these names.
     let method = match method {
@@ -84,6 +87,7 @@ pub fn components_json(
         method,
         inputs,
         free_inputs,
+        max_paths,
     };
     py.detach(|| components(&path, &options, true))
         .map_err(py_err)

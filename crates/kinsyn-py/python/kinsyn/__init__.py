@@ -602,13 +602,15 @@ def components(
     free_inputs: bool = False,
     method: str = "by-dimension",
     seed: int = 1,
+    max_paths: int = 131072,
 ) -> pd.DataFrame:
     """The irreducible components of the solution set of a manipulator file's constraint
     equations in the Study parameters of its platform (at the ``inputs``, the reference values
     for inputs not named; or with every input an unknown when ``free_inputs``) or of a Bertini
     input file's system, by numerical irreducible decomposition (``kinsyn components FILE
     [--inputs] [--free-inputs] [--method] --seed S --json``; ``method``: ``"by-dimension"`` or
-    ``"regeneration"``).
+    ``"regeneration"``; ``max_paths``: ``--max-paths``, the most paths tracked in all, counted
+    from the degrees before any tracking; past it the call raises ``InputError``).
 
     One row per component: ``dimension`` (0: isolated solutions, the assemblies; above 0: a
     self-motion, or with ``free_inputs`` an operation mode of that many dof), ``degree``,
@@ -617,7 +619,9 @@ def components(
     the whole report (paths, junk points, unresolved points, seconds).
     """
     r = json.loads(
-        _native.components_json(path, _inputs_text(inputs), free_inputs, method, seed)
+        _native.components_json(
+            path, _inputs_text(inputs), free_inputs, method, seed, max_paths
+        )
     )
     df = pd.DataFrame(
         [
