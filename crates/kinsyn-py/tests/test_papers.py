@@ -135,3 +135,10 @@ def test_paper_004_components_at_generic_inputs():
     assert str(e.value) == cli_error("components", "nope.json")
     with pytest.raises(kinsyn.InputError):
         kinsyn.components(RUU4, method="nope")
+    # The path count is decided from the degrees before any tracking: 10 paths are too few, and
+    # the refusal is the CLI's line for --max-paths 10.
+    with pytest.raises(kinsyn.InputError) as e:
+        kinsyn.components(RUU4, inputs=GENERIC_004, max_paths=10)
+    assert str(e.value) == cli_error(
+        "components", str(RUU4), "--inputs", GENERIC_004, "--max-paths", "10"
+    )
