@@ -68,9 +68,29 @@ use tracker::Tracker;
 /// run for hours (a tighter start system or a parameter homotopy is the way).
 pub const MAX_PATHS: u64 = 1 << 20;
 
-/// The default of [`SolveSettings::max_paths`]: 2¹⁶ = 65 536 paths, a few minutes on two
-/// cores for systems of the size kinsyn meets (docs/limits.md, "Measured cost").
+/// The default of [`SolveSettings::max_paths`]: 2¹⁶ = 65 536 paths of up to
+/// [`PATH_WEIGHT_UNKNOWNS`] unknowns ([`path_weight`]), about three minutes on two cores when
+/// most paths diverge (docs/limits.md, "Measured cost").
 pub const DEFAULT_MAX_PATHS: u64 = 1 << 16;
+
+/// Up to this many unknowns a path counts once against a path limit; beyond, its cost grows as
+/// the cube of the unknowns (each step factors the Jacobian), and it counts [`path_weight`]
+/// times.
+pub const PATH_WEIGHT_UNKNOWNS: usize = 12;
+
+/// How many times a path in `unknowns` unknowns counts against a path limit
+/// ([`SolveSettings::max_paths`], [`DecomposeSettings::max_paths`]): 1 up to
+/// [`PATH_WEIGHT_UNKNOWNS`], then `⌈(n/12)³⌉` — 19 for 32 unknowns, 579 for 100. Measured
+/// (docs/limits.md): a path costs about 1–5 ms of CPU up to 16 unknowns, 20–35 ms at 32–64 and
+/// 0.6 s at 100.
+#[must_use]
+pub fn path_weight(unknowns: usize) -> u64 {
+    let n = unknowns as u64;
+    let reference = PATH_WEIGHT_UNKNOWNS as u64;
+    (n * n * n)
+        .div_ceil(reference * reference * reference)
+        .max(1)
+}
 
 /// The most unknowns (and equations) [`solve`] takes: each step of a path factors the
 /// `n × n` Jacobian, and the certificates take interval matrices of that size
@@ -141,11 +161,14 @@ pub enum HomotopyError {
         /// The system's variable groups.
         groups: usize,
     },
-    /// More paths than the limit ([`SolveSettings::max_paths`], at most [`MAX_PATHS`]).
-    #[error("{paths} paths exceed the limit of {limit}")]
+    /// More paths than the limit ([`SolveSettings::max_paths`], at most [`MAX_PATHS`]), each
+    /// counting [`path_weight`] times.
+    #[error("{paths} paths, each counting {weight} times, exceed the limit of {limit}")]
     TooManyPaths {
         /// The start system's paths (saturating at `u128::MAX`).
         paths: u128,
+        /// How many times each counts ([`path_weight`] of the unknowns).
+        weight: u64,
         /// The limit.
         limit: u64,
     },
@@ -165,8 +188,9 @@ pub struct SolveSettings {
     /// How many times paths with suspect endpoints (coinciding regular endpoints: a path jump;
     /// failures) are tracked again with stricter steps.
     pub retrack_rounds: usize,
-    /// The most paths to track: a start system with more is refused before any is tracked
-    /// ([`DEFAULT_MAX_PATHS`]; at most [`MAX_PATHS`] is honoured).
+    /// The most paths to track, each counting [`path_weight`] times: a start system with more
+    /// is refused before any is tracked ([`DEFAULT_MAX_PATHS`]; at most [`MAX_PATHS`] is
+    /// honoured).
     pub max_paths: u64,
 }
 
@@ -437,7 +461,8 @@ pub fn path_count(system: &System, start: StartSystem) -> Option<u128> {
 /// What [`solve`] checks before it tracks any path, at a cost of the system's size alone: a
 /// square system of at most [`MAX_UNKNOWNS`] unknowns and a program within
 /// [`crate::poly::MAX_PROGRAM_SIZE`], without a constant equation, whose start system has at
-/// most [`SolveSettings::max_paths`] (and [`MAX_PATHS`]) paths. Returns those paths.
+/// most [`SolveSettings::max_paths`] (and [`MAX_PATHS`]) paths, each counting [`path_weight`]
+/// times. Returns the paths.
 ///
 /// # Errors
 /// The [`HomotopyError`] [`solve`] would return before tracking.
@@ -464,9 +489,11 @@ pub fn check_solvable(system: &System, settings: &SolveSettings) -> Result<u128,
         groups: system.groups().len(),
     })?;
     let limit = settings.max_paths.min(MAX_PATHS);
-    if count > u128::from(limit) {
+    let weight = path_weight(system.nvars());
+    if count.saturating_mul(u128::from(weight)) > u128::from(limit) {
         return Err(HomotopyError::TooManyPaths {
             paths: count,
+            weight,
             limit,
         });
     }
