@@ -84,6 +84,7 @@ pub fn components_json(
         method,
         inputs,
         free_inputs,
+        max_paths: kinsyn::homotopy::DEFAULT_DECOMPOSE_PATHS,
     };
     py.detach(|| components(&path, &options, true))
         .map_err(py_err)

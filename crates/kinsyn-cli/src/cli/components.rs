@@ -356,7 +356,9 @@ fn manipulator_components(
         OperationModeError::Decompose(e) => {
             refusal(&path.display().to_string(), options.method, None, &e)
         }
-        other => CliError::Input(format!("{}: {other}", path.display())),
+        other @ OperationModeError::System(_) => {
+            CliError::Input(format!("{}: {other}", path.display()))
+        }
     })?;
     let input_text = input_texts(&m, &all);
     if as_json {

@@ -1300,7 +1300,13 @@ impl ExprParser<'_> {
         for k in (0..chain.len()).rev() {
             let op = &chain[k];
             let base = raised.pop().expect("one raised operand per '^'");
-            let value = self.raise(base, &exponent, (op.start, end), op.exponent_start, op.line)?;
+            let value = self.raise(
+                &base,
+                &exponent,
+                (op.start, end),
+                op.exponent_start,
+                op.line,
+            )?;
             exponent = if k > 0 && chain[k - 1].negate {
                 -value
             } else {
@@ -1314,7 +1320,7 @@ impl ExprParser<'_> {
     /// `exponent_start` (after the `^` on line `line`).
     fn raise(
         &self,
-        base: Poly,
+        base: &Poly,
         exponent: &Poly,
         span: (usize, usize),
         exponent_start: usize,
@@ -1335,7 +1341,7 @@ impl ExprParser<'_> {
         };
         self.before_expanding(
             u64::from(base.total_degree()) * u64::from(k),
-            expansion::power(&base, k),
+            expansion::power(base, k),
             span,
             line,
         )?;
@@ -1720,7 +1726,7 @@ mod tests {
             functions.join(", ")
         );
         for f in &functions {
-            text.push_str(&format!("  {f} = p;\n"));
+            let _ = writeln!(text, "  {f} = p;");
         }
         text.push_str("END;\n");
         let input = parse(&text).unwrap();
