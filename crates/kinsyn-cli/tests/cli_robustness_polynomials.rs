@@ -83,7 +83,7 @@ fn real_solutions(file: &str, extra: &[&str]) -> Vec<Vec<f64>> {
 }
 
 /// 7 000 nested parentheses, 400 000 minus signs and a chain of 400 000 `^1` once overflowed
-/// the stack of both commands (an abort, exit 134). They nest far beyond 256 levels, the
+/// the stack of both commands (an abort, exit 134). They nest far beyond 128 levels, the
 /// documented limit, and are refused in one line; the files are under the 1 MiB file limit.
 #[test]
 fn deep_nesting_is_refused_in_one_line() {
@@ -105,22 +105,22 @@ fn deep_nesting_is_refused_in_one_line() {
             refused_within(
                 20,
                 &[command, &file],
-                &["line 4", "f nests", "more than 256 deep"],
+                &["line 4", "f nests", "more than 128 deep"],
             );
         }
     }
 }
 
-/// At the limit the nesting is read: 256 parentheses (or 128 signs inside 128 parentheses)
+/// At the limit the nesting is read: 128 parentheses (or 64 signs inside 64 parentheses)
 /// around `x − 1` leave the equation `x − 1 = 0` (an even number of signs), whose root 1 the
 /// solver finds; one level more is refused.
 #[test]
 fn nesting_up_to_the_limit_is_read() {
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path();
-    let parens = format!("{}x - 1{}", "(".repeat(256), ")".repeat(256));
-    let signs = format!("{}x - 1{}", "-(".repeat(128), ")".repeat(128));
-    for (name, body) in [("p256.bertini", parens), ("s256.bertini", signs)] {
+    let parens = format!("{}x - 1{}", "(".repeat(128), ")".repeat(128));
+    let signs = format!("{}x - 1{}", "-(".repeat(64), ")".repeat(64));
+    for (name, body) in [("p128.bertini", parens), ("s128.bertini", signs)] {
         let file = write(d, name, &one_equation(&["x"], &body));
         let roots = real_solutions(&file, &[]);
         assert_eq!(roots.len(), 1, "{name}");
@@ -128,13 +128,13 @@ fn nesting_up_to_the_limit_is_read() {
     }
     let deeper = write(
         d,
-        "p257.bertini",
+        "p129.bertini",
         &one_equation(
             &["x"],
-            &format!("{}x - 1{}", "(".repeat(257), ")".repeat(257)),
+            &format!("{}x - 1{}", "(".repeat(129), ")".repeat(129)),
         ),
     );
-    refused_within(20, &["solve", &deeper], &["more than 256 deep"]);
+    refused_within(20, &["solve", &deeper], &["more than 128 deep"]);
 }
 
 /// `(x+1)^65535` has 65 536 terms and `(x+y+z+1)^50` has C(53, 3) = 53·52·51/6 = 23 426 (every
@@ -202,8 +202,9 @@ fn long_sums_are_read_in_linear_time() {
 /// 21 equations `x_i² − 1`: the total-degree start system has 2²¹ = 2 097 152 paths, and the
 /// decomposition by dimension solves one sliced system per dimension d = 20 … 0, of
 /// 2^(21 − d) paths: 2 + 4 + … + 2²¹ = 2²² − 2 = 4 194 302 (regeneration:
-/// 2 (2 + 4 + … + 2²¹) = 8 388 604). `components` once ran past 30 s; both commands now refuse
-/// at once, naming `--max-paths`.
+/// 2 (2 + 4 + … + 2²¹) = 8 388 604). A path in 21 unknowns counts ⌈21³/12³⌉ = ⌈9261/1728⌉ = 6
+/// times against `components`' limit: 25 165 812 in all. `components` once ran past 30 s; both
+/// commands now refuse at once, naming `--max-paths`.
 #[test]
 fn too_many_paths_are_refused_at_once_naming_the_option() {
     let dir = tempfile::tempdir().unwrap();
@@ -231,7 +232,9 @@ fn too_many_paths_are_refused_at_once_naming_the_option() {
         &["components", &file],
         &[
             "by-dimension is estimated at 4194302 paths",
-            "more than --max-paths 131072",
+            "in 21 unknowns, each counting 6 times",
+            "25165812 in all",
+            "more than --max-paths 65536",
             "at most 4194304",
         ],
     );

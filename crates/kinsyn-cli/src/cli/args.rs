@@ -255,10 +255,10 @@ pub(super) enum Command {
         /// Worker threads for the paths (default: one per core).
         #[arg(long)]
         threads: Option<usize>,
-        /// Refuse a start system with more paths than this, before tracking any (per run). The
-        /// default, 65536, is a few minutes on two cores for systems of up to a dozen unknowns;
-        /// at most 1048576 (2^20). Systems of more than 100 unknowns are refused whatever this
-        /// says (docs/limits.md).
+        /// Refuse a start system with more paths than this, before tracking any (per run); a
+        /// path in n > 12 unknowns counts ⌈(n/12)³⌉ times, its cost growing as the cube of the
+        /// unknowns. The default is at most a few minutes on two cores; at most 1048576 (2^20).
+        /// Systems of more than 100 unknowns are refused whatever this says (docs/limits.md).
         #[arg(long, value_name = "N", default_value_t = kinsyn::homotopy::DEFAULT_MAX_PATHS,
               value_parser = clap::value_parser!(u64).range(1..=kinsyn::homotopy::MAX_PATHS))]
         max_paths: u64,
@@ -317,9 +317,10 @@ pub(super) enum Command {
         /// degrees before any is tracked (by dimension: the Bézout numbers of the sliced
         /// systems; regeneration: Σ 2·e1⋯em over the equations by increasing degree), and a
         /// system estimated beyond this is refused; monodromy loops and membership tests then
-        /// track more, within the same limit. The default, 131072, is a few minutes on two
-        /// cores; at most 4194304 (2^22). Systems of more than 32 unknowns or 128 equations
-        /// are refused whatever this says (docs/limits.md).
+        /// track more, within the same limit. A path in n > 12 unknowns counts ⌈(n/12)³⌉
+        /// times. The default is at most a few minutes on two cores; at most 4194304 (2^22):
+        /// --free-inputs on the 4-RUU needs 700000 with --method regeneration. Systems of more
+        /// than 32 unknowns or 128 equations are refused whatever this says (docs/limits.md).
         #[arg(long, value_name = "N", default_value_t = kinsyn::homotopy::DEFAULT_DECOMPOSE_PATHS,
               value_parser = clap::value_parser!(u64).range(1..=kinsyn::homotopy::MAX_DECOMPOSE_PATHS))]
         max_paths: u64,

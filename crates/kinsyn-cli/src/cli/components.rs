@@ -3,7 +3,7 @@
 //! modes — by numerical irreducible decomposition (docs/operation-modes.md).
 
 use super::manipulator::{input_texts, inputs_or_reference, load, pose_text};
-use super::solve::{paths_text, read_input};
+use super::solve::{paths_text, read_input, weighted_paths};
 use super::{CliError, json, terminal};
 use kinsyn::homotopy::{
     Component, DecomposeError, DecomposeSettings, Decomposition, MAX_DECOMPOSE_PATHS,
@@ -13,7 +13,7 @@ use kinsyn::manipulator::{
     DecompositionMethod, InputValues, LocalMotion, Manipulator, ModeComponent, OperationModeError,
     OperationModeSettings, OperationModes,
 };
-use kinsyn::poly::C64;
+use kinsyn::poly::{C64, System};
 use std::fmt::Write as _;
 use std::path::Path;
 
@@ -36,8 +36,14 @@ pub struct ComponentsOptions {
 
 /// The refusal of a decomposition, in one line naming `source` and, for a path limit, the
 /// estimate, the limit and the option that raises it. The same for a Bertini file and for a
-/// manipulator's constraints, whose decomposition runs the same library code.
-fn refusal(source: &str, method: DecompositionMethod, e: &DecomposeError) -> CliError {
+/// manipulator's constraints, whose decomposition runs the same library code; for a Bertini
+/// file (`system`), the other method's estimate when it is smaller.
+fn refusal(
+    source: &str,
+    method: DecompositionMethod,
+    system: Option<&System>,
+    e: &DecomposeError,
+) -> CliError {
     let raise = |limit: u64| {
         if limit < MAX_DECOMPOSE_PATHS {
             format!(
@@ -48,23 +54,55 @@ fn refusal(source: &str, method: DecompositionMethod, e: &DecomposeError) -> Cli
         }
     };
     CliError::Input(match e {
-        DecomposeError::TooManyPaths { estimate, limit } => format!(
-            "{source}: {} is estimated at {} paths before any is tracked ({}), {}",
+        DecomposeError::TooManyPaths {
+            estimate,
+            unknowns,
+            weight,
+            limit,
+        } => {
+            let other = system
+                .map(|s| match method {
+                    DecompositionMethod::ByDimension => {
+                        (DecompositionMethod::Regeneration, regeneration_paths(s))
+                    }
+                    DecompositionMethod::Regeneration => {
+                        (DecompositionMethod::ByDimension, decompose_paths(s))
+                    }
+                })
+                .filter(|(_, e)| e < estimate)
+                .map(|(m, e)| {
+                    format!(
+                        "; --method {} is estimated at {}",
+                        method_name(m),
+                        paths_text(e)
+                    )
+                })
+                .unwrap_or_default();
+            format!(
+                "{source}: {} is estimated at {} before any is tracked ({}), {}{other}",
+                method_name(method),
+                weighted_paths(*estimate, *weight, *unknowns),
+                match method {
+                    DecompositionMethod::ByDimension =>
+                        "the Bézout numbers of the sliced systems, one per dimension",
+                    DecompositionMethod::Regeneration =>
+                        "Σ 2·e1⋯em over the equations by increasing degree",
+                },
+                raise(*limit)
+            )
+        }
+        DecomposeError::PathLimit {
+            tracked,
+            unknowns,
+            weight,
+            limit,
+            estimate,
+        } => format!(
+            "{source}: {} stopped after {} (the start systems were estimated at {}; monodromy loops and membership tests took the rest), {}",
             method_name(method),
+            weighted_paths(u128::from(*tracked), *weight, *unknowns),
             paths_text(*estimate),
-            match method {
-                DecompositionMethod::ByDimension =>
-                    "the Bézout numbers of the sliced systems, one per dimension",
-                DecompositionMethod::Regeneration =>
-                    "Σ 2·e1⋯em over the equations by increasing degree",
-            },
             raise(*limit)
-        ),
-        DecomposeError::PathLimit { tracked, estimate } => format!(
-            "{source}: {} stopped after {tracked} paths (the start systems were estimated at {}; monodromy loops and membership tests took the rest), {}",
-            method_name(method),
-            paths_text(*estimate),
-            raise(*tracked)
         ),
         other => format!("{source}: {other}"),
     })
@@ -115,7 +153,14 @@ pub fn components(
             DecompositionMethod::ByDimension => decompose(system, &settings),
         }
     })
-    .map_err(|e| refusal(&path.display().to_string(), options.method, &e))?;
+    .map_err(|e| {
+        refusal(
+            &path.display().to_string(),
+            options.method,
+            Some(system),
+            &e,
+        )
+    })?;
     if as_json {
         return Ok(json(&serde_json::json!({
             "file": path.display().to_string(),
@@ -309,7 +354,7 @@ fn manipulator_components(
     })
     .map_err(|e| match e {
         OperationModeError::Decompose(e) => {
-            refusal(&path.display().to_string(), options.method, &e)
+            refusal(&path.display().to_string(), options.method, None, &e)
         }
         other @ OperationModeError::System(_) => {
             CliError::Input(format!("{}: {other}", path.display()))

@@ -98,6 +98,21 @@ fn start_name(start: StartSystem) -> &'static str {
     }
 }
 
+/// `N paths`, and when each path of a system in `unknowns` unknowns counts `weight` times
+/// against the limit ([`homotopy::path_weight`]), what they count in all.
+pub(crate) fn weighted_paths(paths: u128, weight: u64, unknowns: usize) -> String {
+    if weight == 1 {
+        format!("{} paths", paths_text(paths))
+    } else {
+        format!(
+            "{} paths in {unknowns} unknowns, each counting {weight} times (a path's cost grows as the cube of the unknowns beyond {}): {} in all",
+            paths_text(paths),
+            homotopy::PATH_WEIGHT_UNKNOWNS,
+            paths_text(paths.saturating_mul(u128::from(weight)))
+        )
+    }
+}
+
 /// How a refusal names the option that raises the path limit: `kinsyn solve`'s `--max-paths`,
 /// or nothing where the command has no such option (`analyze --all-assemblies`, which keeps the
 /// default).
@@ -121,7 +136,11 @@ pub fn check_cost(
 ) -> Result<u128, CliError> {
     homotopy::check_solvable(system, settings).map_err(|e| {
         CliError::Input(match e {
-            homotopy::HomotopyError::TooManyPaths { paths, limit } => {
+            homotopy::HomotopyError::TooManyPaths {
+                paths,
+                weight,
+                limit,
+            } => {
                 let hint = match settings.start {
                     StartSystem::TotalDegree => system
                         .multihomogeneous_bezout()
@@ -143,9 +162,9 @@ pub fn check_cost(
                     PathOption::Default => format!("more than the limit of {limit}"),
                 };
                 format!(
-                    "{source}: the {} start system has {} paths, {raise}{hint}",
+                    "{source}: the {} start system has {}, {raise}{hint}",
                     start_name(settings.start),
-                    paths_text(paths)
+                    weighted_paths(paths, weight, system.nvars())
                 )
             }
             homotopy::HomotopyError::TooManyUnknowns { unknowns } => format!(

@@ -602,7 +602,7 @@ def components(
     free_inputs: bool = False,
     method: str = "by-dimension",
     seed: int = 1,
-    max_paths: int = 131072,
+    max_paths: int = 65536,
 ) -> pd.DataFrame:
     """The irreducible components of the solution set of a manipulator file's constraint
     equations in the Study parameters of its platform (at the ``inputs``, the reference values

@@ -38,7 +38,7 @@ def components_json(
     free_inputs: bool = False,
     method: str = "by-dimension",
     seed: int = 1,
-    max_paths: int = 131072,
+    max_paths: int = 65536,
 ) -> str: ...
 def sweep_json(
     out: Union[str, PathLike[str]],

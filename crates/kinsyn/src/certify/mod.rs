@@ -311,12 +311,7 @@ pub fn certify_root_with(
 /// first.
 pub fn separate(program: &Program, certificates: &mut [Certificate]) {
     let n = certificates.len();
-    let overlapping = |c: &[Certificate], i: usize| {
-        (0..n).any(|j| j != i && c[j].is_certified() && !disjoint(&c[i], &c[j]))
-    };
-    let retry: Vec<usize> = (0..n)
-        .filter(|&i| certificates[i].is_certified() && overlapping(certificates, i))
-        .collect();
+    let retry: Vec<usize> = overlapping(certificates);
     if !retry.is_empty() {
         let options = CertifyOptions::default();
         let mut certifier = Certifier::new(program, &options);
@@ -324,9 +319,13 @@ pub fn separate(program: &Program, certificates: &mut [Certificate]) {
             certifier.tighten_certificate(&mut certificates[i]);
         }
     }
+    let mut overlaps = vec![false; n];
+    for i in overlapping(certificates) {
+        overlaps[i] = true;
+    }
     for i in 0..n {
         let certified = certificates[i].is_certified();
-        let distinct = certified && !overlapping(certificates, i);
+        let distinct = certified && !overlaps[i];
         let same_as = if certified && !distinct {
             (0..n).find(|&j| {
                 j != i && certificates[j].is_certified() && {
@@ -362,6 +361,47 @@ fn check_length(program: &Program, root: usize, x: &[C64]) -> Result<(), Certify
             found: x.len(),
         })
     }
+}
+
+/// The certified certificates whose enclosure meets another certified one's, in increasing
+/// order. Comparing every pair would cost the square of the roots (65 536 roots: 2·10⁹
+/// comparisons, many minutes), so the enclosures are swept along a generic real-linear form
+/// `ℓ(z) = Σ Re(c_k z_k)` (`c_k` on the unit circle at the golden angle's multiples): two
+/// enclosures that meet have ranges of `ℓ` that meet (the ranges are computed in outward-rounded
+/// interval arithmetic, so they hold the true ones), and after sorting the ranges by their lower
+/// ends only the pairs whose ranges meet are compared — a few per root in general position.
+fn overlapping(certificates: &[Certificate]) -> Vec<usize> {
+    const GOLDEN: f64 = 0.618_033_988_749_894_9;
+    let range = |c: &Certificate| -> Interval {
+        c.enclosure
+            .iter()
+            .enumerate()
+            .fold(Interval::point(0.0), |acc, (k, z)| {
+                let angle = std::f64::consts::TAU * ((k as f64 + 1.0) * GOLDEN).fract();
+                let (sin, cos) = angle.sin_cos();
+                acc + Interval::point(cos) * z.re - Interval::point(sin) * z.im
+            })
+    };
+    let mut sorted: Vec<(Interval, usize)> = certificates
+        .iter()
+        .enumerate()
+        .filter(|(_, c)| c.is_certified())
+        .map(|(i, c)| (range(c), i))
+        .collect();
+    sorted.sort_by(|a, b| a.0.lo.total_cmp(&b.0.lo));
+    let mut overlaps = vec![false; certificates.len()];
+    for (k, (a, i)) in sorted.iter().enumerate() {
+        for (b, j) in &sorted[k + 1..] {
+            if b.lo > a.hi {
+                break;
+            }
+            if !disjoint(&certificates[*i], &certificates[*j]) {
+                overlaps[*i] = true;
+                overlaps[*j] = true;
+            }
+        }
+    }
+    (0..certificates.len()).filter(|i| overlaps[*i]).collect()
 }
 
 /// Whether the enclosures of two certificates are disjoint (then the roots differ).

@@ -68,9 +68,29 @@ use tracker::Tracker;
 /// run for hours (a tighter start system or a parameter homotopy is the way).
 pub const MAX_PATHS: u64 = 1 << 20;
 
-/// The default of [`SolveSettings::max_paths`]: 2¹⁶ = 65 536 paths, a few minutes on two
-/// cores for systems of the size kinsyn meets (docs/limits.md, "Measured cost").
+/// The default of [`SolveSettings::max_paths`]: 2¹⁶ = 65 536 paths of up to
+/// [`PATH_WEIGHT_UNKNOWNS`] unknowns ([`path_weight`]), about three minutes on two cores when
+/// most paths diverge (docs/limits.md, "Measured cost").
 pub const DEFAULT_MAX_PATHS: u64 = 1 << 16;
+
+/// Up to this many unknowns a path counts once against a path limit; beyond, its cost grows as
+/// the cube of the unknowns (each step factors the Jacobian), and it counts [`path_weight`]
+/// times.
+pub const PATH_WEIGHT_UNKNOWNS: usize = 12;
+
+/// How many times a path in `unknowns` unknowns counts against a path limit
+/// ([`SolveSettings::max_paths`], [`DecomposeSettings::max_paths`]): 1 up to
+/// [`PATH_WEIGHT_UNKNOWNS`], then `⌈(n/12)³⌉` — 19 for 32 unknowns, 579 for 100. Measured
+/// (docs/limits.md): a path costs about 1–5 ms of CPU up to 16 unknowns, 20–35 ms at 32–64 and
+/// 0.6 s at 100.
+#[must_use]
+pub fn path_weight(unknowns: usize) -> u64 {
+    let n = unknowns as u64;
+    let reference = PATH_WEIGHT_UNKNOWNS as u64;
+    (n * n * n)
+        .div_ceil(reference * reference * reference)
+        .max(1)
+}
 
 /// The most unknowns (and equations) [`solve`] takes: each step of a path factors the
 /// `n × n` Jacobian, and the certificates take interval matrices of that size
@@ -141,11 +161,14 @@ pub enum HomotopyError {
         /// The system's variable groups.
         groups: usize,
     },
-    /// More paths than the limit ([`SolveSettings::max_paths`], at most [`MAX_PATHS`]).
-    #[error("{paths} paths exceed the limit of {limit}")]
+    /// More paths than the limit ([`SolveSettings::max_paths`], at most [`MAX_PATHS`]), each
+    /// counting [`path_weight`] times.
+    #[error("{paths} paths, each counting {weight} times, exceed the limit of {limit}")]
     TooManyPaths {
         /// The start system's paths (saturating at `u128::MAX`).
         paths: u128,
+        /// How many times each counts ([`path_weight`] of the unknowns).
+        weight: u64,
         /// The limit.
         limit: u64,
     },
@@ -165,8 +188,9 @@ pub struct SolveSettings {
     /// How many times paths with suspect endpoints (coinciding regular endpoints: a path jump;
     /// failures) are tracked again with stricter steps.
     pub retrack_rounds: usize,
-    /// The most paths to track: a start system with more is refused before any is tracked
-    /// ([`DEFAULT_MAX_PATHS`]; at most [`MAX_PATHS`] is honoured).
+    /// The most paths to track, each counting [`path_weight`] times: a start system with more
+    /// is refused before any is tracked ([`DEFAULT_MAX_PATHS`]; at most [`MAX_PATHS`] is
+    /// honoured).
     pub max_paths: u64,
 }
 
@@ -437,7 +461,8 @@ pub fn path_count(system: &System, start: StartSystem) -> Option<u128> {
 /// What [`solve`] checks before it tracks any path, at a cost of the system's size alone: a
 /// square system of at most [`MAX_UNKNOWNS`] unknowns and a program within
 /// [`crate::poly::MAX_PROGRAM_SIZE`], without a constant equation, whose start system has at
-/// most [`SolveSettings::max_paths`] (and [`MAX_PATHS`]) paths. Returns those paths.
+/// most [`SolveSettings::max_paths`] (and [`MAX_PATHS`]) paths, each counting [`path_weight`]
+/// times. Returns the paths.
 ///
 /// # Errors
 /// The [`HomotopyError`] [`solve`] would return before tracking.
@@ -464,9 +489,11 @@ pub fn check_solvable(system: &System, settings: &SolveSettings) -> Result<u128,
         groups: system.groups().len(),
     })?;
     let limit = settings.max_paths.min(MAX_PATHS);
-    if count > u128::from(limit) {
+    let weight = path_weight(system.nvars());
+    if count.saturating_mul(u128::from(weight)) > u128::from(limit) {
         return Err(HomotopyError::TooManyPaths {
             paths: count,
+            weight,
             limit,
         });
     }
@@ -800,4 +827,113 @@ fn distinct_solutions(system: &System, ends: &[PathEnd]) -> Vec<Solution> {
         });
     }
     solutions
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::poly::Poly;
+
+    /// `⌈n³ / 12³⌉`, by hand: 12³ = 1728; 13³ = 2197 (2), 16³ = 4096 (3), 32³ = 32768 (19),
+    /// 100³ = 10⁶ (579).
+    #[test]
+    fn path_weights_by_hand() {
+        for (n, w) in [(1, 1), (12, 1), (13, 2), (16, 3), (32, 19), (100, 579)] {
+            assert_eq!(path_weight(n), w, "{n} unknowns");
+        }
+    }
+
+    /// The estimates of the decompositions from the degrees, by hand. Four cubics in three
+    /// unknowns (the twisted cubic and a line): by dimension 3 + 9 + 27 = 39, by regeneration
+    /// 2 (3 + 9 + 27 + 81) = 240. Two equations of degrees 2 and 1 in two unknowns (exactly
+    /// N − 0 at dimension 0: the product 2, and 2 at dimension 1): 4; regeneration
+    /// 2 (1 + 2) = 6.
+    #[test]
+    fn decomposition_estimates_by_hand() {
+        let v = |i| Poly::variable(3, i);
+        let cubic = |a: Poly, b: Poly| a * b;
+        let (x, y, z) = (v(0), v(1), v(2));
+        let one = Poly::real(3, 1.0);
+        let q1 = &y - &(&x * &x);
+        let q2 = &z - &(&x * &y);
+        let l1 = &x - &one;
+        let l2 = &y - &(one.clone() * 2.0);
+        let system = System::new(
+            vec!["x".into(), "y".into(), "z".into()],
+            vec![
+                cubic(q1.clone(), l1.clone()),
+                cubic(q1, l2.clone()),
+                cubic(q2.clone(), l1),
+                cubic(q2, l2),
+            ],
+        )
+        .unwrap();
+        assert_eq!(system.degrees(), vec![3, 3, 3, 3]);
+        assert_eq!(decompose_paths(&system), 39);
+        assert_eq!(regeneration_paths(&system), 240);
+        let a = Poly::variable(2, 0);
+        let b = Poly::variable(2, 1);
+        let small = System::new(vec!["a".into(), "b".into()], vec![&a * &a - &b, &a - &b]).unwrap();
+        assert_eq!(decompose_paths(&small), 2 + 2);
+        assert_eq!(regeneration_paths(&small), 6);
+    }
+
+    /// The limit is checked before any tracking: a solve of `x² = 1` with `max_paths` 1 is
+    /// refused, with 2 it runs; a decomposition whose estimate fits but whose tracking
+    /// (monodromy, trace test) goes beyond the limit stops with the count it reached.
+    #[test]
+    fn limits_hold_before_and_during_the_work() {
+        let x = Poly::variable(1, 0);
+        let square = System::new(vec!["x".into()], vec![&x * &x - Poly::real(1, 1.0)]).unwrap();
+        let tight = SolveSettings {
+            max_paths: 1,
+            ..SolveSettings::default()
+        };
+        assert_eq!(
+            solve(&square, &tight).unwrap_err(),
+            HomotopyError::TooManyPaths {
+                paths: 2,
+                weight: 1,
+                limit: 1
+            }
+        );
+        let report = solve(
+            &square,
+            &SolveSettings {
+                max_paths: 2,
+                ..tight
+            },
+        )
+        .unwrap();
+        assert_eq!(report.nonsingular(), 2);
+        // A circle in the plane: one quadric in two unknowns, estimated at 2 start paths by
+        // dimension (dimension 1); its two witness points then need 4 paths for the trace test.
+        let (a, b) = (Poly::variable(2, 0), Poly::variable(2, 1));
+        let circle = System::new(
+            vec!["a".into(), "b".into()],
+            vec![&a * &a + &b * &b - Poly::real(2, 1.0)],
+        )
+        .unwrap();
+        assert_eq!(decompose_paths(&circle), 2);
+        let settings = DecomposeSettings {
+            max_paths: 2,
+            ..DecomposeSettings::default()
+        };
+        match decompose(&circle, &settings) {
+            Err(DecomposeError::PathLimit { tracked, limit, .. }) => {
+                assert_eq!((tracked, limit), (2, 2));
+            }
+            other => panic!("{other:?}"),
+        }
+        let d = decompose(
+            &circle,
+            &DecomposeSettings {
+                max_paths: 100,
+                ..settings
+            },
+        )
+        .unwrap();
+        assert_eq!(d.signature(), vec![(1, 2)]);
+        assert_eq!(d.estimated_paths, 2);
+    }
 }

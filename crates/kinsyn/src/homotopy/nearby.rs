@@ -34,7 +34,7 @@ fn form(z: &[C64]) -> f64 {
 /// An integer whose order is that of the finite doubles (the bits of a negative double
 /// reversed): a key of the sorted set.
 fn ordered(x: f64) -> i64 {
-    let bits = i64::from_ne_bytes(x.to_bits().to_ne_bytes());
+    let bits = x.to_bits().cast_signed();
     bits ^ ((bits >> 63).cast_unsigned() >> 1).cast_signed()
 }
 

@@ -38,10 +38,11 @@ use rand_chacha::ChaCha8Rng;
 use rand_distr::{Distribution, StandardNormal};
 use std::cell::Cell;
 
-/// The default of [`DecomposeSettings::max_paths`]: 2¹⁷ = 131 072 paths, a few minutes on two
-/// cores for the systems of a manipulator (docs/limits.md, "Measured cost"). The 4-RUU at fixed
-/// inputs estimates 510 (by dimension) and 4 092 (regeneration).
-pub const DEFAULT_DECOMPOSE_PATHS: u64 = 1 << 17;
+/// The default of [`DecomposeSettings::max_paths`]: 2¹⁶ = 65 536 paths of up to
+/// [`super::PATH_WEIGHT_UNKNOWNS`] unknowns ([`super::path_weight`]), about three minutes on two
+/// cores when most paths diverge (docs/limits.md, "Measured cost"). The 4-RUU at fixed inputs
+/// estimates 510 (by dimension) and 4 092 (regeneration).
+pub const DEFAULT_DECOMPOSE_PATHS: u64 = 1 << 16;
 
 /// The most paths a decomposition tracks, whatever [`DecomposeSettings::max_paths`] says:
 /// 2²² = 4 194 304, about two hours (the 4-RUU over its input space, `--free-inputs`, estimates
@@ -106,21 +107,33 @@ pub enum DecomposeError {
     },
     /// The start systems (or regeneration steps) need more paths than the limit, known from
     /// the degrees before any path is tracked ([`decompose_paths`], [`super::regeneration_paths`]).
-    #[error("an estimated {estimate} paths exceed the limit of {limit}")]
+    #[error(
+        "an estimated {estimate} paths, each counting {weight} times, exceed the limit of {limit}"
+    )]
     TooManyPaths {
         /// The bound on the paths of the start systems (saturating at `u128::MAX`).
         estimate: u128,
+        /// The unknowns of the system (the paths' weight).
+        unknowns: usize,
+        /// How many times each counts ([`super::path_weight`] of the unknowns).
+        weight: u64,
         /// The limit ([`DecomposeSettings::max_paths`], at most [`MAX_DECOMPOSE_PATHS`]).
         limit: u64,
     },
     /// The paths tracked (start systems, monodromy loops, trace and membership tests) reached
     /// the limit: the decomposition stopped.
     #[error(
-        "stopped after {tracked} paths, the limit (the start systems were estimated at {estimate})"
+        "stopped after {tracked} paths, each counting {weight} times, at the limit of {limit} (the start systems were estimated at {estimate})"
     )]
     PathLimit {
         /// The paths tracked when it stopped.
         tracked: u64,
+        /// The unknowns of the system (the paths' weight).
+        unknowns: usize,
+        /// How many times each counts ([`super::path_weight`] of the unknowns).
+        weight: u64,
+        /// The limit.
+        limit: u64,
         /// The estimate the decomposition started from.
         estimate: u128,
     },
@@ -232,8 +245,10 @@ pub(super) struct Witness {
 /// The irreducible decomposition of `V(system)` (module documentation).
 ///
 /// # Errors
-/// [`DecomposeError`] for a system without equations or unknowns, with a zero equation, or
-/// whose sliced systems the solver refuses (too many paths).
+/// [`DecomposeError`] for a system without equations or unknowns, too large, with a zero
+/// equation, or needing more paths than [`DecomposeSettings::max_paths`] ([`decompose_paths`];
+/// checked before any path is tracked, and again as paths are tracked) or than the solver
+/// takes for one sliced system.
 pub fn decompose(
     system: &System,
     settings: &DecomposeSettings,
@@ -242,13 +257,17 @@ pub fn decompose(
     let estimated_paths = decompose_paths(system);
     let budget = PathBudget::new(system, settings, estimated_paths)?;
     let (n, big_n) = (system.len(), system.nvars());
+    // Each sliced system is a solve of its own, within the solver's ceiling.
+    let weight = super::path_weight(big_n);
+    let ceiling = u128::from(super::MAX_PATHS);
     if let Some((dimension, paths)) =
-        sliced_paths(system).find(|(_, p)| *p > u128::from(super::MAX_PATHS))
+        sliced_paths(system).find(|(_, p)| p.saturating_mul(u128::from(weight)) > ceiling)
     {
         return Err(DecomposeError::Solve {
             dimension,
             source: HomotopyError::TooManyPaths {
                 paths,
+                weight,
                 limit: super::MAX_PATHS,
             },
         });
@@ -404,9 +423,11 @@ fn sliced_paths(system: &System) -> impl Iterator<Item = (usize, u128)> {
 }
 
 /// The paths a decomposition may still track: each tracking is charged before it starts
-/// ([`DecomposeSettings::max_paths`]).
+/// ([`DecomposeSettings::max_paths`]), each path [`super::path_weight`] times.
 pub(super) struct PathBudget {
     limit: u64,
+    unknowns: usize,
+    weight: u64,
     estimate: u128,
     tracked: Cell<u64>,
 }
@@ -421,11 +442,19 @@ impl PathBudget {
     ) -> Result<Self, DecomposeError> {
         check_system(system)?;
         let limit = settings.max_paths.min(MAX_DECOMPOSE_PATHS);
-        if estimate > u128::from(limit) {
-            return Err(DecomposeError::TooManyPaths { estimate, limit });
+        let weight = super::path_weight(system.nvars());
+        if estimate.saturating_mul(u128::from(weight)) > u128::from(limit) {
+            return Err(DecomposeError::TooManyPaths {
+                estimate,
+                unknowns: system.nvars(),
+                weight,
+                limit,
+            });
         }
         Ok(Self {
             limit,
+            unknowns: system.nvars(),
+            weight,
             estimate,
             tracked: Cell::new(0),
         })
@@ -439,9 +468,12 @@ impl PathBudget {
     /// Charges `paths` about to be tracked.
     pub(super) fn spend_u128(&self, paths: u128) -> Result<(), DecomposeError> {
         let tracked = u128::from(self.tracked.get()).saturating_add(paths);
-        if tracked > u128::from(self.limit) {
+        if tracked.saturating_mul(u128::from(self.weight)) > u128::from(self.limit) {
             return Err(DecomposeError::PathLimit {
                 tracked: self.tracked.get(),
+                unknowns: self.unknowns,
+                weight: self.weight,
+                limit: self.limit,
                 estimate: self.estimate,
             });
         }

@@ -61,9 +61,10 @@ use std::fmt::Write as _;
 /// The deepest nesting of an expression: parentheses, signs and powers written one inside
 /// another (`((x))`, `- - x` and `x^1^1` each nest two deep). The reader descends one level
 /// of its grammar per parenthesis and reads signs and chains of `^` in loops, so this bounds
-/// its stack (256 levels take well under a mebibyte, in debug builds too) and the operands it
-/// holds at once; real files nest a handful.
-pub const MAX_NESTING: usize = 256;
+/// its stack and the operands it holds at once. A level of parentheses takes about 2.7 KiB of
+/// stack in the test build (256 levels needed between 640 and 768 KiB), so 128 levels fit in a
+/// quarter of a test thread's 2 MiB; real files nest a handful.
+pub const MAX_NESTING: usize = 128;
 
 /// The most characters of an expression an error message quotes (then `…`).
 const QUOTED_CHARS: usize = 60;
@@ -1596,4 +1597,144 @@ fn function_names(variables: &[String], count: usize) -> Vec<String> {
             name
         })
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn one(body: &str) -> Result<Poly, BertiniError> {
+        parse(&format!(
+            "INPUT\n  variable_group x;\n  function f;\n  f = {body};\nEND;\n"
+        ))
+        .map(|input| input.system.equations()[0].clone())
+    }
+
+    fn x_to(k: u32, c: f64) -> Poly {
+        Poly::variable(1, 0).pow(k) * c
+    }
+
+    /// Powers are right-associative and bind tighter than signs: `x^2^3 = x^(2^3) = x^8`,
+    /// `-x^2 = -(x^2)`, `x^-(-2) = x^2`, `2^2^x`… is not a polynomial (the exponent `2^x`
+    /// is not a constant). Signs are counted: `- - - x = -x`, `+ - + x = -x`.
+    #[test]
+    fn signs_and_powers_read_in_loops_keep_their_meaning() {
+        assert_eq!(one("x^2^3").unwrap(), x_to(8, 1.0));
+        assert_eq!(one("-x^2").unwrap(), x_to(2, -1.0));
+        assert_eq!(one("x^-(-2)").unwrap(), x_to(2, 1.0));
+        assert_eq!(one("(-x)^3").unwrap(), x_to(3, -1.0));
+        assert_eq!(one("- - - x").unwrap(), x_to(1, -1.0));
+        assert_eq!(one("+ - + x").unwrap(), x_to(1, -1.0));
+        assert_eq!(one("2^-1^2*x + x").unwrap_err().line, 4);
+        let e = one("x^2^x").unwrap_err();
+        assert!(e.to_string().contains("the power '^x'"), "{e}");
+        let e = one("x^2^-1").unwrap_err();
+        assert!(e.to_string().contains("the power '^-1'"), "{e}");
+    }
+
+    /// Nesting: 128 levels are read, 129 refused, whether parentheses, signs or `^`; on a
+    /// thread of 512 KiB of stack (a quarter of a test thread's), so the recursion is shallow.
+    #[test]
+    fn nesting_is_bounded_and_takes_little_stack() {
+        let run = || {
+            let parens = |k: usize| format!("{}x{}", "(".repeat(k), ")".repeat(k));
+            assert_eq!(one(&parens(MAX_NESTING)).unwrap(), x_to(1, 1.0));
+            let deep = one(&parens(MAX_NESTING + 1)).unwrap_err();
+            assert!(
+                matches!(deep.kind, BertiniErrorKind::Nesting { .. }),
+                "{deep}"
+            );
+            let signs = format!("{}x", "- ".repeat(MAX_NESTING));
+            assert_eq!(
+                one(&signs).unwrap(),
+                x_to(1, 1.0),
+                "an even number of signs"
+            );
+            assert!(one(&format!("- {signs}")).is_err());
+            let chain = format!("x{}", "^1".repeat(MAX_NESTING));
+            assert_eq!(one(&chain).unwrap(), x_to(1, 1.0));
+            assert!(one(&format!("{chain}^1")).is_err());
+            // Mixed: each parenthesis and each sign one level.
+            let mixed = format!(
+                "{}x{}",
+                "-(".repeat(MAX_NESTING / 2),
+                ")".repeat(MAX_NESTING / 2)
+            );
+            assert_eq!(one(&mixed).unwrap(), x_to(1, 1.0));
+        };
+        std::thread::Builder::new()
+            .stack_size(512 << 10)
+            .spawn(run)
+            .unwrap()
+            .join()
+            .unwrap();
+    }
+
+    /// An error quotes at most 60 characters of the expression, then `…`: twenty factors
+    /// `x^65535` pass the degree limit 2²⁰ at the seventeenth (17 · 65535 = 1114095), where
+    /// the product written so far is 135 characters long.
+    #[test]
+    fn errors_quote_a_short_excerpt() {
+        let body = vec!["x^65535"; 20].join("*");
+        let e = one(&body).unwrap_err().to_string();
+        assert!(e.contains("1114095"), "{e}");
+        assert!(e.contains('…'), "{e}");
+        assert!(
+            e.chars().count() < 200,
+            "{} characters: {e}",
+            e.chars().count()
+        );
+    }
+
+    /// Copies of a subfunction are charged: 2 000 copies of a subfunction of 2 000 terms (four
+    /// million term operations in one variable) exceed the 3 947 580 a file may take, and
+    /// the refusal names the copy that would exceed it.
+    #[test]
+    fn copies_of_subfunctions_are_charged() {
+        let s: Vec<String> = (0..2000).map(|k| format!("x^{k}")).collect();
+        let copies = vec!["s"; 2000].join("+");
+        let text = format!(
+            "INPUT\n  variable_group x;\n  function f;\n  s = {};\n  f = {copies};\nEND;\n",
+            s.join("+")
+        );
+        let e = parse(&text).unwrap_err();
+        assert!(
+            matches!(
+                e.kind,
+                BertiniErrorKind::Work {
+                    nvars: 1,
+                    total: 3_947_580,
+                    ..
+                }
+            ),
+            "{e}"
+        );
+        assert_eq!(ExpansionBudget::total_terms(1), (1 << 26) / 17);
+    }
+
+    /// The program of a parsed system is refused beyond its size limit before it is built:
+    /// `Σ (s + 1)(s + 2)` over the terms. A term in 600 variables (their product) counts
+    /// 601 · 602 = 361 802; twelve such equations exceed 2²² = 4 194 304.
+    #[test]
+    fn the_program_size_is_bounded_before_compiling() {
+        let names: Vec<String> = (0..600).map(|i| format!("x{i}")).collect();
+        let product = names.join("*");
+        let functions: Vec<String> = (0..12).map(|i| format!("f{i}")).collect();
+        let mut text = format!(
+            "INPUT\n  variable_group {};\n  function {};\n  p = {product};\n",
+            names.join(", "),
+            functions.join(", ")
+        );
+        for f in &functions {
+            let _ = writeln!(text, "  {f} = p;");
+        }
+        text.push_str("END;\n");
+        let input = parse(&text).unwrap();
+        assert_eq!(input.system.program_size(), 12 * 601 * 602);
+        let e = parse_program(&text).unwrap_err();
+        assert!(
+            matches!(e.kind, BertiniErrorKind::ProgramSize { .. }),
+            "{e}"
+        );
+    }
 }

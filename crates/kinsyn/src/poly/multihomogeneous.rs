@@ -11,7 +11,7 @@
 //! per variable the number is a permanent, hard to compute). So the states are bounded:
 //! [`MAX_GROUP_STATES`], and beyond it the count is not attempted.
 
-/// The most states ([`Assignments`]) the count and the enumeration walk: 2¹⁶ admits sixteen
+/// The most states (module documentation) the count and the enumeration walk: 2¹⁶ admits sixteen
 /// groups of one variable, or two of 255. The walk costs at most
 /// `equations × groups × 2¹⁶` steps (a few milliseconds) and `equations × 2¹⁶` bytes.
 pub const MAX_GROUP_STATES: u64 = 1 << 16;
