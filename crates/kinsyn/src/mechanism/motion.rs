@@ -102,6 +102,26 @@ pub struct SampledMotion {
     pub closures: usize,
 }
 
+/// The closure equations over the free joints at the start of the walks
+/// ([`Mechanism::free_closure`]) and the basis of the rates that keep them
+/// ([`super::mobility::rate_basis`]): every walk's first step is drawn from them, and their
+/// dimension is the start's degrees of freedom, so they are found once per sampled motion.
+struct StartClosure {
+    /// The dimensionless closure Jacobian over the free joints.
+    equations: DMatrix<f64>,
+    /// An orthonormal basis of its null space.
+    rates: DMatrix<f64>,
+}
+
+impl StartClosure {
+    /// The closure equations of `mechanism` at `start` over the `free` joints.
+    fn new(mechanism: &Mechanism, start: &[f64], free: &[usize]) -> Self {
+        let equations = mechanism.free_closure(&mechanism.joint_screws(start), free);
+        let rates = super::mobility::rate_basis(&equations);
+        StartClosure { equations, rates }
+    }
+}
+
 impl Mechanism {
     /// The distance between two displacements of a body: the size of the screw that carries
     /// one to the other, in the dimensionless form (radians; translation of the centre over the
@@ -113,11 +133,12 @@ impl Mechanism {
         d.norm()
     }
 
-    /// One random walk of `settings.steps` Newton-corrected steps from the assembled `start`;
-    /// every loop closure tried is counted in `closures`.
+    /// One random walk of `settings.steps` Newton-corrected steps from the assembled `start`,
+    /// whose closure equations are `at_start`; every loop closure tried is counted in
+    /// `closures`.
     fn walk(
         &self,
-        start: &[f64],
+        (start, at_start): (&[f64], &StartClosure),
         locked: &[bool],
         free: &[usize],
         settings: &SampleSettings,
@@ -125,8 +146,13 @@ impl Mechanism {
         closures: &mut usize,
     ) -> Result<Vec<f64>, MechanismError> {
         let mut q = start.to_vec();
-        for _ in 0..settings.steps {
-            let Some(mut direction) = self.random_rates(&q, free, rng) else {
+        for step in 0..settings.steps {
+            let direction = if step == 0 {
+                Self::random_rates(&at_start.equations, Some(&at_start.rates), rng)
+            } else {
+                Self::random_rates(&self.free_closure(&self.joint_screws(&q), free), None, rng)
+            };
+            let Some(mut direction) = direction else {
                 break;
             };
             let norm = direction.norm();
@@ -157,39 +183,40 @@ impl Mechanism {
         Ok(q)
     }
 
-    /// The degrees of freedom of the mechanism at `q` with only the `free` joints moving: the
-    /// dimension of the rates that keep the loops closed ([`super::mobility::rate_basis`]).
-    fn closure_dof(&self, q: &[f64], free: &[usize]) -> usize {
-        super::mobility::rate_basis(&self.free_closure(&self.joint_screws(q), free)).ncols()
-    }
-
-    /// A random direction of the dimensionless rates of the `free` joints that keep every loop
-    /// closed at `q`, isotropic in that space; `None` when there is none (no degree of
+    /// A random direction of the dimensionless rates of the free joints that keep every loop
+    /// closed, isotropic in that space, from the closure equations over them `cf`
+    /// ([`Mechanism::free_closure`]) and, when known, the basis of those rates `rates`
+    /// ([`super::mobility::rate_basis`] of `cf`); `None` when there is none (no degree of
     /// freedom). The projection of a normal draw on the null space of the closure equations
     /// when their independence is certified ([`linalg::null_direction`]), otherwise normal
-    /// coefficients of the SVD's basis of it: either way an isotropic normal direction.
+    /// coefficients of the basis: either way an isotropic normal direction.
     fn random_rates(
-        &self,
-        q: &[f64],
-        free: &[usize],
+        cf: &DMatrix<f64>,
+        rates: Option<&DMatrix<f64>>,
         rng: &mut ChaCha8Rng,
     ) -> Option<DVector<f64>> {
-        let cf = self.free_closure(&self.joint_screws(q), free);
         if cf.nrows() > 0
-            && cf.nrows() < free.len()
-            && let Some(direction) = linalg::null_direction(&cf, MOBILITY_TOLERANCE, |_, _| {
+            && cf.nrows() < cf.ncols()
+            && let Some(direction) = linalg::null_direction(cf, MOBILITY_TOLERANCE, |_, _| {
                 rng.sample::<f64, _>(StandardNormal)
             })
         {
             return Some(direction);
         }
-        let rates = super::mobility::rate_basis(&cf);
+        let computed;
+        let rates = match rates {
+            Some(r) => r,
+            None => {
+                computed = super::mobility::rate_basis(cf);
+                &computed
+            }
+        };
         if rates.ncols() == 0 {
             return None;
         }
         let coefficients =
             DVector::from_fn(rates.ncols(), |_, _| rng.sample::<f64, _>(StandardNormal));
-        Some(&rates * coefficients)
+        Some(rates * coefficients)
     }
 
     /// Samples the finite motion of `body` from the assembled configuration `start` with the
@@ -233,7 +260,8 @@ impl Mechanism {
         let start = self.assemble(start, locked, None)?;
         let mut closures = 1;
         let free = self.free(locked);
-        let start_dof = self.closure_dof(&start, &free);
+        let at_start = StartClosure::new(self, &start, &free);
+        let start_dof = at_start.rates.ncols();
         if start_dof == 0 {
             return Ok(Self::rigid_motion(&start, settings, observe, |a, b| {
                 self.pose_distance(a, b)
@@ -245,7 +273,14 @@ impl Mechanism {
         for _ in 0..settings.samples.max(1) {
             let mut best: Option<(f64, MotionSample)> = None;
             for _ in 0..WALK_ATTEMPTS {
-                let q = self.walk(&start, locked, &free, settings, &mut rng, &mut closures)?;
+                let q = self.walk(
+                    (&start, &at_start),
+                    locked,
+                    &free,
+                    settings,
+                    &mut rng,
+                    &mut closures,
+                )?;
                 let (pose, twists, rank, freedom) = observe(&q);
                 let nearest = samples
                     .iter()
