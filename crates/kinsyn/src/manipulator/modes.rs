@@ -336,10 +336,12 @@ impl Manipulator {
     ///
     /// # Complexity
     /// Exponential in the number of inputs n: 2^n lock subsets, each one sampled motion (three
-    /// random walks of three Newton-corrected loop closures by default), about 0.25 ms of CPU
-    /// per subset for the 3-UPS (64 subsets) and 0.7 ms for the 6-UPS (`docs/limits.md`). Hence
-    /// the refusal above [`MAX_INPUTS`] (2^16 subsets); [`Manipulator::modes_from`] with
-    /// [`Manipulator::lock_subsets`] samples only the subsets of at most k locks.
+    /// random walks of three Newton-corrected loop closures by default): about 0.3 ms of CPU per
+    /// subset for the 3-UPS (64 subsets) and 1 ms for the 6-UPS, one closure where the locks
+    /// leave the start rigid, and far more at singular starts ([`Manipulator::modes_cost`]
+    /// counts them before sampling; `docs/limits.md`). Hence the refusal above [`MAX_INPUTS`]
+    /// (2^16 subsets); [`Manipulator::modes_from`] with [`Manipulator::lock_subsets`] samples
+    /// only the subsets of at most k locks.
     ///
     /// # Errors
     /// More than [`MAX_INPUTS`] inputs.
