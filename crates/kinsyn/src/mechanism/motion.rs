@@ -204,12 +204,11 @@ impl Mechanism {
             return Some(direction);
         }
         let computed;
-        let rates = match rates {
-            Some(r) => r,
-            None => {
-                computed = super::mobility::rate_basis(cf);
-                &computed
-            }
+        let rates = if let Some(r) = rates {
+            r
+        } else {
+            computed = super::mobility::rate_basis(cf);
+            &computed
         };
         if rates.ncols() == 0 {
             return None;
@@ -310,10 +309,10 @@ impl Mechanism {
         }
         let motion_dof = samples.iter().map(|s| s.freedom).min().unwrap_or(0);
         Ok(SampledMotion {
-            start_dof,
-            motion_dof,
             samples,
             min_separation,
+            start_dof,
+            motion_dof,
             closures,
         })
     }
