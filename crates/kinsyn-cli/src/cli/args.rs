@@ -77,10 +77,14 @@ pub(super) enum Command {
     /// labelled by kind, leg and joint: P1.3 is leg 1's third joint.
     ///
     /// The work is exponential in the number of inputs n: all the lock subsets are 2^n sampled
-    /// motions (64 for 6 inputs, 4096 for 12, 65536 for 16). One subset costs about 0.25 ms of
-    /// CPU (3-UPS) to 0.7 ms (6-UPS) with the default 3 samples, in proportion to --samples; the
-    /// subsets share the cores. --max-locks N samples Σ_{k≤N} C(n,k) subsets, --lock one;
-    /// more than --max-subsets are refused.
+    /// motions (64 for 6 inputs, 4096 for 12, 65536 for 16). A motion is one loop closure where
+    /// the locks leave the start rigid, 1 + 3 × --samples (10 by default) from a regular start,
+    /// and up to 1 + 240 × --samples closures of up to 100 Newton steps each from a start where
+    /// the locked mechanism is singular. By default a subset takes about 0.3 ms of CPU for the
+    /// 3-UPS, 1 ms for the 6-UPS and 25 ms for the 51-joint HEXA, a singular start from a few
+    /// ms to seconds (the 4096 subsets of a 12-input 6-UPS take 4 s, the 12616 of an 18-input one
+    /// with up to five locks 87 s); the subsets share the cores. --max-locks N samples
+    /// Σ_{k≤N} C(n,k) subsets, --lock one; more than --max-subsets are refused.
     #[command(
         after_help = "Examples:\n  kinsyn modes mechanisms/3-ups.json\n  kinsyn modes mechanisms/3-ups.json --lock R1.1,R2.1,R3.1\n  kinsyn modes mechanisms/6-ups.json --max-locks 2 --pose 0.05,0,1.1,0,5,10\n  kinsyn modes mechanisms/6-ups.json --json > modes.json"
     )]
@@ -113,8 +117,10 @@ pub(super) enum Command {
         /// join to the ground: the sub-mechanism, e.g. one limb, whose bond --body shows.
         #[arg(long, value_name = "LIST")]
         legs: Option<String>,
-        /// Refuse more lock subsets than this (each is a sampled motion of about 0.2–1 ms of CPU;
-        /// 4096 take about 16–20 s on a 6-UPS).
+        /// Refuse more lock subsets than this (each a sampled motion: 10 loop closures by default
+        /// from a regular start, about 0.3–1 ms of CPU for three or six UPS legs; one where the
+        /// locks leave the start rigid; up to seconds from a singular start; 4096 take about 4 s
+        /// on a 12-input 6-UPS).
         #[arg(long, value_name = "COUNT", default_value_t = super::manipulator::DEFAULT_MAX_SUBSETS,
               value_parser = clap::value_parser!(u32).range(1..=i64::from(super::manipulator::MAX_SUBSETS_CEILING)))]
         max_subsets: u32,

@@ -22,6 +22,7 @@ mod jacobian;
 pub mod leg;
 pub mod lookup;
 mod modes;
+mod modes_cost;
 mod operation_mode;
 mod polynomial;
 mod poses;
@@ -36,6 +37,7 @@ pub use jacobian::{Jacobians, RowKind, WrenchRow};
 pub use leg::{LegCheck, LegWarning, LegWarningKind};
 pub use lookup::{CatalogueChain, ChainLookup, CommittedChains};
 pub use modes::{MAX_INPUTS, Mode, Modes, PatternModes};
+pub use modes_cost::ModesCost;
 pub use operation_mode::{
     DecompositionMethod, LocalMotion, ModeComponent, OperationModeError, OperationModeSettings,
     OperationModes,

@@ -9,9 +9,10 @@
 //!
 //! The work is exponential in the number of inputs n: all subsets are 2^n, those of at most k
 //! locks Σ_{j≤k} C(n, j) ([`Manipulator::lock_subset_count`]). Each subset is one sampled motion
-//! (three random walks of three Newton-corrected steps by default), so callers choose the subsets
-//! ([`Manipulator::lock_subsets`]) and are told of each one finished (the `progress` callback of
-//! [`Manipulator::modes_from`]).
+//! (three random walks of three Newton-corrected steps by default: ten loop closures, one when
+//! the locks leave the start rigid; [`Manipulator::modes_cost`] counts them before sampling),
+//! so callers choose the subsets ([`Manipulator::lock_subsets`]) and are told of each one
+//! finished (the `progress` callback of [`Manipulator::modes_from`]).
 
 use super::Manipulator;
 use crate::mechanism::{SampleSettings, rotation_log};
@@ -49,6 +50,11 @@ pub struct Mode {
     /// Why the motion could not be sampled, if it could not.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub error: Option<String>,
+    /// The loop closures the sampling ran ([`crate::mechanism::SampledMotion::closures`]: the
+    /// unit of [`crate::manipulator::ModesCost`]), `None` when the motion could not be sampled.
+    /// Not written in JSON: the work, not the answer.
+    #[serde(skip)]
+    pub closures: Option<usize>,
 }
 
 impl Mode {
@@ -175,11 +181,11 @@ impl Manipulator {
     pub fn mode_from(&self, start: &[f64], locked: &[usize], settings: &SampleSettings) -> Mode {
         let mask = self.lock_mask(locked);
         let lock_text = self.lock_text(locked);
-        let pattern = match self.relative_to {
+        let motion = match self.relative_to {
             None => self
                 .mechanism
-                .motion_pattern(self.platform, start, &mask, settings),
-            Some(base) => self.mechanism.relative_motion_pattern(
+                .sample_motion(self.platform, start, &mask, settings),
+            Some(base) => self.mechanism.sample_relative_motion(
                 self.platform,
                 self.bodies[base].body,
                 start,
@@ -187,20 +193,24 @@ impl Manipulator {
                 settings,
             ),
         };
-        match pattern {
-            Ok(c) => Mode {
-                locked: locked.to_vec(),
-                lock_text,
-                dof: c.dof,
-                pattern: Some(c.pattern.name()),
-                group: c.pattern.is_group(),
-                parameters: match &c.pattern {
-                    Pattern::Group(g) => self.parameters(g),
-                    Pattern::NonGroup { .. } => None,
-                },
-                classification: Some(c),
-                error: None,
-            },
+        match motion {
+            Ok(motion) => {
+                let c = self.mechanism.classify_motion(&motion);
+                Mode {
+                    locked: locked.to_vec(),
+                    lock_text,
+                    dof: c.dof,
+                    pattern: Some(c.pattern.name()),
+                    group: c.pattern.is_group(),
+                    parameters: match &c.pattern {
+                        Pattern::Group(g) => self.parameters(g),
+                        Pattern::NonGroup { .. } => None,
+                    },
+                    classification: Some(c),
+                    error: None,
+                    closures: Some(motion.closures),
+                }
+            }
             Err(e) => Mode {
                 locked: locked.to_vec(),
                 lock_text,
@@ -210,6 +220,7 @@ impl Manipulator {
                 parameters: None,
                 classification: None,
                 error: Some(e.to_string()),
+                closures: None,
             },
         }
     }
@@ -325,10 +336,12 @@ impl Manipulator {
     ///
     /// # Complexity
     /// Exponential in the number of inputs n: 2^n lock subsets, each one sampled motion (three
-    /// random walks of three Newton-corrected loop closures by default), about 0.25 ms of CPU
-    /// per subset for the 3-UPS (64 subsets) and 0.7 ms for the 6-UPS (`docs/limits.md`). Hence
-    /// the refusal above [`MAX_INPUTS`] (2^16 subsets); [`Manipulator::modes_from`] with
-    /// [`Manipulator::lock_subsets`] samples only the subsets of at most k locks.
+    /// random walks of three Newton-corrected loop closures by default): about 0.3 ms of CPU per
+    /// subset for the 3-UPS (64 subsets) and 1 ms for the 6-UPS, one closure where the locks
+    /// leave the start rigid, and far more at singular starts ([`Manipulator::modes_cost`]
+    /// counts them before sampling; `docs/limits.md`). Hence the refusal above [`MAX_INPUTS`]
+    /// (2^16 subsets); [`Manipulator::modes_from`] with [`Manipulator::lock_subsets`] samples
+    /// only the subsets of at most k locks.
     ///
     /// # Errors
     /// More than [`MAX_INPUTS`] inputs.

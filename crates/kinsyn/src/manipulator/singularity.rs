@@ -248,8 +248,8 @@ pub struct Analysis {
 
 /// The number of random assemblies that decide the generic ranks, and their spread (radians;
 /// prismatic values over the length scale).
-const GENERIC_ASSEMBLIES: usize = 4;
-const GENERIC_SPREAD: f64 = 0.3;
+pub(super) const GENERIC_ASSEMBLIES: usize = 4;
+pub(super) const GENERIC_SPREAD: f64 = 0.3;
 
 impl Manipulator {
     /// Jacobians, mobility and singularities at the assembled configuration `q` with the

@@ -60,7 +60,9 @@ mod relative;
 pub use assembly::{ASSEMBLY_STEPS, ASSEMBLY_TOLERANCE, AssemblySettings, Coordinate, Goal};
 pub use joint::JointSpec;
 pub use mobility::{ImageRanks, Mobility};
-pub use motion::{MotionSample, RANDOM_ASSEMBLY_STEPS, SampleSettings};
+pub use motion::{
+    MotionSample, RANDOM_ASSEMBLY_STEPS, STEP_TRIES, SampleSettings, SampledMotion, WALK_ATTEMPTS,
+};
 
 use crate::notation::Primitive;
 use crate::screw;

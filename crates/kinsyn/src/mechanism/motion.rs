@@ -58,7 +58,10 @@ pub const RANDOM_ASSEMBLY_STEPS: usize = 8;
 
 /// Walks tried per sample before a sample too close to the others is accepted (and the group
 /// claim refused).
-const WALK_ATTEMPTS: usize = 16;
+pub const WALK_ATTEMPTS: usize = 16;
+
+/// Loop closures tried per step of a walk: the step, then halved until the loops close again.
+pub const STEP_TRIES: usize = 5;
 
 /// One sampled configuration and the body's twist space there.
 #[derive(Debug, Clone)]
@@ -91,6 +94,32 @@ pub struct SampledMotion {
     /// degrees of freedom; a sample with fewer lies on a branch of which the start is not a
     /// regular point.
     pub motion_dof: usize,
+    /// The loop closures (Newton-corrected assemblies) the sampling ran: the start's, then one
+    /// per step tried on the walks (a halved step is another). The unit of its cost: at a
+    /// regular start `1 + samples × steps`, at most `1 + samples × WALK_ATTEMPTS × steps ×
+    /// STEP_TRIES` ([`crate::manipulator::ModesCost`]); one when the start has no degree of
+    /// freedom, since then no walk can take a step.
+    pub closures: usize,
+}
+
+/// The closure equations over the free joints at the start of the walks
+/// ([`Mechanism::free_closure`]) and the basis of the rates that keep them
+/// ([`super::mobility::rate_basis`]): every walk's first step is drawn from them, and their
+/// dimension is the start's degrees of freedom, so they are found once per sampled motion.
+struct StartClosure {
+    /// The dimensionless closure Jacobian over the free joints.
+    equations: DMatrix<f64>,
+    /// An orthonormal basis of its null space.
+    rates: DMatrix<f64>,
+}
+
+impl StartClosure {
+    /// The closure equations of `mechanism` at `start` over the `free` joints.
+    fn new(mechanism: &Mechanism, start: &[f64], free: &[usize]) -> Self {
+        let equations = mechanism.free_closure(&mechanism.joint_screws(start), free);
+        let rates = super::mobility::rate_basis(&equations);
+        StartClosure { equations, rates }
+    }
 }
 
 impl Mechanism {
@@ -104,18 +133,26 @@ impl Mechanism {
         d.norm()
     }
 
-    /// One random walk of `settings.steps` Newton-corrected steps from the assembled `start`.
+    /// One random walk of `settings.steps` Newton-corrected steps from the assembled `start`,
+    /// whose closure equations are `at_start`; every loop closure tried is counted in
+    /// `closures`.
     fn walk(
         &self,
-        start: &[f64],
+        (start, at_start): (&[f64], &StartClosure),
         locked: &[bool],
         free: &[usize],
         settings: &SampleSettings,
         rng: &mut ChaCha8Rng,
+        closures: &mut usize,
     ) -> Result<Vec<f64>, MechanismError> {
         let mut q = start.to_vec();
-        for _ in 0..settings.steps {
-            let Some(mut direction) = self.random_rates(&q, free, rng) else {
+        for step in 0..settings.steps {
+            let direction = if step == 0 {
+                Self::random_rates(&at_start.equations, Some(&at_start.rates), rng)
+            } else {
+                Self::random_rates(&self.free_closure(&self.joint_screws(&q), free), None, rng)
+            };
+            let Some(mut direction) = direction else {
                 break;
             };
             let norm = direction.norm();
@@ -124,16 +161,17 @@ impl Mechanism {
             }
             direction /= norm;
             let mut h = settings.step * rng.random_range(0.5..1.5);
-            // The step, halved until the loops close again (five tries).
+            // The step, halved until the loops close again (`STEP_TRIES` tries).
             let mut attempt = Err(MechanismError::NotAssembled {
                 residual: f64::NAN,
                 iterations: 0,
             });
-            for _ in 0..5 {
+            for _ in 0..STEP_TRIES {
                 let mut trial = q.clone();
                 for (k, &j) in free.iter().enumerate() {
                     trial[j] += h * direction[k] * self.unit(j);
                 }
+                *closures += 1;
                 attempt = self.assemble(&trial, locked, None);
                 if attempt.is_ok() {
                     break;
@@ -145,45 +183,49 @@ impl Mechanism {
         Ok(q)
     }
 
-    /// The degrees of freedom of the mechanism at `q` with only the `free` joints moving: the
-    /// dimension of the rates that keep the loops closed ([`super::mobility::rate_basis`]).
-    fn closure_dof(&self, q: &[f64], free: &[usize]) -> usize {
-        super::mobility::rate_basis(&self.free_closure(&self.joint_screws(q), free)).ncols()
-    }
-
-    /// A random direction of the dimensionless rates of the `free` joints that keep every loop
-    /// closed at `q`, isotropic in that space; `None` when there is none (no degree of
+    /// A random direction of the dimensionless rates of the free joints that keep every loop
+    /// closed, isotropic in that space, from the closure equations over them `cf`
+    /// ([`Mechanism::free_closure`]) and, when known, the basis of those rates `rates`
+    /// ([`super::mobility::rate_basis`] of `cf`); `None` when there is none (no degree of
     /// freedom). The projection of a normal draw on the null space of the closure equations
     /// when their independence is certified ([`linalg::null_direction`]), otherwise normal
-    /// coefficients of the SVD's basis of it: either way an isotropic normal direction.
+    /// coefficients of the basis: either way an isotropic normal direction.
     fn random_rates(
-        &self,
-        q: &[f64],
-        free: &[usize],
+        cf: &DMatrix<f64>,
+        rates: Option<&DMatrix<f64>>,
         rng: &mut ChaCha8Rng,
     ) -> Option<DVector<f64>> {
-        let cf = self.free_closure(&self.joint_screws(q), free);
         if cf.nrows() > 0
-            && cf.nrows() < free.len()
-            && let Some(direction) = linalg::null_direction(&cf, MOBILITY_TOLERANCE, |_, _| {
+            && cf.nrows() < cf.ncols()
+            && let Some(direction) = linalg::null_direction(cf, MOBILITY_TOLERANCE, |_, _| {
                 rng.sample::<f64, _>(StandardNormal)
             })
         {
             return Some(direction);
         }
-        let rates = super::mobility::rate_basis(&cf);
+        let computed;
+        let rates = if let Some(r) = rates {
+            r
+        } else {
+            computed = super::mobility::rate_basis(cf);
+            &computed
+        };
         if rates.ncols() == 0 {
             return None;
         }
         let coefficients =
             DVector::from_fn(rates.ncols(), |_, _| rng.sample::<f64, _>(StandardNormal));
-        Some(&rates * coefficients)
+        Some(rates * coefficients)
     }
 
     /// Samples the finite motion of `body` from the assembled configuration `start` with the
-    /// `locked` joints held: `settings.samples` random walks, each walked again (up to 16 times)
-    /// while its body pose ends closer than [`MIN_SEPARATION`] to an earlier sample's and the
-    /// body can move there.
+    /// `locked` joints held: `settings.samples` random walks, each walked again (up to
+    /// [`WALK_ATTEMPTS`] times in all) while its body pose ends closer than [`MIN_SEPARATION`]
+    /// to an earlier sample's and the body can move there.
+    ///
+    /// When the start has no degree of freedom (no joint rate keeps the loops closed), no walk
+    /// can take a step: every sample is the start, observed once, and the walks are not taken
+    /// (the samples and their separations are those the walks would give).
     ///
     /// # Errors
     /// When Newton's method cannot close the loops even after halving a step four times (the
@@ -215,14 +257,29 @@ impl Mechanism {
         observe: impl Fn(&[f64]) -> (Displacement, DMatrix<f64>, crate::linalg::Rank, usize),
     ) -> Result<SampledMotion, MechanismError> {
         let start = self.assemble(start, locked, None)?;
-        let mut rng = ChaCha8Rng::seed_from_u64(settings.seed);
+        let mut closures = 1;
         let free = self.free(locked);
+        let at_start = StartClosure::new(self, &start, &free);
+        let start_dof = at_start.rates.ncols();
+        if start_dof == 0 {
+            return Ok(Self::rigid_motion(&start, settings, observe, |a, b| {
+                self.pose_distance(a, b)
+            }));
+        }
+        let mut rng = ChaCha8Rng::seed_from_u64(settings.seed);
         let mut samples: Vec<MotionSample> = Vec::with_capacity(settings.samples);
         let mut min_separation = f64::INFINITY;
         for _ in 0..settings.samples.max(1) {
             let mut best: Option<(f64, MotionSample)> = None;
             for _ in 0..WALK_ATTEMPTS {
-                let q = self.walk(&start, locked, &free, settings, &mut rng)?;
+                let q = self.walk(
+                    (&start, &at_start),
+                    locked,
+                    &free,
+                    settings,
+                    &mut rng,
+                    &mut closures,
+                )?;
                 let (pose, twists, rank, freedom) = observe(&q);
                 let nearest = samples
                     .iter()
@@ -252,11 +309,47 @@ impl Mechanism {
         }
         let motion_dof = samples.iter().map(|s| s.freedom).min().unwrap_or(0);
         Ok(SampledMotion {
-            start_dof: self.closure_dof(&start, &free),
-            motion_dof,
             samples,
             min_separation,
+            start_dof,
+            motion_dof,
+            closures,
         })
+    }
+
+    /// The sampled motion from an assembled `start` with no degree of freedom: every walk of
+    /// [`Mechanism::sample_observed`] stops before its first step (no compatible rate) and ends
+    /// at the start, so every sample is what `observe` sees there, the first with no earlier
+    /// sample to be near, the others at the distance `distance` finds between that pose and
+    /// itself (a walk again would end at the same place: the first kept). One loop closure,
+    /// the start's.
+    fn rigid_motion(
+        start: &[f64],
+        settings: &SampleSettings,
+        observe: impl Fn(&[f64]) -> (Displacement, DMatrix<f64>, crate::linalg::Rank, usize),
+        distance: impl Fn(&Displacement, &Displacement) -> f64,
+    ) -> SampledMotion {
+        let (pose, twists, rank, freedom) = observe(start);
+        let count = settings.samples.max(1);
+        let min_separation = if count > 1 {
+            distance(&pose, &pose)
+        } else {
+            f64::INFINITY
+        };
+        let sample = MotionSample {
+            q: start.to_vec(),
+            pose,
+            twists,
+            rank,
+            freedom,
+        };
+        SampledMotion {
+            samples: vec![sample; count],
+            min_separation,
+            start_dof: 0,
+            motion_dof: freedom,
+            closures: 1,
+        }
     }
 
     /// Assemblies of the mechanism scattered around `start`: the free joints moved by
@@ -321,7 +414,8 @@ impl Mechanism {
 
     /// The pattern of a sampled motion ([`crate::motion::classify`]), the group's point and
     /// pitch in the mechanism's length unit, the point of an axis the one nearest the origin.
-    pub(super) fn classify_motion(&self, motion: &SampledMotion) -> Classification {
+    #[must_use]
+    pub fn classify_motion(&self, motion: &SampledMotion) -> Classification {
         let spans: Vec<DMatrix<f64>> = motion.samples.iter().map(|s| s.twists.clone()).collect();
         // The rank decisions were made on the body's twists, not on these orthonormal bases.
         let mut c = motion::classify_quick(

@@ -4,8 +4,8 @@
 use super::analyze::configuration_at_pose;
 use super::{body_names, clean, leg_warnings, load_with_body, warn};
 use crate::cli::{CliError, json};
-use kinsyn::manipulator::{Manipulator, Mode, Modes, PatternModes};
-use kinsyn::mechanism::SampleSettings;
+use kinsyn::manipulator::{Manipulator, Mode, Modes, ModesCost, PatternModes};
+use kinsyn::mechanism::{ASSEMBLY_STEPS, SampleSettings};
 use kinsyn::motion::MIN_SEPARATION;
 use std::fmt::Write as _;
 use std::path::Path;
@@ -21,18 +21,20 @@ pub enum Selection {
     Lock(String),
 }
 
-/// The default of `modes --max-subsets`: 4096 sampled motions, about 16–20 s of CPU for legs
-/// like the 6-UPS's (4–5 ms per subset measured, docs/limits-modes.md), and every subset of up
-/// to 12 inputs.
+/// The default of `modes --max-subsets`: 4096 sampled motions, every subset of up to 12 inputs.
+/// A motion is ten loop closures from a regular start, one where the locks leave it rigid, and
+/// more, each dearer, from a singular one ([`ModesCost`]): the 4096 of a 12-input 6-UPS, a
+/// quarter of them singular, take about 4 s of CPU (docs/limits.md, "Measured cost").
 pub const DEFAULT_MAX_SUBSETS: u32 = 4096;
 
-/// The largest `--max-subsets`: 2^16, every subset of 16 inputs (the old limit of 16 inputs),
-/// about 4–6 minutes of CPU at 4–5 ms per subset.
+/// The largest `--max-subsets`: 2^16, every subset of 16 inputs (the old limit of 16 inputs):
+/// about a minute of CPU at the 1 ms of a regular subset of six UPS legs, several times that
+/// when many starts are singular (docs/limits.md, "Measured cost").
 pub const MAX_SUBSETS_CEILING: u32 = 1 << 16;
 
-/// The most samples per motion (`--samples`): 64 walks, about 20 times the default cost of a
-/// subset, far more evidence than a group claim needs (two samples 1e-3 apart,
-/// docs/verification.md).
+/// The most samples per motion (`--samples`): 64 walks, 193 loop closures a motion instead of
+/// the default 10 ([`ModesCost::closures_per_motion`]), far more evidence than a group claim
+/// needs (two samples 1e-3 apart, docs/verification.md).
 pub const MAX_SAMPLES: u16 = 64;
 
 /// The lock sets printed per pattern in text; `--json` lists them all.
@@ -52,12 +54,14 @@ fn start_configuration(m: &Manipulator, pose: Option<&str>) -> Result<Vec<f64>, 
 }
 
 /// The lock subsets a selection asks for, refused when they are more than `max_subsets`
-/// (each is one sampled motion; the refusal says how to ask for fewer).
+/// (each is one sampled motion, whose loop closures with `settings` the refusal states; it says
+/// how to ask for fewer).
 fn selected_subsets(
     source: &str,
     m: &Manipulator,
     selection: &Selection,
     max_subsets: u32,
+    settings: &SampleSettings,
 ) -> Result<Vec<Vec<usize>>, CliError> {
     let n = m.actuators().len();
     let max_locks = match selection {
@@ -85,8 +89,12 @@ fn selected_subsets(
         .last()
         .unwrap_or(0);
     Err(CliError::Input(format!(
-        "{}: {n} inputs give {count} lock subsets {scope}, more than --max-subsets {max_subsets} (each is a sampled motion of about 0.2–1 ms of CPU, docs/limits.md); use --max-locks {fits} ({} subsets) or --lock SET, or raise --max-subsets (at most {MAX_SUBSETS_CEILING})",
+        "{}: {n} inputs give {count} lock subsets {scope}, more than --max-subsets {max_subsets} (each a sampled motion: 1 loop closure where the locks leave the start rigid, {} from a regular start (1 + {} samples × {} steps), up to {} of up to {ASSEMBLY_STEPS} Newton steps each from a singular one; their CPU in docs/limits.md); use --max-locks {fits} ({} subsets) or --lock SET, or raise --max-subsets (at most {MAX_SUBSETS_CEILING})",
         source,
+        ModesCost::closures_per_motion(settings),
+        settings.samples,
+        settings.steps,
+        ModesCost::most_closures_per_motion(settings),
         m.lock_subset_count(fits)
     )))
 }
@@ -144,7 +152,7 @@ pub fn sample_modes(
     max_subsets: u32,
     settings: &SampleSettings,
 ) -> Result<Modes, CliError> {
-    let subsets = selected_subsets(source, m, selection, max_subsets)?;
+    let subsets = selected_subsets(source, m, selection, max_subsets, settings)?;
     let start = start_configuration(m, pose)?;
     Ok(if subsets.len() > 1 {
         let bar = crate::cli::terminal::progress(subsets.len(), "lock subsets", "modes");
