@@ -216,7 +216,7 @@ impl Ruu {
             let f0 = s.lines_coplanar(&zero, &z, &ci, &z);
             let mut g = &w1 * &f0;
             for k in 0..3 {
-                g += &wb[k] * &(s.lines_coplanar(&basis[k], &z, &ci, &z) - f0.clone());
+                g = g + &wb[k] * &(s.lines_coplanar(&basis[k], &z, &ci, &z) - f0.clone());
             }
             coplanar.push(g);
             // g5..g8: |C_i − B_i| = r; the distance is quadratic in B with Hessian 2Δ.
@@ -228,7 +228,7 @@ impl Ruu {
             let mut g = &w1 * &d0 + &w_b2 * &delta;
             for k in 0..3 {
                 let linear = s.distance(&basis[k], &ci, self.r) - d0.clone() - delta.clone();
-                g += &wb[k] * &linear;
+                g = g + &wb[k] * &linear;
             }
             length.push(g);
             // g9..g12: (C_i − B_i)·s_i = 0, bilinear in the normal s_i and the point B_i.
@@ -237,7 +237,7 @@ impl Ruu {
             for k in 0..3 {
                 let p = s.moving_point_on_fixed_plane(&ci, &zero, &basis[k]);
                 let q = s.moving_point_on_fixed_plane(&ci, &basis[k], &basis[k]) - p.clone();
-                g += &ws[k] * &(&(&w1 * &p) + &(&wb[k] * &q));
+                g = g + &ws[k] * &(&(&w1 * &p) + &(&wb[k] * &q));
             }
             axis.push(g);
         }

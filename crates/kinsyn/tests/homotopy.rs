@@ -53,7 +53,7 @@ fn univariate_against_companion_eigenvalues() {
     let x = Poly::variable(1, 0);
     let mut p = x.pow(5);
     for (k, c) in (0u32..).zip(&coefficients) {
-        p += x.pow(k).scale(*c);
+        p = p + x.pow(k).scale(*c);
     }
     let report = solve(
         &System::new(names(1), vec![p]).unwrap(),
@@ -139,7 +139,7 @@ fn quadrics_family() -> kinsyn::homotopy::ParametrizedSystem {
         let xi = Poly::variable(nv, i);
         let mut f = &xi * &xi + Poly::variable(nv, n + n * n + i);
         for j in 0..n {
-            f += Poly::variable(nv, n + n * i + j) * Poly::variable(nv, j);
+            f = f + Poly::variable(nv, n + n * i + j) * Poly::variable(nv, j);
         }
         eqs.push(f);
     }

@@ -237,7 +237,7 @@ fn det_poly(m: &[Vec<Poly>]) -> Poly {
         for col in 0..n {
             if mask & (1 << col) != 0 {
                 let rest = minors[mask & !(1 << col)].as_ref().unwrap();
-                acc += (&m[row][col] * rest) * sign;
+                acc = acc + (&m[row][col] * rest) * sign;
                 sign = -sign;
             }
         }

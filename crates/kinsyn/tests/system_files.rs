@@ -115,13 +115,13 @@ fn katsura(n: usize) -> System {
     for m in 0..n_i {
         let mut p = -u(m);
         for l in -n_i..=n_i {
-            p += u(l) * u(m - l);
+            p = p + u(l) * u(m - l);
         }
         equations.push(p);
     }
     let mut norm = u(0) - Poly::real(v, 1.0);
     for l in 1..=n_i {
-        norm += u(l) * 2.0;
+        norm = norm + u(l) * 2.0;
     }
     equations.push(norm);
     System::new((0..v).map(|k| format!("u{k}")).collect(), equations).unwrap()
@@ -138,7 +138,7 @@ fn cyclic(n: usize) -> System {
             for j in 0..k {
                 m = m * Poly::variable(n, (i + j) % n);
             }
-            p += m;
+            p = p + m;
         }
         equations.push(p);
     }

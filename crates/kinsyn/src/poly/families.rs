@@ -31,13 +31,13 @@ pub fn katsura(n: usize) -> System {
     for m in 0..n {
         let mut sum = Poly::zero(nv);
         for l in -n..=n {
-            sum += u(l) * u(m - l);
+            sum = sum + u(l) * u(m - l);
         }
         equations.push(sum - u(m));
     }
     let mut last = u(0) - Poly::real(nv, 1.0);
     for l in 1..=n {
-        last += u(l) * 2.0;
+        last = last + u(l) * 2.0;
     }
     equations.push(last);
     System::new(names("u", nv), equations).expect("well formed")
@@ -57,7 +57,7 @@ pub fn cyclic(n: usize) -> System {
     for k in 1..n {
         let mut sum = Poly::zero(n);
         for i in 0..n {
-            sum += (0..k).fold(Poly::real(n, 1.0), |p, j| p * &x[(i + j) % n]);
+            sum = sum + (0..k).fold(Poly::real(n, 1.0), |p, j| p * &x[(i + j) % n]);
         }
         equations.push(sum);
     }

@@ -276,7 +276,7 @@ impl Poly {
             let mut rest = e.clone();
             rest[i] = 0;
             let term = Self::from_terms(self.nvars, [(rest, *c)]);
-            out += term * &powers[e[i] as usize];
+            out = out + term * &powers[e[i] as usize];
         }
         out
     }
