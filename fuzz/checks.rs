@@ -457,7 +457,7 @@ pub fn check_assemblies(data: &[u8]) {
     use kinsyn::homotopy::{SolveSettings, check_solvable, solve};
     use kinsyn::manipulator::PositionRequest;
     use kinsyn::poly::C64;
-    use kinsyn::poly::geometry::Chart;
+    use kinsyn::geometry::Chart;
     let Ok(text) = std::str::from_utf8(data) else {
         return;
     };

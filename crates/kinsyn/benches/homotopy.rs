@@ -6,7 +6,7 @@
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use kinsyn::homotopy::{SolveSettings, solve};
-use kinsyn::poly::geometry::{Chart, gough_stewart};
+use kinsyn::geometry::{Chart, gough_stewart};
 use kinsyn::poly::{System, families, phc};
 use kinsyn::spatial::{self, Twist};
 use nalgebra::{Point3, Vector3};

@@ -21,11 +21,10 @@
 #![deny(missing_docs)]
 
 pub mod catalogue;
-pub mod certify;
 pub mod chain;
 pub mod configurable;
+pub mod geometry;
 pub mod hexa;
-pub mod homotopy;
 mod linalg;
 pub mod lockset;
 pub mod manipulator;
@@ -36,7 +35,6 @@ pub mod motion;
 pub mod notation;
 pub mod output;
 pub mod paper;
-pub mod poly;
 pub mod ruu;
 pub mod schematic;
 pub mod screw;
@@ -45,3 +43,5 @@ pub mod spatial;
 pub mod sweep;
 pub mod synthesis;
 pub mod verification;
+
+pub use kinsyn_nag::{certify, homotopy, poly};

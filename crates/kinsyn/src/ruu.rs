@@ -1,7 +1,7 @@
 //! The **4-RUU** parallel manipulator of paper 004 (Nurahmi, Caro, Wenger, Schadlbauer, Husty,
 //! *Reconfiguration analysis of a 4-RUU parallel manipulator*, Mech. Mach. Theory 2016, §2–3)
 //! and its constraint equations `g1 … g14` in Study parameters, derived from the geometry with
-//! the primitives of [`crate::poly::geometry`].
+//! the primitives of [`crate::geometry`].
 //!
 //! # Geometry (paper 004 §2)
 //! A square base and a square platform joined by four legs `i = 1 … 4`. Leg `i`'s actuated R
@@ -33,7 +33,7 @@
 //! (`data/paper004-constraints.txt`) and evaluates them at poses assembled independently;
 //! `docs/deviations.md` lists the printed equations that differ.
 
-use crate::poly::geometry::{PolyVector, STUDY_NAMES, StudyVariables};
+use crate::geometry::{PolyVector, STUDY_NAMES, StudyVariables};
 use crate::poly::{Poly, System};
 use nalgebra::Vector3;
 

@@ -1,10 +1,10 @@
-//! Constraint polynomials from geometry (`kinsyn::poly::geometry`) and manipulators as
+//! Constraint polynomials from geometry (`kinsyn::geometry`) and manipulators as
 //! polynomial systems (`Manipulator::position_system`), each checked against an independent
 //! numeric computation: the displacement of `spatial::study::to_displacement` applied to points
 //! with nalgebra, distances and dot products computed from that displacement, finite
 //! differences, and the loop closure of `Manipulator::solve_position`.
 
-use kinsyn::poly::geometry::{self, Chart, StudyVariables};
+use kinsyn::geometry::{self, Chart, StudyVariables};
 use kinsyn::poly::{C64, Poly};
 use kinsyn::spatial::{self, Displacement, study};
 use nalgebra::{Point3, Rotation3, Vector3};

@@ -10,7 +10,7 @@
 
 use kinsyn::homotopy::{SolveReport, SolveSettings, solve, solve_runs};
 use kinsyn::manipulator::Manipulator;
-use kinsyn::poly::geometry::{Chart, gough_stewart};
+use kinsyn::geometry::{Chart, gough_stewart};
 use kinsyn::poly::{C64, System, families, phc};
 use kinsyn::spatial::{self, Displacement, Twist, study};
 use nalgebra::{Point3, Vector3};

@@ -204,7 +204,7 @@ fn the_two_ruu_has_three_four_dof_operation_modes() {
 /// (the middle U axes `s_i ⊥ (C_i − B_i)` horizontal and parallel); and the product of the
 /// squared sizes of those horizontal parts, its scale squared.
 fn parallel_links(n: usize, (i, vi): (usize, usize), (j, vj): (usize, usize)) -> (Poly, Poly) {
-    use kinsyn::poly::geometry::StudyVariables;
+    use kinsyn::geometry::StudyVariables;
     use nalgebra::Vector3;
     let ruu = Ruu::paper004();
     let s = StudyVariables::leading(n);

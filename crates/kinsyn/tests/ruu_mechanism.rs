@@ -8,7 +8,7 @@
 use kinsyn::homotopy::{SolveSettings, solve};
 use kinsyn::manipulator::{InputValues, LegKind, Manipulator, PositionSystemError};
 use kinsyn::mechanism::SampleSettings;
-use kinsyn::poly::geometry::Chart;
+use kinsyn::geometry::Chart;
 use kinsyn::poly::{C64, Poly, System};
 use kinsyn::ruu::{InputMode, Ruu};
 use kinsyn::spatial::{Displacement, rotation_log, study};

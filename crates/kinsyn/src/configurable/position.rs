@@ -41,7 +41,7 @@
 use super::{CentrePose, Configurable, CornerPose};
 use crate::certify::Reality;
 use crate::homotopy::{self, HomotopyError, Solution, SolveReport, SolveSettings};
-use crate::poly::geometry::{PolyVector, distance_condition, sin_cos};
+use crate::geometry::{PolyVector, distance_condition, sin_cos};
 use crate::poly::{C64, Poly, PolyError, System};
 use nalgebra::{Vector2, Vector3};
 use std::f64::consts::TAU;
@@ -277,7 +277,7 @@ impl ForwardMethod {
 }
 
 fn constant_point(nvars: usize, p: Vector2<f64>) -> PolyVector {
-    crate::poly::geometry::constant_vector(nvars, &Vector3::new(p.x, p.y, 0.0))
+    crate::geometry::constant_vector(nvars, &Vector3::new(p.x, p.y, 0.0))
 }
 
 fn planar(nvars: usize, x: Poly, y: Poly) -> PolyVector {

@@ -8,7 +8,7 @@
 
 use super::{Configurable, CornerPose};
 use crate::homotopy::{ParametrizedSystem, TrackerSettings, track_parameters};
-use crate::poly::geometry::sin_cos;
+use crate::geometry::sin_cos;
 use crate::poly::{C64, Poly, System};
 use nalgebra::{DMatrix, DVector, Vector2};
 

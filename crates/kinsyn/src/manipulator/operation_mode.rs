@@ -26,7 +26,7 @@ use crate::homotopy::{
 };
 use crate::motion::{self, Classification};
 use crate::poly::Program;
-use crate::poly::geometry::Chart;
+use crate::geometry::Chart;
 use crate::spatial::{Displacement, compose, inverse, log, study};
 use nalgebra::{DMatrix, DVector};
 use rand::{Rng, SeedableRng};

@@ -1,5 +1,5 @@
 //! A manipulator as a **polynomial system** in the Study parameters of its platform frame
-//! ([`crate::poly::geometry`]): at fixed inputs and square, the forward position problem in the
+//! ([`crate::geometry`]): at fixed inputs and square, the forward position problem in the
 //! form whose solutions a homotopy finds all of ([`Manipulator::position_system`]); square or
 //! not, and with the inputs as unknowns if asked, the constraint ideal whose components are the
 //! operation modes ([`Manipulator::constraint_system`]).
@@ -56,7 +56,7 @@
 
 use super::{Manipulator, construction::MechanismBuilder};
 use crate::notation::Primitive;
-use crate::poly::geometry::{
+use crate::geometry::{
     Chart, PolyVector, STUDY_NAMES, StudyVariables, constant_vector, cross, dot,
 };
 use crate::poly::{Poly, System};
@@ -381,7 +381,7 @@ impl Manipulator {
     ///
     /// ```
     /// use kinsyn::manipulator::Manipulator;
-    /// use kinsyn::poly::{C64, geometry::Chart};
+    /// use kinsyn::{geometry::Chart, poly::C64};
     /// # std::env::set_current_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/../..")).unwrap();
     /// let m = Manipulator::from_json(&std::fs::read_to_string("mechanisms/6-ups.json")?)?;
     /// let inputs = m.parse_inputs("P1.3=0,P2.3=0,P3.3=0,P4.3=0,P5.3=0,P6.3=0")?;
@@ -436,7 +436,7 @@ impl Manipulator {
     ///
     /// ```
     /// use kinsyn::manipulator::{InputValues, Manipulator};
-    /// use kinsyn::poly::{C64, geometry::Chart};
+    /// use kinsyn::{geometry::Chart, poly::C64};
     /// # std::env::set_current_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/../..")).unwrap();
     /// let m = Manipulator::from_json(&std::fs::read_to_string("mechanisms/4-ruu.json")?)?;
     /// let ps = m.constraint_system(&InputValues::Free, &Chart::Unit)?;
@@ -802,7 +802,7 @@ impl Turn {
 }
 
 /// A leg's equations with its ground-side data turned by a free input, each the fixed one
-/// times `w = 1 + t²` (module documentation): the constraints of [`crate::poly::geometry`]
+/// times `w = 1 + t²` (module documentation): the constraints of [`crate::geometry`]
 /// written through their affine (or, for `|a|²`, quadratic) dependence on the fixed point and
 /// their linear dependence on the fixed direction and the fixed line's moment.
 fn turned_leg_equations(s: &StudyVariables, c: &LegConstraint, turn: &Turn) -> Vec<Poly> {

@@ -7,7 +7,7 @@ use crate::cli::{CliError, json};
 use kinsyn::homotopy::{SolveReport, SolveSettings};
 use kinsyn::manipulator::{LegKind, Manipulator, PositionRequest};
 use kinsyn::mechanism::rotation_log;
-use kinsyn::poly::geometry::Chart;
+use kinsyn::geometry::Chart;
 use kinsyn::spatial::Displacement;
 use std::fmt::Write as _;
 use std::path::Path;

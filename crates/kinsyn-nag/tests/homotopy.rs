@@ -1,9 +1,9 @@
 //! Homotopy continuation against known root counts, each cited, and against independent
 //! methods (companion-matrix eigenvalues).
 
-use kinsyn::homotopy::{SolveSettings, StartSystem, solve};
-use kinsyn::poly::families::{cyclic, katsura};
-use kinsyn::poly::{C64, Poly, System};
+use kinsyn_nag::homotopy::{SolveSettings, StartSystem, solve};
+use kinsyn_nag::poly::families::{cyclic, katsura};
+use kinsyn_nag::poly::{C64, Poly, System};
 
 fn names(n: usize) -> Vec<String> {
     (0..n).map(|i| format!("x{i}")).collect()
@@ -131,7 +131,7 @@ fn multihomogeneous_start_counts() {
 
 /// The family `f_i = x_i² + Σ_j a_ij x_j + b_i` (`i = 1 … 3`), parameters `a` (9) and `b` (3)
 /// after the unknowns: generic members have Bézout's 2³ = 8 solutions.
-fn quadrics_family() -> kinsyn::homotopy::ParametrizedSystem {
+fn quadrics_family() -> kinsyn_nag::homotopy::ParametrizedSystem {
     let n = 3;
     let nv = n + n * n + n;
     let mut eqs = Vec::new();
@@ -144,7 +144,7 @@ fn quadrics_family() -> kinsyn::homotopy::ParametrizedSystem {
         eqs.push(f);
     }
     let names: Vec<String> = (0..nv).map(|i| format!("v{i}")).collect();
-    kinsyn::homotopy::ParametrizedSystem::new(System::new(names, eqs).unwrap(), n * n + n).unwrap()
+    kinsyn_nag::homotopy::ParametrizedSystem::new(System::new(names, eqs).unwrap(), n * n + n).unwrap()
 }
 
 #[test]
@@ -161,11 +161,11 @@ fn monodromy_fills_a_generic_family_from_one_solution() {
         .map(|i| -(x[i] * x[i] + (0..3).map(|j| a[3 * i + j] * x[j]).sum::<C64>()))
         .collect();
     let p: Vec<C64> = a.iter().chain(&b).copied().collect();
-    let report = kinsyn::homotopy::monodromy_solve(
+    let report = kinsyn_nag::homotopy::monodromy_solve(
         &family,
         &p,
         &x,
-        &kinsyn::homotopy::MonodromySettings::default(),
+        &kinsyn_nag::homotopy::MonodromySettings::default(),
     )
     .unwrap();
     assert_eq!(report.solutions.len(), 8, "after {} loops", report.loops);
@@ -180,12 +180,12 @@ fn monodromy_fills_a_generic_family_from_one_solution() {
         );
     }
     // With the count known, monodromy stops as soon as it has them.
-    let settings = kinsyn::homotopy::MonodromySettings {
+    let settings = kinsyn_nag::homotopy::MonodromySettings {
         target: Some(8),
         ..Default::default()
     };
     assert_eq!(
-        kinsyn::homotopy::monodromy_solve(&family, &p, &x, &settings)
+        kinsyn_nag::homotopy::monodromy_solve(&family, &p, &x, &settings)
             .unwrap()
             .solutions
             .len(),
@@ -196,12 +196,12 @@ fn monodromy_fills_a_generic_family_from_one_solution() {
     let q: Vec<C64> = (0..12)
         .map(|k| C64::new((f64::from(k * k) * 0.31).cos() * 2.0, 0.0))
         .collect();
-    let moved = kinsyn::homotopy::track_parameters(
+    let moved = kinsyn_nag::homotopy::track_parameters(
         &family,
         &p,
         &q,
         &report.solutions,
-        kinsyn::homotopy::TrackerSettings::default(),
+        kinsyn_nag::homotopy::TrackerSettings::default(),
     )
     .unwrap();
     let direct = solve(&family.at(&q).unwrap(), &SolveSettings::default()).unwrap();

@@ -4,8 +4,8 @@
 //! run on every system — witness supersets by dimension (`decompose`) and equation-by-equation
 //! regeneration (`regenerate`, Hauenstein, Sommese & Wampler 2011) — and must agree.
 
-use kinsyn::homotopy::{DecomposeSettings, Decomposition, decompose, regenerate};
-use kinsyn::poly::{Poly, System};
+use kinsyn_nag::homotopy::{DecomposeSettings, Decomposition, decompose, regenerate};
+use kinsyn_nag::poly::{Poly, System};
 
 fn xyz() -> (Poly, Poly, Poly) {
     (

@@ -2,11 +2,11 @@
 //! (`x^n − 1`: the `n` numbers `e^{2πik/n}`, all simple, two real for even `n` and one for
 //! odd), products of such factors, roots of very different sizes, and random products of
 //! linear factors (a property test). Every root must be found once, regular and certified
-//! (Krawczyk, `kinsyn::certify`); the expected roots come from the construction, never from a
+//! (Krawczyk, `kinsyn_nag::certify`); the expected roots come from the construction, never from a
 //! run of the solver.
 
-use kinsyn::homotopy::{SolveReport, SolveSettings, StartSystem, solve};
-use kinsyn::poly::{C64, Poly, System};
+use kinsyn_nag::homotopy::{SolveReport, SolveSettings, StartSystem, solve};
+use kinsyn_nag::poly::{C64, Poly, System};
 use proptest::prelude::*;
 use proptest::test_runner::RngSeed;
 use std::f64::consts::TAU;
@@ -117,7 +117,7 @@ fn the_1024th_roots_of_unity() {
 }
 
 /// More large degrees and a product of two degree-512 factors: about 12 s in a debug build,
-/// run by CI's exhaustive step (`cargo test -p kinsyn --test homotopy_known_roots --
+/// run by CI's exhaustive step (`cargo test -p kinsyn-nag --test homotopy_known_roots --
 /// --ignored`).
 #[test]
 #[ignore = "exhaustive: degrees 100 to 1024, about 12 s (run with --ignored)"]

@@ -2,7 +2,7 @@
 //! differences, the straight-line program against term-by-term evaluation, Bézout numbers
 //! against hand counts.
 
-use kinsyn::poly::{C64, Poly, System};
+use kinsyn_nag::poly::{C64, Poly, System};
 
 fn c(re: f64, im: f64) -> C64 {
     C64::new(re, im)

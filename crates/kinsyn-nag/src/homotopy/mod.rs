@@ -14,8 +14,8 @@
 //! generator: the same seed gives the same paths.
 //!
 //! ```
-//! use kinsyn::homotopy::{solve, SolveSettings};
-//! use kinsyn::poly::{Poly, System};
+//! use kinsyn_nag::homotopy::{solve, SolveSettings};
+//! use kinsyn_nag::poly::{Poly, System};
 //! // The unit circle met by the line x = y: two real points (±1/√2, ±1/√2).
 //! let x = Poly::variable(2, 0);
 //! let y = Poly::variable(2, 1);

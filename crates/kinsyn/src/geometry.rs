@@ -28,7 +28,7 @@
 //! [`StudyVariables::lines_coplanar`]) hold on the quadric only, which every system built here
 //! contains.
 
-use super::{C64, Poly, System};
+use crate::poly::{C64, Poly, System};
 use nalgebra::Vector3;
 use rand::{Rng, SeedableRng};
 

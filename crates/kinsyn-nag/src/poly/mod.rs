@@ -10,7 +10,7 @@
 //! intervals of the certificates.
 //!
 //! ```
-//! use kinsyn::poly::{Poly, System, C64};
+//! use kinsyn_nag::poly::{Poly, System, C64};
 //! // The unit circle met by the line x = y.
 //! let x = Poly::variable(2, 0);
 //! let y = Poly::variable(2, 1);
@@ -26,7 +26,6 @@
 pub mod bertini;
 pub mod expansion;
 pub mod families;
-pub mod geometry;
 pub mod multihomogeneous;
 pub mod phc;
 mod program;

@@ -3,11 +3,11 @@
 //! Krawczyk certificates against roots known in closed form (hand-factored polynomials, conics
 //! solved by hand), checked exactly where the root is a float or a square root.
 
-use kinsyn::certify::{
+use kinsyn_nag::certify::{
     Certificate, CertificateStatus, CertifyError, CertifyOptions, ComplexInterval, FailureReason,
     Interval, Reality, certify_root, certify_root_with, certify_roots, separate,
 };
-use kinsyn::poly::{C64, Poly, Program, Scalar, System};
+use kinsyn_nag::poly::{C64, Poly, Program, Scalar, System};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 

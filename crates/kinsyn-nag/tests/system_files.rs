@@ -3,9 +3,9 @@
 //! are known from the literature or by hand. The `PHCpack` tests skip, with a notice, when
 //! `phc` is not installed.
 
-use kinsyn::poly::bertini::{self, BertiniErrorKind};
-use kinsyn::poly::phc::{self, PhcClass, PhcError};
-use kinsyn::poly::{C64, Poly, System};
+use kinsyn_nag::poly::bertini::{self, BertiniErrorKind};
+use kinsyn_nag::poly::phc::{self, PhcClass, PhcError};
+use kinsyn_nag::poly::{C64, Poly, System};
 use proptest::prelude::*;
 use std::path::PathBuf;
 use std::time::Duration;

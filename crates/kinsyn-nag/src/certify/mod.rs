@@ -63,8 +63,8 @@
 //! a path jump in a homotopy.
 //!
 //! ```
-//! use kinsyn::certify::{certify_roots, CertificateStatus, Reality};
-//! use kinsyn::poly::{Poly, System, C64};
+//! use kinsyn_nag::certify::{certify_roots, CertificateStatus, Reality};
+//! use kinsyn_nag::poly::{Poly, System, C64};
 //! // x² − 2 = 0, roots ±√2.
 //! let x = Poly::variable(1, 0);
 //! let system = System::new(vec!["x".into()], vec![&x * &x - Poly::real(1, 2.0)]).unwrap();
