@@ -1,5 +1,5 @@
 //! The invariants the fuzz targets check, shared with the stable replay test
-//! (`tests/fuzz_corpus.rs`). Each check takes the raw input; it returns quietly when the input is
+//! (`tests/suite/fuzz_corpus.rs`). Each check takes the raw input; it returns quietly when the input is
 //! rejected (an error is a fine answer) and panics when an invariant is broken. docs/fuzzing.md
 //! says what each one asserts.
 

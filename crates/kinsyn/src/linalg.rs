@@ -262,7 +262,7 @@ pub fn rank(m: &DMatrix<f64>, tolerance: f64) -> Rank {
 /// Stability of Numerical Algorithms*, §20.1) and `σ_(k+1) ≤ √(6−k) |r_(k+1,k+1)|` (the
 /// pivot is the largest remaining column). When these bounds put `σ_k / σ_1` above the tolerance
 /// and `σ_(k+1) / σ_1` below it, the rank is `k` for certain; otherwise the singular values are
-/// computed ([`svd`]) and counted. `tests/screw.rs` checks the two agree.
+/// computed ([`svd`]) and counted. `tests/suite/screw.rs` checks the two agree.
 ///
 /// # Panics
 /// If `m` does not have exactly six columns.

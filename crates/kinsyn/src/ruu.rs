@@ -29,7 +29,7 @@
 //! fixed points) are used through their affine (coplanarity, plane) or quadratic (distance)
 //! dependence on the fixed point: `f(p) = f(0) + Σ p_k (f(e_k) − f(0))` for an affine `f`.
 //!
-//! `tests/ruu.rs` compares the derived equations with the printed ones
+//! `tests/suite/ruu.rs` compares the derived equations with the printed ones
 //! (`data/paper004-constraints.txt`) and evaluates them at poses assembled independently;
 //! `docs/deviations.md` lists the printed equations that differ.
 

@@ -21,7 +21,7 @@
 //!
 //! # Misprints (docs/deviations.md, "Paper 002 — 3-RPS-3-SPR")
 //! - Eq. (5) prints the augmented rotation as `[[R, I], [I, R]]`; the change of frame of a
-//!   twist is `[[R, 0], [0, R]]` ([`augmented_rotation`]). `tests/series.rs` shows the
+//!   twist is `[[R, 0], [0, R]]` ([`augmented_rotation`]). `tests/suite/series.rs` shows the
 //!   block-diagonal form agrees with finite differences and the printed form does not; the
 //!   printed form is kept as [`augmented_rotation_as_printed`] for that comparison.
 //! - Eq. (8) indexes the modules from 0 in its Jacobian (`A_{M_0}`, …, `⁰R̄_n A_{M_n}`) but
@@ -114,7 +114,7 @@ pub enum AugmentedRotation {
     /// `[[R, 0], [0, R]]`: the change of frame of a twist ([`augmented_rotation`]).
     BlockDiagonal,
     /// `[[R, I], [I, R]]` as printed in eq. (5) — a misprint kept for the comparison in
-    /// `tests/series.rs` ([`augmented_rotation_as_printed`]).
+    /// `tests/suite/series.rs` ([`augmented_rotation_as_printed`]).
     AsPrinted,
 }
 
@@ -128,7 +128,7 @@ pub fn augmented_rotation(rotation: &Rotation3<f64>) -> Matrix6<f64> {
 
 /// The augmented rotation exactly as eq. (5) of paper 002 prints it, `[[R, I], [I, R]]`. It is
 /// not a change of frame (it mixes angular and linear velocity); kept only to show, in
-/// `tests/series.rs`, that it disagrees with finite differences (docs/deviations.md).
+/// `tests/suite/series.rs`, that it disagrees with finite differences (docs/deviations.md).
 #[must_use]
 pub fn augmented_rotation_as_printed(rotation: &Rotation3<f64>) -> Matrix6<f64> {
     let mut m = Matrix6::identity();

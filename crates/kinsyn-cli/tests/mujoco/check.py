@@ -2,7 +2,7 @@
 
 Usage: python3 check.py MODEL.xml EXPECTED.json
 
-EXPECTED.json (written by tests/mujoco_export.rs) holds:
+EXPECTED.json (written by tests/suite/mujoco_export.rs) holds:
   body        the MuJoCo body to compare (the end-effector, by its description name)
   ctrl        {actuator label: input value}  (kinsyn's input values at the displaced pose)
   position    [x, y, z]      the body frame's origin there (ground frame)

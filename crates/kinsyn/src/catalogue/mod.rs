@@ -165,7 +165,7 @@ pub const FORMAT: &str = "kinsyn-catalogue/3";
 /// The committed `catalogue/chains.json`, compiled in.
 ///
 /// The committed catalogue is part of the source: it is what [`Catalogue::generate`] gives with
-/// the default reading (`tests/catalogue.rs` checks it entry by entry, and byte for byte against
+/// the default reading (`tests/suite/catalogue.rs` checks it entry by entry, and byte for byte against
 /// a fresh `kinsyn catalogue generate`). Compiling it in lets the binary read it from any
 /// working directory, installed or not, with no path to find and no file that can go missing
 /// or be swapped for another version after the build; its cost is 1.3 MB of read-only data.

@@ -17,7 +17,7 @@
 //!   `C_4 C_3`; `C_2 = C_1 + C_3 − C_4` ([`CornerPose`]).
 //!
 //! The two describe the same platform when `θ₁₃ = π − φ₁₁` and `φ₁₃ = π − θ₁₁`
-//! ([`CentrePose::to_corner_pose`], proved in `tests/configurable.rs`): the paper's inverse
+//! ([`CentrePose::to_corner_pose`], proved in `tests/suite/configurable.rs`): the paper's inverse
 //! example (θ = 75°, φ = 100° in eq. 11's sense, `C = (20, −30)`) is Table 1's converged pose
 //! (θ = 80°, φ = 105° in eq. 13's sense), which is why the q of the one reproduce the other.
 

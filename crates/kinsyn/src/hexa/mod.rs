@@ -18,7 +18,7 @@
 //! `+u_i`; of the conventions that give it (`θ` from `±k` or `±R_z(μ_i) j`), this one and `θ`
 //! from `+k` (`v_i = cos θ k − sin θ R_z(μ_i) j`) bring eq. 5's printed root nearest to a
 //! true one, and this one is the HEXA's customary arm angle, from the base plane
-//! (`tests/hexa.rs`, docs/deviations.md). The
+//! (`tests/suite/hexa.rs`, docs/deviations.md). The
 //! parallelogram `B_i C_i` has length `l` and direction `w_i = (c_i − b_i)/l`. The working mode
 //! (active links pointing away from the base centre) is `cos θ_i > 0`.
 //!
@@ -27,12 +27,12 @@
 //! eq. 4 under any convention for `θ`: its square root is real even where the limb cannot reach
 //! (`I² + J² < K²`). In this module's convention the roots are
 //! `θ = 2 atan((−I ± √(I² + J² − K²))/(K − J))` ([`Hexa::inverse_limb`]): the printed numerator,
-//! with `K − J` for the printed `K − I` and `−K²` for `+K²`. `tests/hexa.rs` shows the printed
+//! with `K − J` for the printed `K − I` and `−K²` for `+K²`. `tests/suite/hexa.rs` shows the printed
 //! form leaving the limb open and this one closing it; `docs/deviations.md` records it.
 //!
 //! # Eq. 15
 //! Eqs. 14–16 use `s_i` as a unit vector (`s1 = Q1 j`; eq. 14's rows carry `r1 w_iᵀ s_i`),
-//! eq. 11 as `r1 Q1 j`: with eq. 14's `s_i`, eq. 15 holds as printed (`tests/hexa.rs`).
+//! eq. 11 as `r1 Q1 j`: with eq. 14's `s_i`, eq. 15 holds as printed (`tests/suite/hexa.rs`).
 
 use nalgebra::{Matrix3, Vector3};
 
@@ -157,7 +157,7 @@ impl Hexa {
     }
 
     /// Eq. 5 **as printed**, `2 atan((−I ± √(I² + J² + K²))/(K − I))`: kept to show that it
-    /// does not close the limb under any convention for `θ` (`tests/hexa.rs`).
+    /// does not close the limb under any convention for `θ` (`tests/suite/hexa.rs`).
     #[must_use]
     pub fn inverse_limb_as_printed(&self, i: usize, c: &Vector3<f64>) -> [f64; 2] {
         let (ii, jj, kk) = self.coefficients(i, c);

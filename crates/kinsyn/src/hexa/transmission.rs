@@ -14,7 +14,7 @@
 //! 0 exactly where end-effector 2's 2 × 2 Jacobian is singular (both limbs' rates vanish on a
 //! motion: a parallel singularity). The printed `ŝ_O = (k; r5 Q2 i)`, `ŝ_T = (w_k; b v_k × w_k)`
 //! refer their moments to different points (`ŝ_T`'s is about `A_k`) and leave `|·|_max`
-//! undefined; `tests/hexa.rs` shows their product does not vanish at that singularity
+//! undefined; `tests/suite/hexa.rs` shows their product does not vanish at that singularity
 //! (docs/deviations.md).
 
 use super::{Configuration, Hexa, LimbState, rz};

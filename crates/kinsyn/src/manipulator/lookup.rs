@@ -53,7 +53,7 @@ struct Row {
 /// The ids, notations and axis words of the committed catalogue (`catalogue/chains.json`,
 /// compiled in): the default [`ChainLookup`] of [`super::Manipulator::new`]. It is the same
 /// data as [`Catalogue::committed`] and [`Catalogue::synthesise`] with the default options give
-/// (`tests/manipulator.rs` checks every entry), read without the enumeration, the comparison
+/// (`tests/suite/manipulator.rs` checks every entry), read without the enumeration, the comparison
 /// with the paper or the numerical check.
 #[derive(Debug)]
 pub struct CommittedChains {

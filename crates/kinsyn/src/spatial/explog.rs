@@ -3,7 +3,7 @@
 //!
 //! nalgebra's `Rotation3::angle` and `Rotation3::scaled_axis` read the angle from
 //! `acos((tr R − 1)/2)`, which loses half the digits near the identity (nalgebra 0.35 returns 0
-//! for every angle up to 1e-8 and is 5 % off at 2e-8, `tests/spatial.rs`); [`rotation_log`]
+//! for every angle up to 1e-8 and is 5 % off at 2e-8, `tests/suite/spatial.rs`); [`rotation_log`]
 //! reads `sin θ` from the skew part, and the axis of a half turn, where the skew part vanishes,
 //! from the symmetric part instead.
 

@@ -11,7 +11,7 @@
 //! - `x ≠ 0`: the points with `x0 = x1 = x2 = x3 = 0` (the exceptional generator) are no
 //!   displacement.
 //!
-//! # Convention (paper 004 eqs. 4–5, checked in `tests/spatial.rs`)
+//! # Convention (paper 004 eqs. 4–5, checked in `tests/suite/spatial.rs`)
 //! The matrix `M` of eq. 4 ([`matrix`]) acts on homogeneous points written `(1, x, y, z)ᵀ`, the
 //! homogenising coordinate **first**, as the paper writes its points (eqs. 2, 3) and applies
 //! `M` to them (eq. 9, `r⁰ = M r¹`):
@@ -25,7 +25,7 @@
 //!   **`y = −½ t x`** with `t` the pure quaternion `(0, t)`. This is Husty's sign; the common
 //!   dual-quaternion convention `x + ε ½ t x` (e.g. Selig, *Geometric Fundamentals of
 //!   Robotics*) has the opposite `y`. Paper 004's constraint equations (eqs. 11a, 12a) use this
-//!   sign too: `tests/spatial.rs` evaluates them at the parameters of known poses.
+//!   sign too: `tests/suite/spatial.rs` evaluates them at the parameters of known poses.
 //!
 //! # Normalisation
 //! [`normalise`] divides by `|x|`, so that `x0² + x1² + x2² + x3² = 1` (paper 004's `g14`,

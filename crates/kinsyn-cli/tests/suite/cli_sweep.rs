@@ -1,0 +1,482 @@
+//! `kinsyn sweep` and `kinsyn sweep merge` (docs/sweep.md) on small selections: the rows
+//! against an independent path through the command line (`kinsyn build` + `kinsyn modes`) and
+//! the 3-UPS's mobility by hand, and the files against themselves written in other ways (one
+//! or two threads, shards merged, interrupted and resumed, Parquet read back).
+
+use crate::common;
+use common::{assert_refused, kinsyn, stderr, stdout};
+use serde_json::Value;
+use std::path::{Path, PathBuf};
+
+const SMALL: &[&str] = &["--chains", "T1-001,T1-002", "--actuated", "1"];
+
+/// Runs `kinsyn sweep --out DIR` with `args`, asserting success; returns stdout.
+fn sweep(dir: &Path, args: &[&str]) -> String {
+    let mut all = vec!["sweep", "--out", dir.to_str().unwrap()];
+    all.extend_from_slice(args);
+    let o = kinsyn(&all);
+    assert_eq!(o.status.code(), Some(0), "{all:?}: {}", stderr(&o));
+    stdout(&o)
+}
+
+/// The three result files of a directory, as bytes.
+fn files(dir: &Path) -> Vec<(String, Vec<u8>)> {
+    ["designs.jsonl", "designs.parquet", "sweep.json"]
+        .iter()
+        .map(|f| {
+            let bytes = std::fs::read(dir.join(f)).unwrap_or_else(|e| panic!("{f}: {e}"));
+            ((*f).to_string(), bytes)
+        })
+        .collect()
+}
+
+fn assert_same_files(a: &Path, b: &Path) {
+    for ((name, x), (_, y)) in files(a).iter().zip(files(b)) {
+        assert!(
+            *x == y,
+            "{name} differs between {} and {}",
+            a.display(),
+            b.display()
+        );
+    }
+    assert!(
+        !b.join("checkpoint.jsonl").exists(),
+        "checkpoint left in {}",
+        b.display()
+    );
+}
+
+fn rows(dir: &Path) -> Vec<Value> {
+    std::fs::read_to_string(dir.join("designs.jsonl"))
+        .unwrap()
+        .lines()
+        .map(|l| serde_json::from_str(l).unwrap())
+        .collect()
+}
+
+fn temp() -> tempfile::TempDir {
+    tempfile::tempdir().unwrap()
+}
+
+/// The patterns of a modes report or a row, as (pattern, dof, subsets, lock sets), sorted.
+fn patterns(list: &Value) -> Vec<(String, u64, u64, Vec<String>)> {
+    let mut v: Vec<_> = list
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|p| {
+            (
+                p["pattern"].as_str().unwrap().to_string(),
+                p["dof"].as_u64().unwrap(),
+                p["subsets"].as_u64().unwrap(),
+                p["lock_sets"]
+                    .as_array()
+                    .unwrap()
+                    .iter()
+                    .map(|s| s.as_str().unwrap().to_string())
+                    .collect(),
+            )
+        })
+        .collect();
+    v.sort();
+    v
+}
+
+/// A row equals what `kinsyn build` + `kinsyn modes --json` give for its design: the file
+/// written and read back, the modes sampled by the `modes` command (a second path through the
+/// command line, its own file reader and subset list).
+#[test]
+fn a_row_is_what_build_and_modes_give_for_its_design() {
+    let dir = temp();
+    let out = dir.path().join("s");
+    sweep(&out, &["--chains", "T1-002,T4-034", "--actuated", "1"]);
+    let rows = rows(&out);
+    assert_eq!(rows.len(), 12);
+    for design in [1, 6 + 2, 6 + 5] {
+        let row = &rows[design];
+        assert_eq!(row["design"], design);
+        let chain = row["chain"].as_str().unwrap();
+        let actuated = row["actuated"][0].to_string();
+        let file = dir.path().join(format!("d{design}.json"));
+        let o = kinsyn(&[
+            "build",
+            "--legs",
+            "3",
+            "--chain",
+            chain,
+            "--actuated",
+            &actuated,
+            "-o",
+            file.to_str().unwrap(),
+        ]);
+        assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+        let o = kinsyn(&["modes", file.to_str().unwrap(), "--json"]);
+        assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+        let modes: Value = serde_json::from_str(&stdout(&o)).unwrap();
+        let free = modes["modes"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .find(|m| m["locked"].as_array().unwrap().is_empty())
+            .unwrap();
+        assert_eq!(row["dof"], free["dof"], "design {design}");
+        assert_eq!(row["group_kinds"], modes["group_kinds"], "design {design}");
+        assert_eq!(row["kinds"], modes["group_kinds"].as_array().unwrap().len());
+        assert_eq!(
+            patterns(&row["groups"]),
+            patterns(&modes["groups"]),
+            "design {design}"
+        );
+        assert_eq!(
+            patterns(&row["non_groups"]),
+            patterns(&modes["non_groups"]),
+            "design {design}"
+        );
+        assert_eq!(row["inputs"], modes["actuators"].as_array().unwrap().len());
+        assert_eq!(
+            row["singular_lock_sets"], modes["singular_starts"],
+            "design {design}"
+        );
+    }
+}
+
+/// The 3-UPS (catalogue T4-034, UPS) with its sliders actuated, by hand (paper 000 §5 analyses
+/// the 3-UPS): each leg has 2 (U) + 1 (P) + 3 (S) = 6 joint freedoms, 18 in all; the three
+/// legs close 2 independent loops through ground and platform, 6 equations each, 12 in all;
+/// so 18 − 12 = 6 dof with nothing locked (Grübler: 6(8 − 1 − 9) + 18 = 6 with 8 bodies and 9
+/// joints), the whole displacement group D. Locking the three sliders removes 3 freedoms:
+/// 15 − 12 = 3 dof; locking k of them leaves 6 − k.
+#[test]
+fn the_3_ups_with_sliders_actuated_has_6_dof_and_3_with_them_locked() {
+    let dir = temp();
+    let out = dir.path().join("ups");
+    sweep(&out, &["--chains", "T4-034", "--actuated", "1"]);
+    let rows = rows(&out);
+    let row = rows
+        .iter()
+        .find(|r| r["actuated"] == serde_json::json!([3]))
+        .unwrap();
+    assert_eq!(row["notation"], "UPS");
+    assert_eq!(row["inputs"], 3);
+    assert_eq!(row["dof"], 6);
+    assert_eq!(row["unsampled"], 0);
+    let all: Vec<_> = patterns(&row["groups"])
+        .into_iter()
+        .chain(patterns(&row["non_groups"]))
+        .collect();
+    let dof_of = |set: &str| {
+        all.iter()
+            .find(|p| p.3.iter().any(|s| s == set))
+            .unwrap_or_else(|| panic!("{set} in no pattern: {all:?}"))
+            .1
+    };
+    assert_eq!(dof_of("-"), 6);
+    assert_eq!(dof_of("P1.3"), 5);
+    assert_eq!(dof_of("P1.3 P2.3"), 4);
+    assert_eq!(dof_of("P1.3 P2.3 P3.3"), 3);
+    assert!(row["group_kinds"].as_array().unwrap().contains(&"D".into()));
+}
+
+#[test]
+fn one_and_two_threads_write_the_same_bytes() {
+    let dir = temp();
+    let (a, b) = (dir.path().join("t1"), dir.path().join("t2"));
+    sweep(&a, &[SMALL, &["--threads", "1"]].concat());
+    sweep(&b, &[SMALL, &["--threads", "2"]].concat());
+    assert_same_files(&a, &b);
+    assert_eq!(rows(&a).len(), 12);
+    // Rows by design index, each once.
+    for (i, r) in rows(&a).iter().enumerate() {
+        assert_eq!(r["design"], i);
+    }
+}
+
+#[test]
+fn three_shards_merged_are_one_run() {
+    let dir = temp();
+    let whole = dir.path().join("whole");
+    sweep(&whole, SMALL);
+    let mut shards = Vec::new();
+    for k in 1..=3 {
+        let d = dir.path().join(format!("part{k}"));
+        sweep(&d, &[SMALL, &["--shard", &format!("{k}/3")]].concat());
+        let part = rows(&d);
+        assert_eq!(part.len(), 4, "12 designs round robin over 3 shards");
+        assert!(
+            part.iter()
+                .all(|r| r["design"].as_u64().unwrap() % 3 + 1 == k)
+        );
+        shards.push(d);
+    }
+    // Given in another order than 1, 2, 3.
+    let merged = dir.path().join("merged");
+    let o = kinsyn(&[
+        "sweep",
+        "merge",
+        shards[2].to_str().unwrap(),
+        shards[0].to_str().unwrap(),
+        shards[1].to_str().unwrap(),
+        "--out",
+        merged.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert_same_files(&whole, &merged);
+
+    // Refusals: a missing shard, a repeated one, a whole sweep, not a sweep, mixed settings,
+    // an incomplete shard.
+    let p = |d: &PathBuf| d.to_str().unwrap().to_string();
+    let out = p(&dir.path().join("bad"));
+    let refused = |args: Vec<String>, what: &str, needles: &[&str]| {
+        let mut all = vec!["sweep".to_string(), "merge".to_string()];
+        all.extend(args);
+        all.extend(["--out".to_string(), out.clone()]);
+        let all: Vec<&str> = all.iter().map(String::as_str).collect();
+        assert_refused(&kinsyn(&all), what, needles);
+    };
+    refused(
+        vec![p(&shards[0]), p(&shards[1])],
+        "missing",
+        &["shard 3/3 missing"],
+    );
+    refused(
+        vec![p(&shards[0]), p(&shards[0]), p(&shards[1])],
+        "twice",
+        &["shard 1/3 given twice"],
+    );
+    refused(vec![p(&whole), p(&shards[1])], "whole", &["not a shard"]);
+    refused(
+        vec![p(&dir.path().join("nothing"))],
+        "not a sweep",
+        &["not a sweep directory"],
+    );
+    let other = dir.path().join("other");
+    sweep(
+        &other,
+        &[SMALL, &["--shard", "3/3", "--seed", "7"]].concat(),
+    );
+    refused(
+        vec![p(&shards[0]), p(&shards[1]), p(&other)],
+        "mixed",
+        &["different sweeps"],
+    );
+    let partial = dir.path().join("partial");
+    sweep(
+        &partial,
+        &[SMALL, &["--shard", "3/3", "--stop-after", "1"]].concat(),
+    );
+    refused(
+        vec![p(&shards[0]), p(&shards[1]), p(&partial)],
+        "incomplete",
+        &["incomplete"],
+    );
+}
+
+/// The checkpoint's complete lines.
+fn checkpoint_lines(dir: &Path) -> usize {
+    std::fs::read_to_string(dir.join("checkpoint.jsonl"))
+        .map_or(0, |text| text.matches('\n').count())
+}
+
+fn resumed(json: &str) -> (u64, u64, bool) {
+    let v: Value = serde_json::from_str(json).unwrap();
+    (
+        v["resumed"].as_u64().unwrap(),
+        v["evaluated"].as_u64().unwrap(),
+        v["complete"].as_bool().unwrap(),
+    )
+}
+
+#[test]
+fn an_interrupted_run_resumes_to_the_same_files() {
+    let dir = temp();
+    let whole = dir.path().join("whole");
+    sweep(&whole, SMALL);
+    let cut = dir.path().join("cut");
+    let first = sweep(&cut, &[SMALL, &["--stop-after", "5", "--json"]].concat());
+    assert_eq!(resumed(&first), (0, 5, false));
+    assert_eq!(checkpoint_lines(&cut), 5);
+    assert!(!cut.join("designs.jsonl").exists());
+    // A torn last line (a write cut short) is ignored and cut away.
+    let mut bytes = std::fs::read(cut.join("checkpoint.jsonl")).unwrap();
+    bytes.extend_from_slice(b"{\"design\":11,\"chain\":\"T1-0");
+    std::fs::write(cut.join("checkpoint.jsonl"), bytes).unwrap();
+    let second = sweep(&cut, &[SMALL, &["--json"]].concat());
+    assert_eq!(resumed(&second), (5, 7, true));
+    assert_same_files(&whole, &cut);
+    // Complete: said so, nothing rewritten.
+    let before = std::fs::metadata(cut.join("designs.parquet"))
+        .unwrap()
+        .modified()
+        .unwrap();
+    let third = sweep(&cut, SMALL);
+    assert!(third.contains("already complete"), "{third}");
+    let after = std::fs::metadata(cut.join("designs.parquet"))
+        .unwrap()
+        .modified()
+        .unwrap();
+    assert_eq!(before, after);
+    // Other settings in the same directory: refused.
+    let o = kinsyn(
+        &[
+            &["sweep", "--out", cut.to_str().unwrap()][..],
+            SMALL,
+            &["--seed", "1"],
+        ]
+        .concat(),
+    );
+    assert_refused(
+        &o,
+        "other seed",
+        &["holds another sweep", "another --out DIR"],
+    );
+}
+
+#[test]
+fn a_killed_run_resumes_to_the_same_files() {
+    let args = ["--chains", "T1-001,T1-002,T4-034", "--threads", "1"];
+    let dir = temp();
+    let killed = dir.path().join("killed");
+    let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_kinsyn"))
+        .args([&["sweep", "--out", killed.to_str().unwrap()][..], &args].concat())
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::null())
+        .spawn()
+        .unwrap();
+    let start = std::time::Instant::now();
+    while checkpoint_lines(&killed) < 2 {
+        assert!(start.elapsed().as_secs() < 120, "no row checkpointed");
+        std::thread::sleep(std::time::Duration::from_millis(5));
+    }
+    child.kill().unwrap();
+    child.wait().unwrap();
+    let done = checkpoint_lines(&killed);
+    assert!(
+        !killed.join("designs.jsonl").exists(),
+        "the run finished before it was killed; make it longer"
+    );
+    let json = sweep(&killed, &[&args[..], &["--json"]].concat());
+    let (resumed_rows, evaluated, complete) = resumed(&json);
+    assert!(complete);
+    assert_eq!(usize::try_from(resumed_rows).unwrap(), done);
+    assert_eq!(resumed_rows + evaluated, 63, "3 chains × 21 actuated sets");
+    let whole = dir.path().join("whole");
+    sweep(&whole, &args);
+    assert_same_files(&whole, &killed);
+}
+
+/// The Parquet file read back with the parquet crate's Arrow reader: the JSONL rows, column
+/// by column, and the manifest in its metadata.
+#[test]
+fn the_parquet_file_holds_the_jsonl_rows() {
+    use arrow_array::cast::AsArray;
+    use arrow_array::types::UInt32Type;
+    use parquet::arrow::arrow_reader::ParquetRecordBatchReaderBuilder;
+    let dir = temp();
+    let out = dir.path().join("p");
+    sweep(&out, &["--chains", "T1-001,T4-034", "--actuated", "1,2"]);
+    let rows = rows(&out);
+    let file = std::fs::File::open(out.join("designs.parquet")).unwrap();
+    let builder = ParquetRecordBatchReaderBuilder::try_new(file).unwrap();
+    let kv: std::collections::BTreeMap<String, String> = builder
+        .metadata()
+        .file_metadata()
+        .key_value_metadata()
+        .unwrap()
+        .iter()
+        .map(|k| (k.key.clone(), k.value.clone().unwrap_or_default()))
+        .collect();
+    let manifest: Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("sweep.json")).unwrap()).unwrap();
+    let settings: Value = serde_json::from_str(&kv["kinsyn.settings"]).unwrap();
+    assert_eq!(settings, manifest["settings"]);
+    assert_eq!(settings["sampling"]["seed"], 2026);
+    let selection: Value = serde_json::from_str(&kv["kinsyn.selection"]).unwrap();
+    assert_eq!(selection, manifest["selection"]);
+    assert_eq!(kv["kinsyn.designs"], rows.len().to_string());
+    assert_eq!(kv["kinsyn.version"], manifest["kinsyn"].as_str().unwrap());
+    let mut n = 0;
+    for batch in builder.build().unwrap() {
+        let batch = batch.unwrap();
+        let col = |name: &str| batch.column_by_name(name).unwrap().clone();
+        for i in 0..batch.num_rows() {
+            let row = &rows[n];
+            for name in [
+                "design",
+                "legs",
+                "inputs",
+                "dof",
+                "subgroups",
+                "kinds",
+                "unsampled",
+                "singular",
+            ] {
+                let c = col(name);
+                assert_eq!(
+                    u64::from(c.as_primitive::<UInt32Type>().value(i)),
+                    row[name].as_u64().unwrap(),
+                    "{name}"
+                );
+            }
+            for name in ["chain", "notation", "family"] {
+                assert_eq!(
+                    col(name).as_string::<i32>().value(i),
+                    row[name].as_str().unwrap()
+                );
+            }
+            let actuated = col("actuated");
+            let list = actuated.as_list::<i32>().value(i);
+            let values: Vec<u64> = list
+                .as_primitive::<UInt32Type>()
+                .values()
+                .iter()
+                .map(|&v| u64::from(v))
+                .collect();
+            assert_eq!(serde_json::json!(values), row["actuated"]);
+            let kinds = col("group_kinds");
+            let list = kinds.as_list::<i32>().value(i);
+            let values: Vec<&str> = list.as_string::<i32>().iter().map(Option::unwrap).collect();
+            assert_eq!(serde_json::json!(values), row["group_kinds"]);
+            let singular = col("singular_lock_sets");
+            let list = singular.as_list::<i32>().value(i);
+            let values: Vec<&str> = list.as_string::<i32>().iter().map(Option::unwrap).collect();
+            assert_eq!(serde_json::json!(values), row["singular_lock_sets"]);
+            for name in ["groups", "non_groups"] {
+                let v: Value = serde_json::from_str(col(name).as_string::<i32>().value(i)).unwrap();
+                assert_eq!(v, row[name], "{name}");
+            }
+            let error = col("error");
+            assert_eq!(error.is_null(i), row.get("error").is_none());
+            n += 1;
+        }
+    }
+    assert_eq!(n, rows.len());
+    assert_eq!(n, 2 * 21);
+}
+
+#[test]
+fn bad_input_is_refused_in_one_line() {
+    let dir = temp();
+    let out = dir.path().join("x");
+    let o = out.to_str().unwrap();
+    for (args, needles) in [
+        (vec!["--shard", "0/3"], vec!["--shard", "0/3"]),
+        (vec!["--shard", "4/3"], vec!["--shard", "4/3"]),
+        (vec!["--shard", "x/y"], vec!["--shard", "x/y"]),
+        (vec!["--shard", "3"], vec!["--shard"]),
+        (vec!["--chains", "T1-001,T9-999"], vec!["T9-999"]),
+        (vec!["--family", "PPPPPP"], vec!["PPPPPP", "PPPRRR"]),
+        (vec!["--legs", "7"], vec!["--legs 7"]),
+        (vec!["--legs", "2"], vec!["--legs 2"]),
+        (vec!["--actuated", "0"], vec!["--actuated 0"]),
+        (vec!["--threads", "0"], vec!["--threads 0"]),
+        (
+            vec!["--chains", "T1-001", "--family", "RRRRRR"],
+            vec!["no design"],
+        ),
+    ] {
+        let all = [&["sweep", "--out", o][..], &args].concat();
+        assert_refused(&kinsyn(&all), &format!("{args:?}"), &needles);
+    }
+    assert!(!out.exists(), "a refused sweep wrote {}", out.display());
+    assert_refused(&kinsyn(&["sweep"]), "no --out", &["--out"]);
+}

@@ -1,0 +1,51 @@
+//! The tests of the kinematics library: every module against papers, hand derivations and second methods.
+//!
+//! One test binary for the crate, one module per file (named after the module of `src/` it
+//! checks), so that the library is linked once. Run one module with
+//! `cargo test -p kinsyn --test suite MODULE::`; the exhaustive checks are `#[ignore]`d and run
+//! by `.ci/run` (`cargo test --locked -- --ignored`).
+
+mod common;
+mod catalogue;
+mod chain;
+mod configurable;
+mod configurable_mechanism;
+mod configurable_methods;
+mod configurable_position;
+mod configurable_trajectory;
+mod configurable_velocity;
+mod fuzz_corpus;
+mod generic_ranks;
+mod geometry_polynomials;
+mod hexa;
+mod hexa_mechanism;
+mod hexa_workspace;
+mod invariance;
+mod library;
+mod lockset;
+mod manipulator;
+mod mechanism;
+mod modes_cost;
+mod motion;
+mod notation;
+mod operation_modes;
+mod paper;
+mod platforms;
+mod position;
+mod position_polynomial;
+mod ruu;
+mod ruu_input_space;
+mod ruu_mechanism;
+mod ruu_modes;
+mod ruu_self_motions;
+mod ruu_singularities;
+mod screw;
+mod series;
+mod spatial;
+mod spm;
+mod spm_full_cycle;
+mod spm_methods;
+mod sweep_ranking;
+mod sweep_stability;
+mod synthesis;
+mod verification;
