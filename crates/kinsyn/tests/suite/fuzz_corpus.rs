@@ -2,7 +2,7 @@
 //! targets run (`fuzz/checks.rs`), on the stable toolchain: every input found by fuzzing, and
 //! every reproducer of a fixed panic, stays checked by `cargo test`. docs/fuzzing.md.
 
-#[path = "../../../fuzz/checks.rs"]
+#[path = "../../../../fuzz/checks.rs"]
 mod checks;
 
 use std::panic;

@@ -7,8 +7,7 @@ use kinsyn::homotopy::{DecomposeSettings, Decomposition, decompose, regenerate};
 use kinsyn::poly::{Poly, System};
 use kinsyn::ruu::{InputMode, Ruu};
 
-#[path = "common/singular.rs"]
-mod singular;
+use crate::common::singular;
 
 /// The equations `which` (0-based: g1 is 0, g13 is 12) of the 4-RUU, in the Study parameters
 /// and the inputs `t1i` of the legs `inputs` (0-based) — free, or at the given `values`; the

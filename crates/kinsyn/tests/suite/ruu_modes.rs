@@ -7,8 +7,7 @@ use kinsyn::homotopy::{DecomposeSettings, decompose};
 use kinsyn::poly::System;
 use kinsyn::ruu::{InputMode, Ruu};
 
-#[path = "common/singular.rs"]
-mod singular;
+use crate::common::singular;
 
 /// The inputs `t1i = tan(θ1i/2)`: generic values, exactly 3/10, −7/10, 11/10, 9/20.
 const INPUTS: [f64; 4] = [0.3, -0.7, 1.1, 0.45];

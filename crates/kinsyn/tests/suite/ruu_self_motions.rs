@@ -18,8 +18,7 @@ use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use std::fmt::Write as _;
 
-#[path = "common/singular.rs"]
-mod singular;
+use crate::common::singular;
 
 /// The equations `g1..g8, g13, g14` (0-based indices into `Ruu::constraints`).
 const IDEAL: [usize; 10] = [0, 1, 2, 3, 4, 5, 6, 7, 12, 13];

@@ -23,8 +23,7 @@ use rand_chacha::ChaCha8Rng;
 use std::f64::consts::{FRAC_PI_2, PI};
 use std::fmt::Write as _;
 
-#[path = "common/singular.rs"]
-mod singular;
+use crate::common::singular;
 
 /// Eq. 30 as printed (§5.1, K1 at `t11 = −2, t12 = −1, t13 = 1/2`), coefficients of
 /// `t14^14 … t14^0` (the paper writes `t4` for `t14`).

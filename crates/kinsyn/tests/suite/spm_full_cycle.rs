@@ -12,8 +12,7 @@
 //! are the second method that the graph's mobility (6, `tests/suite/platforms.rs` for two stacked
 //! 3-RPS) is checked against.
 
-#[path = "common/singular.rs"]
-mod singular;
+use crate::common::singular;
 
 use kinsyn::spatial::study::{self, StudyParameters};
 use nalgebra::{DMatrix, DVector, Vector3, Vector4};

@@ -1,4 +1,7 @@
-//! Helpers shared by the integration tests: an independent Jacobian by finite differences.
+//! Helpers shared by the integration tests: an independent Jacobian by finite differences, and
+//! Singular, the exact check of some tests ([`singular`]).
+
+pub mod singular;
 
 use kinsyn::chain::SerialChain;
 use kinsyn::screw::Twist;
