@@ -454,10 +454,10 @@ const ASSEMBLIES_PATHS: u64 = 64;
 /// before tracking or gives real regular solutions that are displacements whose own chart
 /// representative solves the system again.
 pub fn check_assemblies(data: &[u8]) {
+    use kinsyn::geometry::Chart;
     use kinsyn::homotopy::{SolveSettings, check_solvable, solve};
     use kinsyn::manipulator::PositionRequest;
     use kinsyn::poly::C64;
-    use kinsyn::geometry::Chart;
     let Ok(text) = std::str::from_utf8(data) else {
         return;
     };

@@ -28,7 +28,9 @@ fn main() -> ExitCode {
 }
 
 fn run(path: &str) -> Result<(), String> {
-    let size = std::fs::metadata(path).map_err(|e| format!("{path}: {e}"))?.len();
+    let size = std::fs::metadata(path)
+        .map_err(|e| format!("{path}: {e}"))?
+        .len();
     if size > MAX_FILE_BYTES {
         return Err(format!("{path}: {size} bytes, more than {MAX_FILE_BYTES}"));
     }
@@ -45,7 +47,10 @@ fn run(path: &str) -> Result<(), String> {
             report.certified()
         );
         for s in &report.solutions {
-            let x: Vec<String> = s.x.iter().map(|z| format!("{:.6}{:+.6}i", z.re, z.im)).collect();
+            let x: Vec<String> =
+                s.x.iter()
+                    .map(|z| format!("{:.6}{:+.6}i", z.re, z.im))
+                    .collect();
             println!("  {}", x.join("  "));
         }
     } else {
@@ -55,7 +60,11 @@ fn run(path: &str) -> Result<(), String> {
                 "component of dimension {} and degree {} (trace test {})",
                 c.dimension,
                 c.degree,
-                if c.trace_test_passed { "passed" } else { "FAILED" }
+                if c.trace_test_passed {
+                    "passed"
+                } else {
+                    "FAILED"
+                }
             );
         }
     }

@@ -5,8 +5,8 @@
 //! systems. Every measured solve is checked to find every root.
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use kinsyn::homotopy::{SolveSettings, solve};
 use kinsyn::geometry::{Chart, gough_stewart};
+use kinsyn::homotopy::{SolveSettings, solve};
 use kinsyn::poly::{System, families, phc};
 use kinsyn::spatial::{self, Twist};
 use nalgebra::{Point3, Vector3};

@@ -2,9 +2,9 @@
 //! committed files of mechanisms/, and one-line errors naming the field with exit code 2 for every
 //! kind of bad input (exit 1 for a missing file).
 
+use crate::common;
 use serde_json::Value;
 use std::path::{Path, PathBuf};
-use crate::common;
 
 use common::{kinsyn, stderr, stdout};
 use std::process::Output;

@@ -5,7 +5,6 @@
 //! `cargo test -p kinsyn-cli --test suite MODULE::`; the exhaustive checks are `#[ignore]`d and run
 //! by `.ci/run` (`cargo test --locked -- --ignored`).
 
-mod common;
 mod catalogue_site;
 mod cli;
 mod cli_components;
@@ -22,6 +21,7 @@ mod cli_robustness_polynomials;
 mod cli_solve;
 mod cli_sweep;
 mod cli_sweep_report;
+mod common;
 mod hexa_cli;
 mod hexa_plot;
 mod mujoco_export;

@@ -2,8 +2,8 @@
 //! in the 2nd Schönflies mode K2) and on a test-only description in the 1st (K1): both are
 //! 4-dof Schönflies modes X(z) (paper 004 §4.1.1–4.1.2, §4.3).
 
-use serde_json::Value;
 use crate::common;
+use serde_json::Value;
 
 use common::{assert_refused, kinsyn, stderr, stdout};
 use std::f64::consts::{FRAC_PI_2, SQRT_2};

@@ -144,7 +144,8 @@ fn quadrics_family() -> kinsyn_nag::homotopy::ParametrizedSystem {
         eqs.push(f);
     }
     let names: Vec<String> = (0..nv).map(|i| format!("v{i}")).collect();
-    kinsyn_nag::homotopy::ParametrizedSystem::new(System::new(names, eqs).unwrap(), n * n + n).unwrap()
+    kinsyn_nag::homotopy::ParametrizedSystem::new(System::new(names, eqs).unwrap(), n * n + n)
+        .unwrap()
 }
 
 #[test]

@@ -40,8 +40,8 @@
 
 use super::{CentrePose, Configurable, CornerPose};
 use crate::certify::Reality;
-use crate::homotopy::{self, HomotopyError, Solution, SolveReport, SolveSettings};
 use crate::geometry::{PolyVector, distance_condition, sin_cos};
+use crate::homotopy::{self, HomotopyError, Solution, SolveReport, SolveSettings};
 use crate::poly::{C64, Poly, PolyError, System};
 use nalgebra::{Vector2, Vector3};
 use std::f64::consts::TAU;

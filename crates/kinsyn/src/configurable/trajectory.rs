@@ -7,8 +7,8 @@
 //! another branch silently.
 
 use super::{Configurable, CornerPose};
-use crate::homotopy::{ParametrizedSystem, TrackerSettings, track_parameters};
 use crate::geometry::sin_cos;
+use crate::homotopy::{ParametrizedSystem, TrackerSettings, track_parameters};
 use crate::poly::{C64, Poly, System};
 use nalgebra::{DMatrix, DVector, Vector2};
 

@@ -20,13 +20,13 @@
 
 use super::Manipulator;
 use super::polynomial::{InputValues, PositionSystem, PositionSystemError};
+use crate::geometry::Chart;
 use crate::homotopy::{
     C64, Component, DecomposeError, DecomposeSettings, Decomposition, RegenerationProgress,
     decompose, points_on_slice, regenerate_with_progress,
 };
 use crate::motion::{self, Classification};
 use crate::poly::Program;
-use crate::geometry::Chart;
 use crate::spatial::{Displacement, compose, inverse, log, study};
 use nalgebra::{DMatrix, DVector};
 use rand::{Rng, SeedableRng};

@@ -55,10 +55,10 @@
 //! (as paper 004's `g1 … g8`, there with the absolute angle's tangent).
 
 use super::{Manipulator, construction::MechanismBuilder};
-use crate::notation::Primitive;
 use crate::geometry::{
     Chart, PolyVector, STUDY_NAMES, StudyVariables, constant_vector, cross, dot,
 };
+use crate::notation::Primitive;
 use crate::poly::{Poly, System};
 use crate::spatial::{Displacement, study};
 use nalgebra::{Matrix3, Point3, Vector3};

@@ -5,9 +5,9 @@
 //! `cargo test -p kinsyn --test suite MODULE::`; the exhaustive checks are `#[ignore]`d and run
 //! by `.ci/run` (`cargo test --locked -- --ignored`).
 
-mod common;
 mod catalogue;
 mod chain;
+mod common;
 mod configurable;
 mod configurable_mechanism;
 mod configurable_methods;

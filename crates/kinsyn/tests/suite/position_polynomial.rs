@@ -8,9 +8,9 @@
 //!   platforms*, Mech. Mach. Theory 31(4), 1996).
 //! - Katsura-n has 2^n solutions, cyclic-5 has 70 (`poly::families`).
 
+use kinsyn::geometry::{Chart, gough_stewart};
 use kinsyn::homotopy::{SolveReport, SolveSettings, solve, solve_runs};
 use kinsyn::manipulator::Manipulator;
-use kinsyn::geometry::{Chart, gough_stewart};
 use kinsyn::poly::{C64, System, families, phc};
 use kinsyn::spatial::{self, Displacement, Twist, study};
 use nalgebra::{Point3, Vector3};

@@ -5,10 +5,10 @@
 //! `modes`/`analyze` (sampled loop closure, Jacobians) at assemblies of the algebraic modes K1
 //! and K2 found by homotopy on the paper's equations.
 
+use kinsyn::geometry::Chart;
 use kinsyn::homotopy::{SolveSettings, solve};
 use kinsyn::manipulator::{InputValues, LegKind, Manipulator, PositionSystemError};
 use kinsyn::mechanism::SampleSettings;
-use kinsyn::geometry::Chart;
 use kinsyn::poly::{C64, Poly, System};
 use kinsyn::ruu::{InputMode, Ruu};
 use kinsyn::spatial::{Displacement, rotation_log, study};

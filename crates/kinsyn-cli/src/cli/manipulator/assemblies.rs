@@ -4,10 +4,10 @@
 use super::{clean, input_texts, inputs_or_reference, leg_warnings, load_with_body, warn};
 use crate::cli::solve::{PathOption, certificate_line, solve_with_bar};
 use crate::cli::{CliError, json};
+use kinsyn::geometry::Chart;
 use kinsyn::homotopy::{SolveReport, SolveSettings};
 use kinsyn::manipulator::{LegKind, Manipulator, PositionRequest};
 use kinsyn::mechanism::rotation_log;
-use kinsyn::geometry::Chart;
 use kinsyn::spatial::Displacement;
 use std::fmt::Write as _;
 use std::path::Path;
