@@ -342,7 +342,7 @@ fn rank_check_at(
 /// ([`locked_motion`]: Jacobian ranks and brackets at `settings.samples` configurations), and
 /// the minimal lock sets of each pattern are found by comparing its subsets pairwise, up to
 /// 4^n comparisons. A 6-joint leg of the catalogue has 64 subsets (about 1.7 ms,
-/// `cargo bench --bench verification`); each joint more doubles the classifications, so the
+/// `cargo bench -p kinsyn-bench --bench verification`); each joint more doubles the classifications, so the
 /// 31 joints the `u32` masks allow are a bound on representation, not a practical size.
 #[must_use]
 pub fn verify(chain: &SerialChain, settings: &Settings, seed: u64) -> Verification {

@@ -34,7 +34,7 @@
 //! # Counts and speed at §5's published inputs
 //! Method 2: 12 complex solutions of 64 paths, 2 real (Fig. 10's two assemblies); method 1:
 //! 24 and 4, the same two corner sets; `PHCpack` agrees on both (`tests/suite/configurable_position.rs`,
-//! `docs/deviations.md`). `cargo bench --bench configurable` (2 shared cores): method 2 in
+//! `docs/deviations.md`). `cargo bench -p kinsyn-bench --bench configurable` (2 shared cores): method 2 in
 //! about 53 ms, method 1 in about 2–6 s (three runs of 1024 paths, 0.7–1 s each); `phc -b`
 //! takes about 1.0 s and 1.7 s.
 

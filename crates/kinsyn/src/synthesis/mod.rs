@@ -166,7 +166,7 @@ fn assignments<'a>(
 /// joints (3^p), each combination is checked against the rules of §2
 /// ([`rules::violations`]), and each admissible one is read in C/U/S letters
 /// ([`rules::readings`]). The tables are fixed (six-joint words, at most three P), so the
-/// whole enumeration takes about 3–6 ms (`cargo bench --bench synthesis`).
+/// whole enumeration takes about 3–6 ms (`cargo bench -p kinsyn-bench --bench synthesis`).
 ///
 /// # Panics
 /// Never: every word of the built-in Appendix tables is a P/R word.

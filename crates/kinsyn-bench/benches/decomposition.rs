@@ -1,5 +1,5 @@
 //! Numerical irreducible decomposition of paper 004's 4-RUU (Nurahmi, Caro, Wenger,
-//! Schadlbauer, Husty 2016; `cargo bench -p kinsyn --bench decomposition`): equation-by-equation
+//! Schadlbauer, Husty 2016; `cargo bench -p kinsyn-bench --bench decomposition`): equation-by-equation
 //! regeneration (`homotopy::regenerate`) and the dimension-by-dimension witness supersets
 //! (`homotopy::decompose`) on the constraint ideals of §4, with a = 2, b = 1, l = 1, r = 2.
 //!

@@ -1,4 +1,4 @@
-//! Paper 001's HEXA (`cargo bench --bench hexa`): one inverse geometry, one Jacobians-and-indices
+//! Paper 001's HEXA (`cargo bench -p kinsyn-bench --bench hexa`): one inverse geometry, one Jacobians-and-indices
 //! evaluation, the full workspace search and the index map at the CLI's default grids
 //! (workspace 10 mm, map 5 mm over the regular workspace at its middle height).
 

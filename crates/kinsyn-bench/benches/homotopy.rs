@@ -1,4 +1,4 @@
-//! Homotopy continuation side by side with `PHCpack` (`cargo bench --bench homotopy`): the
+//! Homotopy continuation side by side with `PHCpack` (`cargo bench -p kinsyn-bench --bench homotopy`): the
 //! forward kinematics of a general Gough–Stewart platform (40 roots of 128 paths), Katsura-7
 //! (128 roots) and cyclic-5 (70 roots). kinsyn on all cores and on one, and `phc -b` (the
 //! blackbox solver of `PHCpack`, Debian package `phcpack`; skipped when absent) on the same

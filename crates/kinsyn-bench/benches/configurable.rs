@@ -1,5 +1,5 @@
 //! The forward position of paper 003's configurable 4-RRR at the published inputs (§5:
-//! q = (141.956°, 203.366°, 337.773°, 305.499°)), `cargo bench --bench configurable`:
+//! q = (141.956°, 203.366°, 337.773°, 305.499°)), `cargo bench -p kinsyn-bench --bench configurable`:
 //! [`forward_position`] by method 2 (64 paths, 12 complex solutions, 2 real) and method 1
 //! (1024 paths per run, 24 complex solutions, 4 real; runs with further seeds while paths fail
 //! or a mirror solution is missing), one homotopy run of each system alone (all paths, with
