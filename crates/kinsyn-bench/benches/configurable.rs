@@ -7,7 +7,7 @@
 //! solve is checked to find every root.
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use kinsyn::configurable::{
+use kinsyn_papers::configurable::{
     Configurable, ForwardMethod, centre_system, corner_system, forward_position,
 };
 use kinsyn::homotopy::{SolveSettings, solve};

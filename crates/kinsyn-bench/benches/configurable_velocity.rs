@@ -5,7 +5,7 @@
 //! `q̇ = (−1.5, −1.25, −2, 1.5)` rad/s.
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use kinsyn::configurable::velocity::{Configuration, velocities};
+use kinsyn_papers::configurable::velocity::{Configuration, velocities};
 use nalgebra::{Vector2, Vector4};
 use std::hint::black_box;
 use std::time::Duration;

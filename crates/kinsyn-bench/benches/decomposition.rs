@@ -22,7 +22,7 @@
 use criterion::Criterion;
 use kinsyn::homotopy::{DecomposeSettings, Decomposition, decompose, regenerate};
 use kinsyn::poly::System;
-use kinsyn::ruu::{InputMode, Ruu};
+use kinsyn_papers::ruu::{InputMode, Ruu};
 use std::time::Instant;
 
 /// The inputs `t1i = tan(θ1i/2)` of case 1 (exactly 3/10, −7/10, 11/10, 9/20 in Singular).

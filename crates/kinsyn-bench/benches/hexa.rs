@@ -3,7 +3,7 @@
 //! (workspace 10 mm, map 5 mm over the regular workspace at its middle height).
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use kinsyn::hexa::{Hexa, IndexMapSettings, Pose, WorkspaceSettings};
+use kinsyn_papers::hexa::{Hexa, IndexMapSettings, Pose, WorkspaceSettings};
 use nalgebra::Vector3;
 use std::hint::black_box;
 

@@ -9,7 +9,7 @@
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use kinsyn::screw::DEFAULT_RANK_TOLERANCE;
-use kinsyn::series::{Leg, Module, SeriesParallel};
+use kinsyn_papers::series::{Leg, Module, SeriesParallel};
 use kinsyn::spatial::displacement;
 use nalgebra::{Rotation3, Vector3};
 use std::hint::black_box;
@@ -90,8 +90,8 @@ fn series(c: &mut Criterion) {
     group.bench_function("loop-closure mobility of the 3-RPS-3-SPR file", |b| {
         b.iter(|| m.mechanism().mobility(black_box(&q), &free));
     });
-    group.bench_function("series_stack + J_S-PM from the 3-RPS-3-SPR file", |b| {
-        b.iter(|| m.series_stack(black_box(&q)).map(|s| s.jacobian()));
+    group.bench_function("series::stack + J_S-PM from the 3-RPS-3-SPR file", |b| {
+        b.iter(|| kinsyn_papers::series::stack(&m, black_box(&q)).map(|s| s.jacobian()));
     });
     group.finish();
 }

@@ -12,19 +12,21 @@
 //! [`verification`] check each entry numerically. [`mechanism`] holds general body–joint graphs
 //! (loops, mobility, assembly, finite motion) and [`manipulator`] builds parallel manipulators on
 //! them from description files: Jacobians in the form of paper 000 §4–5, singularities, and the
-//! motion patterns reached by locking inputs. [`series`] is a second, independent method for
-//! series-parallel manipulators: the Jacobian and twist system of paper 002 from the geometry of
-//! stacked modules. [`certify`] proves the approximate roots of polynomial systems ([`poly`]):
-//! the Krawczyk operator in interval arithmetic shows each box holds exactly one root, and
-//! which roots are distinct and which real. Every file the crate and the command write goes
-//! through [`output`]: whole or not at all, never through a symbolic link.
+//! motion patterns reached by locking inputs; [`geometry`] writes their legs as constraint
+//! polynomials in Study parameters. The polynomial systems are solved and their roots
+//! certified by the crate `kinsyn-nag`, re-exported here as [`poly`], [`homotopy`] and
+//! [`certify`]. Every file the crate and the command write goes through [`output`]: whole or
+//! not at all, never through a symbolic link.
+//!
+//! The case studies of single papers (the HEXA of paper 001, the series-parallel Jacobian of
+//! paper 002, the configurable 4-RRR of paper 003, the 4-RUU of paper 004) are the crate
+//! `kinsyn-papers`, on this one: second methods and the papers' data, which this crate never
+//! imports.
 #![deny(missing_docs)]
 
 pub mod catalogue;
 pub mod chain;
-pub mod configurable;
 pub mod geometry;
-pub mod hexa;
 mod linalg;
 pub mod lockset;
 pub mod manipulator;
@@ -35,10 +37,8 @@ pub mod motion;
 pub mod notation;
 pub mod output;
 pub mod paper;
-pub mod ruu;
 pub mod schematic;
 pub mod screw;
-pub mod series;
 pub mod spatial;
 pub mod sweep;
 pub mod synthesis;

@@ -1,11 +1,11 @@
 //! `kinsyn configurable …`: paper 003's planar 4-RRR with a configurable platform by the
-//! paper's own formulas (`kinsyn::configurable`), with the geometry of §5 (a = 80, b = 120,
+//! paper's own formulas (`kinsyn_papers::configurable`), with the geometry of §5 (a = 80, b = 120,
 //! c = 120 mm, `A_i` at (±200, 0), (0, ±200) mm). Angles are in degrees at this interface.
 
 use super::{CliError, json};
-use kinsyn::configurable::trajectory::assemble;
-use kinsyn::configurable::velocity::{Configuration, velocities};
-use kinsyn::configurable::{CentrePose, Configurable, CornerPose, ForwardMethod, forward_position};
+use kinsyn_papers::configurable::trajectory::assemble;
+use kinsyn_papers::configurable::velocity::{Configuration, velocities};
+use kinsyn_papers::configurable::{CentrePose, Configurable, CornerPose, ForwardMethod, forward_position};
 use nalgebra::{Vector2, Vector4};
 use std::fmt::Write as _;
 

@@ -5,7 +5,7 @@ use super::args::HexaPlot;
 use super::output::OutputFolder;
 use super::plot::{draw_error, png, svg};
 use super::{CliError, json, terminal};
-use kinsyn::hexa::{
+use kinsyn_papers::hexa::{
     Cylinder, Hexa, IndexMap, IndexMapSettings, Indices, Workspace, WorkspaceError,
     WorkspaceSettings,
 };
@@ -65,7 +65,7 @@ fn step(name: &str, mm: f64) -> Result<f64, CliError> {
 }
 
 /// Runs `work` with a progress bar over its rows on stderr.
-fn with_progress<T>(message: &str, work: impl FnOnce(kinsyn::hexa::Progress<'_>) -> T) -> T {
+fn with_progress<T>(message: &str, work: impl FnOnce(kinsyn_papers::hexa::Progress<'_>) -> T) -> T {
     let bar = terminal::progress(0, "rows", message);
     let result = work(&|_, total| {
         bar.set_length(total as u64);
@@ -403,7 +403,7 @@ fn draw_four_bar<DB: DrawingBackend>(
 ) -> Result<(), CliError> {
     root.fill(&WHITE).map_err(draw_error)?;
     let phi1 = phi.0.to_radians();
-    let joints = h.platform_joints(&kinsyn::hexa::Pose::new(p1, phi1, p1, 0.0));
+    let joints = h.platform_joints(&kinsyn_papers::hexa::Pose::new(p1, phi1, p1, 0.0));
     let rel = |v: &Vector3<f64>| (v.x - p1.x, v.y - p1.y);
     // The sub-platforms' span in x, and the four-bar's in y, with a margin; equal scales.
     let half = h.r[0] + h.r[1] + 0.5 * (h.r[2] + h.r[3]);

@@ -3,11 +3,11 @@
 
 use super::output::OutputFolder;
 use super::{CliError, json};
-use kinsyn::configurable::trajectory::{
+use kinsyn_papers::configurable::trajectory::{
     TrajectoryEnd, TrajectoryReport, assemble, follow, paper_input_rates, paper_inputs,
     paper_recurring_intervals,
 };
-use kinsyn::configurable::{CentrePose, Configurable, CornerPose, InversePosition};
+use kinsyn_papers::configurable::{CentrePose, Configurable, CornerPose, InversePosition};
 use nalgebra::Vector2;
 use plotters::coord::Shift;
 use plotters::prelude::*;

@@ -96,7 +96,7 @@ fn bad_input_is_one_line_and_exit_2() {
         vec!["configurable", "forward", "--q", "1,2,3,nan"],
         vec!["configurable", "forward", "--q", "1,2,3,4", "--method", "3"],
         // §5's inputs at t = 0.3 s: outside the workspace (no real assembly, tests of
-        // crates/kinsyn/tests/suite/configurable_trajectory.rs), so no assembly to differentiate.
+        // crates/kinsyn-papers/tests/suite/configurable_trajectory.rs), so no assembly to differentiate.
         vec![
             "configurable",
             "velocity",

@@ -160,7 +160,7 @@ fn nearest_takes_rounded_study_parameters_within_their_rounding() {
     assert_eq!(err.lines().count(), 1, "{err}");
     assert!(err.contains("--nearest"), "{err}");
     // Row 4's printed rank 5 is an exact condition that the nearest assembly in the pose metric
-    // misses by about 1e-4 rad: it reports 6 there (crates/kinsyn/tests/suite/spm.rs has the rank 5 at
+    // misses by about 1e-4 rad: it reports 6 there (crates/kinsyn-papers/tests/suite/spm.rs has the rank 5 at
     // the projection in Study parameters).
     for (row, args, dof) in [(3, row3, 6), (4, row4, 6)] {
         let o = kinsyn(&[&["analyze", table, "--nearest"][..], &args[..]].concat());

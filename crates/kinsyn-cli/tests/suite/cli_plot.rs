@@ -21,7 +21,7 @@ fn the_trajectory_figure_is_written_and_the_turning_point_named() {
         String::from_utf8_lossy(&out.stderr)
     );
     let text = String::from_utf8(out.stdout).unwrap();
-    // The turning point found by the library test (crates/kinsyn/tests/suite/configurable_trajectory.rs,
+    // The turning point found by the library test (crates/kinsyn-papers/tests/suite/configurable_trajectory.rs,
     // checked there by the homotopy's real-assembly counts on either side).
     assert!(text.contains("followed to t = 0.1785"), "{text}");
     assert!(text.contains("turning point"), "{text}");

@@ -1,6 +1,6 @@
 //! `kinsyn modes` and `kinsyn analyze` on paper 001's HEXA (`mechanisms/6-ruu-hexa.json`,
 //! issue 15), and `modes --legs` for its sub-mechanisms; the library side is in
-//! `crates/kinsyn/tests/suite/hexa_mechanism.rs`.
+//! `crates/kinsyn-papers/tests/suite/hexa_mechanism.rs`.
 
 use crate::common;
 

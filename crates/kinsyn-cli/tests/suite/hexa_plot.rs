@@ -3,7 +3,7 @@
 
 use crate::common;
 use common::kinsyn;
-use kinsyn::hexa::{Hexa, WorkspaceSettings};
+use kinsyn_papers::hexa::{Hexa, WorkspaceSettings};
 use kinsyn::manipulator::file::MultibodyDescription;
 
 /// Paper 001's HEXA as data (the plots read its dimensions from it).

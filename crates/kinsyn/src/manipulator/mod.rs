@@ -29,7 +29,6 @@ mod poses;
 mod position;
 mod request;
 mod singularity;
-mod stack;
 pub mod stacking;
 mod sub_mechanism;
 

@@ -84,7 +84,7 @@ fn the_hexas_reference_is_not_singular() {
     // regular: end-effector 1 (the description's) has 4 dof, and with it held inputs 4 and 5
     // keep two independent rates, end-effector 2's two freedoms (the four-bar and φ2; paper
     // 001 eqs. 7–8) mapped through its 2 × 2 Jacobian, which is regular there (ξ4 = 0.514,
-    // ξ5 = 0.205, `kinsyn::hexa`). So no inverse singularity, whatever the seed.
+    // ξ5 = 0.205, `kinsyn_papers::hexa`). So no inverse singularity, whatever the seed.
     let text = std::fs::read_to_string("../../mechanisms/6-ruu-hexa.json").unwrap();
     let m = Manipulator::from_json(&text).unwrap();
     let a = m

@@ -2,8 +2,8 @@
 //! assemblies of `mechanisms/multibody/3-rps-3-spr.json`, the general loop-closure machinery
 //! (the mechanism graph: end-effector twist space, and the end-effector twist per unit rate of
 //! each input with the other five held) is compared with the paper's Jacobian `J_S-PM` (eqs. 2–7,
-//! `kinsyn::series`) and the order of its twist system (eqs. 9–10), the modules' geometry read
-//! off the assembled mechanism (`Manipulator::series_stack`: frames, joint screws).
+//! `kinsyn_papers::series`) and the order of its twist system (eqs. 9–10), the modules' geometry read
+//! off the assembled mechanism (`kinsyn_papers::series::stack`: frames, joint screws).
 
 use kinsyn::manipulator::Manipulator;
 use kinsyn::screw::{self, DEFAULT_RANK_TOLERANCE};
@@ -82,8 +82,7 @@ fn agree(name: &str) {
     );
     let effector = m.body_named("end-effector").unwrap();
     for (k, q) in configurations.iter().enumerate() {
-        let spm = m
-            .series_stack(q)
+        let spm = kinsyn_papers::series::stack(&m, q)
             .expect("a stack of two three-legged modules");
         let j = spm.jacobian().unwrap();
         let closure = closure_jacobian(&m, q);
@@ -110,7 +109,7 @@ fn agree(name: &str) {
 fn only_module_stacks_read_as_series_parallel() {
     let read = |path: &str| {
         let m = Manipulator::from_json(&std::fs::read_to_string(path).unwrap()).unwrap();
-        m.series_stack(&m.reference()).map(|s| s.modules().len())
+        kinsyn_papers::series::stack(&m, &m.reference()).map(|s| s.modules().len())
     };
     assert_eq!(read("../../mechanisms/multibody/3-rps-3-spr.json"), Some(2));
     assert_eq!(
@@ -236,7 +235,7 @@ fn stacks_made_from_modules_have_the_hand_mobility() {
             d.name
         );
         assert_eq!(m.body_twists(m.end_effector(), &q, &[]).1, 6, "{}", d.name);
-        let spm = m.series_stack(&q).expect("a module stack");
+        let spm = kinsyn_papers::series::stack(&m, &q).expect("a module stack");
         assert_eq!(spm.modules().len(), modules.len());
         let j = spm.jacobian().unwrap();
         let closure = closure_jacobian(&m, &q);

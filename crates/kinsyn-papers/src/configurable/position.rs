@@ -1,6 +1,6 @@
 //! Position analysis of paper 003's configurable 4-RRR (§3.2): the inverse problem leg by leg,
 //! and the forward problem by both of the paper's polynomial formulations, solved by homotopy
-//! continuation ([`crate::homotopy`]) with every solution certified.
+//! continuation ([`kinsyn::homotopy`]) with every solution certified.
 //!
 //! # Inverse position (§3.2, steps 1–6)
 //! Given the platform (its corners `C_i`, from either parametrisation: eq. 5 for
@@ -39,10 +39,10 @@
 //! takes about 1.0 s and 1.7 s.
 
 use super::{CentrePose, Configurable, CornerPose};
-use crate::certify::Reality;
-use crate::geometry::{PolyVector, distance_condition, sin_cos};
-use crate::homotopy::{self, HomotopyError, Solution, SolveReport, SolveSettings};
-use crate::poly::{C64, Poly, PolyError, System};
+use kinsyn::certify::Reality;
+use kinsyn::geometry::{PolyVector, distance_condition, sin_cos};
+use kinsyn::homotopy::{self, HomotopyError, Solution, SolveReport, SolveSettings};
+use kinsyn::poly::{C64, Poly, PolyError, System};
 use nalgebra::{Vector2, Vector3};
 use std::f64::consts::TAU;
 
@@ -277,7 +277,7 @@ impl ForwardMethod {
 }
 
 fn constant_point(nvars: usize, p: Vector2<f64>) -> PolyVector {
-    crate::geometry::constant_vector(nvars, &Vector3::new(p.x, p.y, 0.0))
+    kinsyn::geometry::constant_vector(nvars, &Vector3::new(p.x, p.y, 0.0))
 }
 
 fn planar(nvars: usize, x: Poly, y: Poly) -> PolyVector {

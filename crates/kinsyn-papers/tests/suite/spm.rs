@@ -171,8 +171,7 @@ fn sets(p: &DVector<f64>) -> [StudyParameters; 2] {
 /// `⁰T_S-PM` (eq. 10).
 fn ranks(m: &Manipulator, q: &[f64]) -> (usize, usize, usize) {
     let dof = m.body_twists(m.end_effector(), q, &[]).1;
-    let spm = m
-        .series_stack(q)
+    let spm = kinsyn_papers::series::stack(&m, q)
         .expect("a stack of two three-legged modules");
     let j = spm.jacobian().unwrap();
     let rank = kinsyn::screw::rank(&j, 1e-9).rank;
@@ -220,7 +219,7 @@ fn table_1_row_1_parallel_platforms_rank_5_reproduced() {
     // c ≠ c' meet only in the couple about z. The S-PM's constraint wrench system is that couple,
     // its twist system has order 5: the rotation about the vertical is lost, as §4 says.
     assert_eq!(ranks(&m, &q), (5, 5, 5), "Table 1 row 1: rank 5, order 5");
-    let spm = m.series_stack(&q).unwrap();
+    let spm = kinsyn_papers::series::stack(&m, &q).unwrap();
     let w = spm.twist_system(1e-9).constraint_wrenches;
     assert_eq!(w.ncols(), 1);
     let c = w.column(0);
@@ -290,7 +289,7 @@ fn table_1_row_4_rank_5_reproduced() {
     let q = m
         .solve_study(&m.reference(), &sets(&p), study::QUADRIC_TOLERANCE)
         .unwrap();
-    let spm = m.series_stack(&q).unwrap();
+    let spm = kinsyn_papers::series::stack(&m, &q).unwrap();
     let w = spm.twist_system(1e-9).constraint_wrenches;
     assert_eq!(w.ncols(), 1);
     let f = Vector3::new(w[(0, 0)], w[(1, 0)], w[(2, 0)]);

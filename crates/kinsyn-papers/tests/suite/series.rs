@@ -13,7 +13,7 @@
 //! reference Jacobian moves each leg length by ±ε and solves the module's closure again.
 
 use kinsyn::screw::{self, DEFAULT_RANK_TOLERANCE, adjoint};
-use kinsyn::series::{
+use kinsyn_papers::series::{
     AugmentedRotation, Leg, Module, SeriesParallel, augmented_rotation, reference_shift,
 };
 use kinsyn::spatial::{Displacement, displacement, rotation_log, study};
@@ -512,7 +512,7 @@ fn parallel_singularity_is_a_typed_error() {
     }
     let s = SeriesParallel::new(modules).unwrap();
     match s.jacobian() {
-        Err(kinsyn::series::SeriesError::ParallelSingularity { module, rank, .. }) => {
+        Err(kinsyn_papers::series::SeriesError::ParallelSingularity { module, rank, .. }) => {
             assert_eq!(module, 2);
             assert!(rank <= 5);
         }

@@ -1,10 +1,10 @@
-//! Paper 001 §4 (Figs. 3–4) by `kinsyn::hexa`'s workspace search and index maps, each against an
+//! Paper 001 §4 (Figs. 3–4) by `kinsyn_papers::hexa`'s workspace search and index maps, each against an
 //! independent method or a hand argument: the limbs' reach by the distance from a point to the
 //! circle of the active link's end (not eq. 5), the index zeros by finite differences of the
 //! inverse geometry (not the Jacobians), the reach along the z axis in closed form, and the
 //! paper's observations on the maps (λ > 0.2, σ near the boundary, ξ inside, y ≤ 0).
 
-use kinsyn::hexa::{
+use kinsyn_papers::hexa::{
     Hexa, IndexMap, IndexMapSettings, Indices, Pose, Workspace, WorkspaceSettings, mu, rz,
 };
 use nalgebra::{Matrix2, Vector3};

@@ -11,7 +11,7 @@ use kinsyn::homotopy::{
     decompose, track_parameters,
 };
 use kinsyn::poly::{Poly, System};
-use kinsyn::ruu::{InputMode, Ruu};
+use kinsyn_papers::ruu::{InputMode, Ruu};
 use kinsyn::spatial::study;
 use nalgebra::{DMatrix, Vector3};
 use rand::{Rng, SeedableRng};

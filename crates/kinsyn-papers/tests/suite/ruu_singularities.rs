@@ -15,7 +15,7 @@
 
 use kinsyn::homotopy::{SolveSettings, StartSystem, solve};
 use kinsyn::poly::{C64, Poly, System};
-use kinsyn::ruu::{InputMode, Ruu};
+use kinsyn_papers::ruu::{InputMode, Ruu};
 use kinsyn::spatial::{Displacement, study};
 use nalgebra::{DMatrix, Rotation3, Translation3, Unit, Vector3};
 use rand::{Rng, SeedableRng};

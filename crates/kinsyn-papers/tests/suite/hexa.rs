@@ -1,8 +1,8 @@
-//! Paper 001's 6-RUU by its closed forms (`kinsyn::hexa`): the inverse geometry of eq. 5
+//! Paper 001's 6-RUU by its closed forms (`kinsyn_papers::hexa`): the inverse geometry of eq. 5
 //! against the constraint it solves (eq. 4), the Jacobians of eqs. 9–11 against finite
 //! differences of the inverse geometry, and the indices of eqs. 13, 15–16.
 
-use kinsyn::hexa::{Hexa, Pose, forward_jacobian, output_index, rz};
+use kinsyn_papers::hexa::{Hexa, Pose, forward_jacobian, output_index, rz};
 use nalgebra::{DMatrix, DVector, Matrix3, Vector3};
 
 /// The platform joints `c_i` (eq. 6b) at the pose `χ = (x1, y1, z, φ1, x2, y2, φ2)`, with
@@ -39,7 +39,7 @@ fn angles(h: &Hexa, c: &[Vector3<f64>; 6]) -> [f64; 6] {
 
 /// `R_z(μ_i) j`, the horizontal direction away from the base centre at limb `i`.
 fn outward(i: usize) -> Vector3<f64> {
-    rz(kinsyn::hexa::mu(i)) * Vector3::y()
+    rz(kinsyn_papers::hexa::mu(i)) * Vector3::y()
 }
 
 fn wrap(x: f64) -> f64 {
@@ -535,7 +535,7 @@ fn end_effector_2_is_singular_on_the_mirror_plane_and_the_printed_eq17_misses_it
     // for each limb as (k; (c_k − p2) × k): the turn about C_k's own vertical, whose product
     // with a force through C_k is 0 at every pose.
     let (q2i, q2j) = (Vector3::x(), Vector3::y());
-    let readings = |conf: &kinsyn::hexa::Configuration, k: usize| {
+    let readings = |conf: &kinsyn_papers::hexa::Configuration, k: usize| {
         let s = conf.limbs[k];
         let s_k = if k == 3 { -q2j * h.r[4] } else { q2j * h.r[4] };
         let about_p2 = (conf.joints[k] - conf.pose.p2()).cross(&s.w);
@@ -585,7 +585,7 @@ fn at_the_coupler_curves_double_point_the_pose_leaves_the_four_bar_open() {
     assert!((kept.d3 - nominal.d3).norm() < (other.d3 - nominal.d3).norm());
     let m_kept = h.end_effector2_jacobian(&conf).unwrap();
     let m_other = h
-        .end_effector2_jacobian(&kinsyn::hexa::Configuration {
+        .end_effector2_jacobian(&kinsyn_papers::hexa::Configuration {
             four_bar: Some(*other),
             ..conf
         })

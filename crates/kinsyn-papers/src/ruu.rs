@@ -1,7 +1,7 @@
 //! The **4-RUU** parallel manipulator of paper 004 (Nurahmi, Caro, Wenger, Schadlbauer, Husty,
 //! *Reconfiguration analysis of a 4-RUU parallel manipulator*, Mech. Mach. Theory 2016, §2–3)
 //! and its constraint equations `g1 … g14` in Study parameters, derived from the geometry with
-//! the primitives of [`crate::geometry`].
+//! the primitives of [`kinsyn::geometry`].
 //!
 //! # Geometry (paper 004 §2)
 //! A square base and a square platform joined by four legs `i = 1 … 4`. Leg `i`'s actuated R
@@ -14,7 +14,7 @@
 //!
 //! # Constraints (paper 004 §3)
 //! With the half-angle tangents `t1i = tan(θ1i/2)`, `t2i = tan(θ2i/2)` (eq. 8) and the Study
-//! parameters of the platform ([`crate::spatial::study`]):
+//! parameters of the platform ([`kinsyn::spatial::study`]):
 //! - `g1 … g4` (eq. 10): the link `B_i C_i` lies in the plane of `v_i = Z` and `n_i`: the fixed
 //!   line through `B_i` along `Z` and the moving line through `C_i` along `z` are coplanar
 //!   ([`StudyVariables::lines_coplanar`]), times `1 + t1i²`;
@@ -33,8 +33,8 @@
 //! (`data/paper004-constraints.txt`) and evaluates them at poses assembled independently;
 //! `docs/deviations.md` lists the printed equations that differ.
 
-use crate::geometry::{PolyVector, STUDY_NAMES, StudyVariables};
-use crate::poly::{Poly, System};
+use kinsyn::geometry::{PolyVector, STUDY_NAMES, StudyVariables};
+use kinsyn::poly::{Poly, System};
 use nalgebra::Vector3;
 
 /// A 4-RUU manipulator of paper 004's architecture (module documentation): base radius `a`

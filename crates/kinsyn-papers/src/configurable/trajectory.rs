@@ -7,9 +7,9 @@
 //! another branch silently.
 
 use super::{Configurable, CornerPose};
-use crate::geometry::sin_cos;
-use crate::homotopy::{ParametrizedSystem, TrackerSettings, track_parameters};
-use crate::poly::{C64, Poly, System};
+use kinsyn::geometry::sin_cos;
+use kinsyn::homotopy::{ParametrizedSystem, TrackerSettings, track_parameters};
+use kinsyn::poly::{C64, Poly, System};
 use nalgebra::{DMatrix, DVector, Vector2};
 
 /// The unknowns of method 2 (§3.2): `x4, y4, sin θ, cos θ, sin φ, cos φ`.

@@ -5,11 +5,11 @@
 //! part second, and a velocity state `⁰V_O = (ω; v_O)` with `v_O` the velocity of the body
 //! point at the origin `O`. That is kinsyn's [`Twist`] `(ω; v)` exactly, and the joint screw of a
 //! revolute with unit axis `u` through `p` is `(u; p × u)` in both. A Plücker line through `r`
-//! along the unit `s` is `(s; r × s)`, kinsyn's [`crate::screw::Line`]. Every screw here — joint
+//! along the unit `s` is `(s; r × s)`, kinsyn's [`kinsyn::screw::Line`]. Every screw here — joint
 //! screws, lines, and their combinations such as `s4 − k4 s3 / k2` — is therefore held in a
 //! [`Twist`] with `w = s`, `v = s0`, and the Klein form (eq. 16) is
 //! `{$1; $2} = s1 · s02 + s2 · s01 = w1 · v2 + w2 · v1`; for a line and a twist it is the virtual
-//! power [`crate::screw::reciprocal_product`] of the line read as a unit force.
+//! power [`kinsyn::screw::reciprocal_product`] of the line read as a unit force.
 //!
 //! # The manipulator's screws (Fig. 8)
 //! All axes are along `ẑ` through the joint points (plane `z = 0`): `⁰$_i¹` at `A_i` (the
@@ -26,7 +26,7 @@
 //! `m1ωm2 = θ̇ − φ̇`.
 
 use super::{Configurable, CornerPose};
-use crate::screw::{Line, Twist};
+use kinsyn::screw::{Line, Twist};
 use nalgebra::{Matrix3, Matrix3x4, Vector2, Vector3, Vector4};
 
 /// Errors of the velocity analysis.

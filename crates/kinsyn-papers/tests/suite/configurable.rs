@@ -1,7 +1,7 @@
 //! Paper 003's planar 4-RRR with a configurable platform: the paper's parametrisations checked
 //! against each other and against its printed numbers.
 
-use kinsyn::configurable::{CentrePose, Configurable, CornerPose};
+use kinsyn_papers::configurable::{CentrePose, Configurable, CornerPose};
 use nalgebra::Vector2;
 
 #[test]

@@ -5,7 +5,7 @@
 
 use kinsyn::homotopy::{DecomposeSettings, Decomposition, decompose, regenerate};
 use kinsyn::poly::{Poly, System};
-use kinsyn::ruu::{InputMode, Ruu};
+use kinsyn_papers::ruu::{InputMode, Ruu};
 
 use crate::common::singular;
 

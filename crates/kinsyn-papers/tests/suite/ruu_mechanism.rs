@@ -1,6 +1,6 @@
 //! Paper 004's 4-RUU as a manipulator description (`mechanisms/4-ruu.json`) and the general
 //! machinery on it: the polynomial layer's U–U legs (`Manipulator::constraint_system`, given
-//! and free inputs) against the paper's `g1 … g8` as derived by `kinsyn::ruu` (an independent
+//! and free inputs) against the paper's `g1 … g8` as derived by `kinsyn_papers::ruu` (an independent
 //! derivation), the leg equations against poses assembled with nalgebra, and the general
 //! `modes`/`analyze` (sampled loop closure, Jacobians) at assemblies of the algebraic modes K1
 //! and K2 found by homotopy on the paper's equations.
@@ -10,7 +10,7 @@ use kinsyn::homotopy::{SolveSettings, solve};
 use kinsyn::manipulator::{InputValues, LegKind, Manipulator, PositionSystemError};
 use kinsyn::mechanism::SampleSettings;
 use kinsyn::poly::{C64, Poly, System};
-use kinsyn::ruu::{InputMode, Ruu};
+use kinsyn_papers::ruu::{InputMode, Ruu};
 use kinsyn::spatial::{Displacement, rotation_log, study};
 use nalgebra::{Rotation3, Translation3, Unit, Vector3};
 use rand::{Rng, SeedableRng};
@@ -212,7 +212,7 @@ fn the_file_has_four_u_u_legs_at_its_reference() {
 
 #[test]
 fn given_inputs_give_paper_004_g1_to_g8() {
-    // Paper 004 eqs. 11–12 (g1–g8) as derived by kinsyn::ruu at the absolute angles
+    // Paper 004 eqs. 11–12 (g1–g8) as derived by kinsyn_papers::ruu at the absolute angles
     // θ1i = reference + δ_i, against this file's system at the inputs δ_i (displacements from
     // the reference), up to one constant factor per equation, modulo the Study quadric.
     let m = four_ruu();
@@ -509,7 +509,7 @@ fn mode_system(theta: [f64; 4], zero: [usize; 2]) -> (System, Vec<Poly>) {
 fn general_modes_and_analyze_find_schoenflies_x_z_at_k1_and_k2_assemblies() {
     // Paper 004 §4.1–4.3: K1 (x0 = x3 = 0) and K2 (x1 = x2 = 0) are 4-dof Schönflies modes
     // X(z). Assemblies of each at fixed inputs are found by homotopy on the paper's equations
-    // (kinsyn::ruu); at each real one a description is built and the general, equation-free
+    // (kinsyn_papers::ruu); at each real one a description is built and the general, equation-free
     // machinery (sampled loop closure: `modes`; Jacobians: `analyze`) must find dof 4 and the
     // group X(z).
     let (k1_theta, _) = k1_reference();

@@ -5,7 +5,7 @@
 
 use kinsyn::homotopy::{DecomposeSettings, decompose};
 use kinsyn::poly::System;
-use kinsyn::ruu::{InputMode, Ruu};
+use kinsyn_papers::ruu::{InputMode, Ruu};
 
 use crate::common::singular;
 

@@ -6,9 +6,9 @@
 //! with `θ` about `+u_i`); and `ξ`
 //! (eq. 17 as redefined in `hexa/transmission.rs`) by a locked mechanism's one motion.
 //!
-//! Regenerate the committed file with `KINSYN_BLESS=1 cargo test -p kinsyn --test suite hexa_mechanism::`.
+//! Regenerate the committed file with `KINSYN_BLESS=1 cargo test -p kinsyn-papers --test suite hexa_mechanism::`.
 
-use kinsyn::hexa::{Hexa, Pose, mu, rz};
+use kinsyn_papers::hexa::{Hexa, Pose, mu, rz};
 use kinsyn::manipulator::file::MultibodyDescription;
 use kinsyn::manipulator::{Manipulator, parse_leg_list};
 use kinsyn::mechanism::{Goal, SampleSettings};
@@ -76,7 +76,7 @@ fn the_committed_file_is_what_the_generator_writes() {
     let committed = std::fs::read_to_string(FILE).unwrap();
     assert!(
         committed == written,
-        "{FILE} differs from Hexa::description; regenerate it with KINSYN_BLESS=1 cargo test -p kinsyn --test suite hexa_mechanism::"
+        "{FILE} differs from Hexa::description; regenerate it with KINSYN_BLESS=1 cargo test -p kinsyn-papers --test suite hexa_mechanism::"
     );
 }
 
@@ -435,7 +435,7 @@ fn the_closure_jacobians_null_space_satisfies_eqs_9_to_11() {
             let chi = DVector::from_vec(vec![
                 p1_rate.x, p1_rate.y, p1_rate.z, w1.z, p2_rate.x, p2_rate.y, w2.z,
             ]);
-            // θ̇ about +u_i (kinsyn::hexa's convention, the file's actuated axis) is the joint
+            // θ̇ about +u_i (kinsyn_papers::hexa's convention, the file's actuated axis) is the joint
             // rate, and eq. 9 holds as printed: A χ̇ = B θ̇ (ḃ_i = b θ̇_i u_i × v_i).
             let theta = DVector::from_fn(6, |i, _| r[m.actuators()[i].joint]);
             let lhs = &a * &chi;

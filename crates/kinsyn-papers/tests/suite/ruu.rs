@@ -1,9 +1,9 @@
-//! Paper 004's 4-RUU (`kinsyn::ruu`): the constraint equations derived from the geometry,
+//! Paper 004's 4-RUU (`kinsyn_papers::ruu`): the constraint equations derived from the geometry,
 //! compared with the printed ones (`data/paper004-constraints.txt`, eqs. 11–13), evaluated at
 //! poses assembled independently with nalgebra, and on the Schönflies modes of eqs. 14–23.
 
 use kinsyn::poly::{C64, Poly, System, bertini};
-use kinsyn::ruu::{InputMode, Ruu, RuuError};
+use kinsyn_papers::ruu::{InputMode, Ruu, RuuError};
 use kinsyn::spatial::Displacement;
 use kinsyn::spatial::study;
 use nalgebra::{Rotation3, Translation3, Vector3};

@@ -3,7 +3,7 @@
 //! paper 002 (Nayak, Caro, Wenger, *Local and full-cycle mobility analysis of a 3-RPS-3-SPR
 //! series-parallel manipulator*, CK 2017), §3 eqs. 1–8 and §4 eqs. 9–10.
 //!
-//! This is a second method beside the general mechanism graph of [`crate::mechanism`]: each
+//! This is a second method beside the general mechanism graph of [`kinsyn::mechanism`]: each
 //! module is given by its geometry at one configuration ([`Module`]: the pose of its moving
 //! platform and, per leg, the spherical-joint centre, the actuated prismatic direction and the
 //! revolute axis), and the S-PM by the list of its modules ([`SeriesParallel`]).
@@ -15,7 +15,7 @@
 //! frame, not the origin of the frame the coordinates are taken in: the twist of module `i` is
 //! `(ω; v_{O_i})` of body `i` relative to body `i − 1`, in `F_{i−1}` axes, and the S-PM's
 //! Jacobian gives the end-effector twist `(ω; v_{O_n})` relative to the base in `F_0` axes. (The
-//! twists of [`crate::spatial`] take the velocity at the frame origin; [`reference_shift`]
+//! twists of [`kinsyn::spatial`] take the velocity at the frame origin; [`reference_shift`]
 //! converts.) Rows of the forward Jacobian `A` are wrenches written `(r × f; f)`, moment about
 //! the moving origin first, so that a row times a twist is the virtual power `m·ω + f·v`.
 //!
@@ -29,7 +29,7 @@
 //!   `⁰R̄_{i−1} ⁿAd_i A_{M_i}⁻¹ B_{M_i}` for module `i = 1 … n` (`⁰R̄_0 = I`, `ⁿAd_n = I`).
 //!
 //! ```
-//! use kinsyn::series::{Leg, Module, SeriesParallel};
+//! use kinsyn_papers::series::{Leg, Module, SeriesParallel};
 //! use kinsyn::spatial::displacement;
 //! use nalgebra::{Rotation3, Vector3};
 //! // One 3-RPS module at its home pose: base circum-radius 2, platform circum-radius 1 at
@@ -48,8 +48,11 @@
 //! assert_eq!(rank.rank, 3);
 //! ```
 
-use crate::screw::{self, DEFAULT_RANK_TOLERANCE, Rank, adjoint, reciprocal_complement};
-use crate::spatial::{Displacement, identity};
+mod stack;
+pub use stack::stack;
+
+use kinsyn::screw::{self, DEFAULT_RANK_TOLERANCE, Rank, adjoint, reciprocal_complement};
+use kinsyn::spatial::{Displacement, identity};
 use nalgebra::{DMatrix, Matrix3, Matrix6, Matrix6x3, Rotation3, Vector3};
 
 /// One leg of a module with an actuated prismatic joint and one constraint force (a 3-RPS or

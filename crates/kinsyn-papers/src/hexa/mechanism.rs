@@ -26,7 +26,7 @@
 //! `u_i`, that is by `+Δθ_i` in the sense of [`Hexa::link_direction`].
 
 use super::{Configuration, FourBarPose, Hexa, Pose, mu, rz};
-use crate::manipulator::file::{
+use kinsyn::manipulator::file::{
     AngleUnit, AxisSpec, BodySpec, FORMAT_2, LegBetween, MultibodyDescription, Units,
 };
 use nalgebra::Vector3;
@@ -255,7 +255,7 @@ impl Hexa {
         let [r1, r2, r3, r4, r5] = self.r;
         let (p1, p2) = (reference.p1(), reference.p2());
         format!(
-            "paper 001 (Wu & Dong, Kinematics of a 6-RUU parallel robot with reconfigurable platforms) §2–4: R = {}, a = {}, b = {}, l = {}, r1..r5 = {r1}, {r2}, {r3}, {r4}, {r5} mm; gamma = {} deg (eq. 6b's direction of the sub-platforms' arms C2C3, C1C6, unstated in the paper); parallelogram rods at B_i ± h u_i, C_i ± h u_i with h = {half_width} mm (a modelling choice: any h > 0 gives the same motion). Reference: P1 = ({}, {}, {}), phi1 = {} deg, P2 = ({}, {}, {}), phi2 = {} deg, limbs in the working mode (elbow out), the four-bar's assembly through P2 nearest the nominal one. Bodies: upper{{i}}, lower{{i}} the parallelogram's bars of limb i; sub16, sub23 the sub-platforms; wrist4, wrist5 the wrists of limbs 4, 5; ee1, ee2 the end-effectors (frames at P1, P2); crank3, crank6, coupler the four-bar of eqs. 7–8. Legs 4i-3..4i: limb i (R!R to upper{{i}}, two RR rods, R onto a sub-platform or a wrist); legs 25-33: the platform linkage. Written by Hexa::description (crates/kinsyn/src/hexa/mechanism.rs); regenerate with KINSYN_BLESS=1 cargo test -p kinsyn --test suite hexa_mechanism::",
+            "paper 001 (Wu & Dong, Kinematics of a 6-RUU parallel robot with reconfigurable platforms) §2–4: R = {}, a = {}, b = {}, l = {}, r1..r5 = {r1}, {r2}, {r3}, {r4}, {r5} mm; gamma = {} deg (eq. 6b's direction of the sub-platforms' arms C2C3, C1C6, unstated in the paper); parallelogram rods at B_i ± h u_i, C_i ± h u_i with h = {half_width} mm (a modelling choice: any h > 0 gives the same motion). Reference: P1 = ({}, {}, {}), phi1 = {} deg, P2 = ({}, {}, {}), phi2 = {} deg, limbs in the working mode (elbow out), the four-bar's assembly through P2 nearest the nominal one. Bodies: upper{{i}}, lower{{i}} the parallelogram's bars of limb i; sub16, sub23 the sub-platforms; wrist4, wrist5 the wrists of limbs 4, 5; ee1, ee2 the end-effectors (frames at P1, P2); crank3, crank6, coupler the four-bar of eqs. 7–8. Legs 4i-3..4i: limb i (R!R to upper{{i}}, two RR rods, R onto a sub-platform or a wrist); legs 25-33: the platform linkage. Written by Hexa::description (crates/kinsyn-papers/src/hexa/mechanism.rs); regenerate with KINSYN_BLESS=1 cargo test -p kinsyn-papers --test suite hexa_mechanism::",
             self.big_r,
             self.a,
             self.b,
