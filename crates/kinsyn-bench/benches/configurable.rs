@@ -7,11 +7,11 @@
 //! solve is checked to find every root.
 
 use criterion::{Criterion, criterion_group, criterion_main};
+use kinsyn::homotopy::{SolveSettings, solve};
+use kinsyn::poly::phc;
 use kinsyn_papers::configurable::{
     Configurable, ForwardMethod, centre_system, corner_system, forward_position,
 };
-use kinsyn::homotopy::{SolveSettings, solve};
-use kinsyn::poly::phc;
 
 fn bench(c: &mut Criterion) {
     let m = Configurable::paper003();

@@ -9,8 +9,8 @@
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use kinsyn::screw::DEFAULT_RANK_TOLERANCE;
-use kinsyn_papers::series::{Leg, Module, SeriesParallel};
 use kinsyn::spatial::displacement;
+use kinsyn_papers::series::{Leg, Module, SeriesParallel};
 use nalgebra::{Rotation3, Vector3};
 use std::hint::black_box;
 use std::time::Duration;

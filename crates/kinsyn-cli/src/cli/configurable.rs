@@ -5,7 +5,9 @@
 use super::{CliError, json};
 use kinsyn_papers::configurable::trajectory::assemble;
 use kinsyn_papers::configurable::velocity::{Configuration, velocities};
-use kinsyn_papers::configurable::{CentrePose, Configurable, CornerPose, ForwardMethod, forward_position};
+use kinsyn_papers::configurable::{
+    CentrePose, Configurable, CornerPose, ForwardMethod, forward_position,
+};
 use nalgebra::{Vector2, Vector4};
 use std::fmt::Write as _;
 

@@ -3,8 +3,8 @@
 
 use crate::common;
 use common::kinsyn;
-use kinsyn_papers::hexa::{Hexa, WorkspaceSettings};
 use kinsyn::manipulator::file::MultibodyDescription;
+use kinsyn_papers::hexa::{Hexa, WorkspaceSettings};
 
 /// Paper 001's HEXA as data (the plots read its dimensions from it).
 const HEXA: &str = "mechanisms/6-ruu-hexa.json";

@@ -2,9 +2,9 @@
 //! 1): the file against the paper's geometry and Tables 1–2, its mobility by Grübler–Kutzbach,
 //! each link's planar motion, and the motion of one link relative to another.
 
-use kinsyn_papers::configurable::{Configurable, CornerPose};
 use kinsyn::manipulator::Manipulator;
 use kinsyn::mechanism::{ASSEMBLY_TOLERANCE, SampleSettings, log};
+use kinsyn_papers::configurable::{Configurable, CornerPose};
 use nalgebra::{DVector, Vector2, Vector3};
 
 fn configurable() -> Manipulator {

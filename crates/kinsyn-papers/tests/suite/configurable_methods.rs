@@ -3,10 +3,10 @@
 //! Jacobian of the general mechanism graph built from `mechanisms/4-rrr-configurable.json`, and
 //! (in `tests/suite/configurable_velocity.rs`) finite differences of the forward position.
 
+use kinsyn::manipulator::Manipulator;
 use kinsyn_papers::configurable::trajectory::{assemble, paper_input_rates};
 use kinsyn_papers::configurable::velocity::{Configuration, velocities};
 use kinsyn_papers::configurable::{Configurable, CornerPose};
-use kinsyn::manipulator::Manipulator;
 use nalgebra::{DVector, Vector2, Vector3, Vector4};
 
 #[test]

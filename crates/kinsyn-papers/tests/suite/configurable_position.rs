@@ -5,12 +5,12 @@
 //! method-1 solution), against `PHCpack` (skipped with a notice when `phc` is absent), against
 //! Tables 1–2 and the "two real solutions" of Fig. 10, and against the inverse position.
 
+use kinsyn::poly::{C64, phc};
 use kinsyn_papers::configurable::{
     CentrePose, Configurable, CornerPose, ForwardMethod, ForwardPosition, PositionError,
     angle_distance, centre_system, corner_system, forward_position, inverse_position, leg_inverse,
     solution_corners,
 };
-use kinsyn::poly::{C64, phc};
 use nalgebra::Vector2;
 use std::collections::HashMap;
 

@@ -3,14 +3,14 @@
 //! homotopy at instants on either side of where the followed assembly ends, and finite
 //! differences of the assembly for the corner velocities.
 
+use kinsyn::homotopy::{SolveSettings, solve};
+use kinsyn::poly::C64;
 use kinsyn_papers::configurable::trajectory::{
     TrajectoryEnd, assemble, elbow_family, follow, paper_input_rates, paper_inputs,
     paper_recurring_intervals,
 };
 use kinsyn_papers::configurable::velocity::{Configuration, velocities};
 use kinsyn_papers::configurable::{Configurable, CornerPose};
-use kinsyn::homotopy::{SolveSettings, solve};
-use kinsyn::poly::C64;
 use nalgebra::{Vector2, Vector4};
 
 fn table1() -> CornerPose {

@@ -3,12 +3,12 @@
 //! differentiation of the position equations of §3.2 (method 2) and central finite differences
 //! of the forward position — and against hand derivations.
 
+use kinsyn::screw::{Line, Wrench, reciprocal_product};
 use kinsyn_papers::configurable::velocity::{
     Configuration, VelocityError, input_output, klein_form, loop_coefficients, planar_line,
     planar_twist, plucker_line, polarity, revolute, twist_from_planar, velocities,
 };
 use kinsyn_papers::configurable::{Configurable, CornerPose};
-use kinsyn::screw::{Line, Wrench, reciprocal_product};
 use nalgebra::{SMatrix, SVector, Vector2, Vector3, Vector4};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;

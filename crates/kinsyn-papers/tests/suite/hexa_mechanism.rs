@@ -8,12 +8,12 @@
 //!
 //! Regenerate the committed file with `KINSYN_BLESS=1 cargo test -p kinsyn-papers --test suite hexa_mechanism::`.
 
-use kinsyn_papers::hexa::{Hexa, Pose, mu, rz};
 use kinsyn::manipulator::file::MultibodyDescription;
 use kinsyn::manipulator::{Manipulator, parse_leg_list};
 use kinsyn::mechanism::{Goal, SampleSettings};
 use kinsyn::motion::{GroupKind, Pattern};
 use kinsyn::spatial::{Displacement, displacement};
+use kinsyn_papers::hexa::{Hexa, Pose, mu, rz};
 use nalgebra::{DVector, Rotation3, Vector3};
 
 const FILE: &str = "../../mechanisms/6-ruu-hexa.json";

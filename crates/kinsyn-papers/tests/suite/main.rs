@@ -5,10 +5,14 @@
 //! `cargo test -p kinsyn-papers --test suite MODULE::`; the exhaustive checks are `#[ignore]`d and
 //! run by `.ci/run` (`cargo test --locked -- --ignored`).
 
-/// Helpers shared with the kinematics library's tests (one file for both).
+/// Singular, the exact check of some tests: the kinematics library's tests' helper (one file
+/// for both).
+#[path = "../../../kinsyn/tests/suite/common/singular.rs"]
+pub mod singular;
+
+/// The helpers shared by the modules, as the kinematics library's tests name them.
 mod common {
-    #[path = "../../../../kinsyn/tests/suite/common/singular.rs"]
-    pub mod singular;
+    pub use super::singular;
 }
 
 mod configurable;

@@ -3,9 +3,9 @@
 //! poses assembled independently with nalgebra, and on the Schönflies modes of eqs. 14–23.
 
 use kinsyn::poly::{C64, Poly, System, bertini};
-use kinsyn_papers::ruu::{InputMode, Ruu, RuuError};
 use kinsyn::spatial::Displacement;
 use kinsyn::spatial::study;
+use kinsyn_papers::ruu::{InputMode, Ruu, RuuError};
 use nalgebra::{Rotation3, Translation3, Vector3};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;

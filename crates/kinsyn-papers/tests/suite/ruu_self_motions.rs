@@ -11,8 +11,8 @@ use kinsyn::homotopy::{
     decompose, track_parameters,
 };
 use kinsyn::poly::{Poly, System};
-use kinsyn_papers::ruu::{InputMode, Ruu};
 use kinsyn::spatial::study;
+use kinsyn_papers::ruu::{InputMode, Ruu};
 use nalgebra::{DMatrix, Vector3};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;

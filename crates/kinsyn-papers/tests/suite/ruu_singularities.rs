@@ -15,8 +15,8 @@
 
 use kinsyn::homotopy::{SolveSettings, StartSystem, solve};
 use kinsyn::poly::{C64, Poly, System};
-use kinsyn_papers::ruu::{InputMode, Ruu};
 use kinsyn::spatial::{Displacement, study};
+use kinsyn_papers::ruu::{InputMode, Ruu};
 use nalgebra::{DMatrix, Rotation3, Translation3, Unit, Vector3};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;

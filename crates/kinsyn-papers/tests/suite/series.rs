@@ -13,10 +13,10 @@
 //! reference Jacobian moves each leg length by ±ε and solves the module's closure again.
 
 use kinsyn::screw::{self, DEFAULT_RANK_TOLERANCE, adjoint};
+use kinsyn::spatial::{Displacement, displacement, rotation_log, study};
 use kinsyn_papers::series::{
     AugmentedRotation, Leg, Module, SeriesParallel, augmented_rotation, reference_shift,
 };
-use kinsyn::spatial::{Displacement, displacement, rotation_log, study};
 use nalgebra::{DMatrix, DVector, Rotation3, Vector3, Vector6};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;

@@ -171,8 +171,7 @@ fn sets(p: &DVector<f64>) -> [StudyParameters; 2] {
 /// `⁰T_S-PM` (eq. 10).
 fn ranks(m: &Manipulator, q: &[f64]) -> (usize, usize, usize) {
     let dof = m.body_twists(m.end_effector(), q, &[]).1;
-    let spm = kinsyn_papers::series::stack(&m, q)
-        .expect("a stack of two three-legged modules");
+    let spm = kinsyn_papers::series::stack(m, q).expect("a stack of two three-legged modules");
     let j = spm.jacobian().unwrap();
     let rank = kinsyn::screw::rank(&j, 1e-9).rank;
     (dof, rank, spm.twist_system(1e-9).order.rank)

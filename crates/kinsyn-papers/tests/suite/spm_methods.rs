@@ -82,8 +82,7 @@ fn agree(name: &str) {
     );
     let effector = m.body_named("end-effector").unwrap();
     for (k, q) in configurations.iter().enumerate() {
-        let spm = kinsyn_papers::series::stack(&m, q)
-            .expect("a stack of two three-legged modules");
+        let spm = kinsyn_papers::series::stack(&m, q).expect("a stack of two three-legged modules");
         let j = spm.jacobian().unwrap();
         let closure = closure_jacobian(&m, q);
         let scale = 1.0 + closure.amax();

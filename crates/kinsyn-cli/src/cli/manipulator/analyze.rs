@@ -477,7 +477,7 @@ fn analysis_json(
 /// forward Jacobian `A` (eqs. 2–3) with its rank and its input twists `A⁻¹B` (`null` in a parallel
 /// singularity); `null` otherwise.
 fn series_json(m: &Manipulator, a: &Analysis) -> serde_json::Value {
-    let Some(spm) = kinsyn_papers::series::stack(&m, &a.q).filter(|s| s.modules().len() > 1) else {
+    let Some(spm) = kinsyn_papers::series::stack(m, &a.q).filter(|s| s.modules().len() > 1) else {
         return serde_json::Value::Null;
     };
     let system = spm.twist_system(DEFAULT_RANK_TOLERANCE);
@@ -576,7 +576,7 @@ fn wrench_text(w: &kinsyn::screw::Wrench, length: f64) -> String {
 /// The paper 002 lines of the text report (see [`series_json`]); empty unless the
 /// manipulator is a stack of two or more three-legged modules.
 fn series_text(m: &Manipulator, a: &Analysis) -> String {
-    let Some(spm) = kinsyn_papers::series::stack(&m, &a.q).filter(|s| s.modules().len() > 1) else {
+    let Some(spm) = kinsyn_papers::series::stack(m, &a.q).filter(|s| s.modules().len() > 1) else {
         return String::new();
     };
     let mut s = String::new();
