@@ -5,7 +5,7 @@
 //! point of its axis at the reference configuration (all joint values zero). Its motion is the
 //! product of exponentials `g(q) = exp(ξ1 q1) ··· exp(ξn qn)`, and column `i` of its (spatial)
 //! Jacobian is the twist of joint `i` carried to the current configuration by the joints before
-//! it. A twist `(ω; v)` is referred to the base frame origin (DESIGN.md).
+//! it. A twist `(ω; v)` is referred to the base frame origin (ARCHITECTURE.md, Conventions).
 //!
 //! ```
 //! use kinsyn::chain::SerialChain;

@@ -15,7 +15,7 @@
 use nalgebra::{DMatrix, DVector, Matrix6, Matrix6xX};
 
 /// The default relative tolerance of ranks: singular values below this fraction of the largest
-/// one count as zero (DESIGN.md).
+/// one count as zero (ARCHITECTURE.md, Conventions).
 pub const DEFAULT_RANK_TOLERANCE: f64 = 1e-9;
 
 /// The rank of a set of screws (the columns of `m`) with the singular values that decide it.

@@ -5,7 +5,7 @@
 //! [`span_basis`], [`nullspace`], [`Rank`]) are the crate's linear-algebra layer, re-exported
 //! here; this module adds the screw theory on top of them ([`reciprocal_complement`]).
 //!
-//! Conventions (DESIGN.md): a twist is `t = (ω; v)`, the angular velocity and the velocity of
+//! Conventions (ARCHITECTURE.md): a twist is `t = (ω; v)`, the angular velocity and the velocity of
 //! the body point that coincides with the frame origin; a wrench is `w = (f; m)`, the force and
 //! the moment about the origin. The reciprocal (virtual power) product is `w · t = f·v + m·ω`.
 //! The joint screw of a revolute with unit axis `u` through `p` is `(u; p × u)`; of a prismatic

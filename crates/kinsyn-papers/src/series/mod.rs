@@ -211,7 +211,7 @@ impl Module {
 
     /// The constraint wrench system of the module (paper 002 eq. 9): one pure force per leg
     /// along its revolute axis through its S centre, as columns `(f; m)` (kinsyn's wrench
-    /// order, DESIGN.md) with moments about `reference`, in the lower body's axes.
+    /// order, ARCHITECTURE.md's conventions) with moments about `reference`, in the lower body's axes.
     #[must_use]
     pub fn constraint_wrenches(&self, reference: &Vector3<f64>) -> Matrix6x3<f64> {
         let mut w = Matrix6x3::zeros();

@@ -11,7 +11,7 @@
 //! A spanning tree grown from the ground gives every body a path of joints; the joints off the
 //! tree (chords) close one loop each — a fundamental cycle basis, so the mechanism has
 //! `joints − bodies + 1` independent loops. With the screws of the product-of-exponentials
-//! convention (DESIGN.md: twist `(ω; v)` at the ground origin),
+//! convention (ARCHITECTURE.md: twist `(ω; v)` at the ground origin),
 //! - a body's displacement is the product of `exp(±ξ q)` along its tree path;
 //! - a chord `a → b` closes when `g_a exp(ξ q) g_b⁻¹ = I`;
 //! - the loop-closure Jacobian `C` says `V_b − V_a − ξ' q̇ = 0` for each chord, with `V` the

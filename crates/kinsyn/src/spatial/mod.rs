@@ -15,7 +15,7 @@
 //! - `compose(a, b)` is the product `a · b`, `x ↦ R_a (R_b x + p_b) + p_a`: the displacement `b`
 //!   followed by `a` in the ground frame, or `a` followed by `b` expressed in the frame `a`
 //!   carries — the order of the product of exponentials `exp(ξ₁q₁) exp(ξ₂q₂) ···`.
-//! - A twist `(ω; v)` ([`Twist`]) is an element of se(3) in DESIGN.md's order: the angular
+//! - A twist `(ω; v)` ([`Twist`]) is an element of se(3) in the order of ARCHITECTURE.md's conventions: the angular
 //!   velocity, then the velocity of the body point at the frame origin. (Murray–Li–Sastry write
 //!   `(v; ω)`; their formulas are used here with the blocks swapped.)
 //! - `exp(ξ)` is the displacement after moving with the twist `ξ` for unit time, `log` its
@@ -45,7 +45,7 @@ pub use explog::{exp, inverse_left_jacobian, log, rotation_log};
 use nalgebra::{IsometryMatrix3, Matrix3, Matrix6, Rotation3, Translation3, Vector3, Vector6};
 
 /// A twist `(ω; v)`: an element of se(3), the instantaneous motion of a rigid body — `ω` its
-/// angular velocity, `v` the velocity of the body point at the frame origin (DESIGN.md). The
+/// angular velocity, `v` the velocity of the body point at the frame origin (ARCHITECTURE.md, Conventions). The
 /// joint screws, pitch and axis of a twist are screw theory and live in [`crate::screw`].
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Twist {

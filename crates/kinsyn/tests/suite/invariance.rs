@@ -4,7 +4,7 @@
 //! - **unit invariance**: a manipulator with every length multiplied by 10^k, k ∈ [−9, 9], is the
 //!   same mechanism in another unit. No rank, dof, pattern or singularity may change, and `J_D`
 //!   must be the same with its moment columns multiplied by 10^k (a row `(f; m_P)` with a unit
-//!   force has its moment in length units). DESIGN.md: rank decisions do not depend on units.
+//!   force has its moment in length units). ARCHITECTURE.md, Conventions: rank decisions do not depend on units.
 //! - **seed stability**: the multioperation table of `kinsyn modes` (dof and pattern of every lock
 //!   subset) is the same for 50 seeds. A group claimed for one seed and not another would be a
 //!   guess (docs/verification.md gives the argument why continuous random walks with separated
