@@ -55,10 +55,11 @@ pub fn configurable_velocity_json(
 /// `kinsyn components FILE [--inputs I] [--free-inputs] [--method M] --seed S --json`, as JSON
 /// text: the irreducible components of a manipulator file's constraint variety or of a Bertini
 /// input file's system. `method` is `by-dimension` (the default) or `regeneration`; `max_paths`
-/// is `--max-paths` (the most paths tracked in all, counted before any tracking).
+/// is `--max-paths` (the most paths tracked in all, counted before any tracking; `None` for the
+/// command's default, [`kinsyn::homotopy::DEFAULT_DECOMPOSE_PATHS`]).
 #[pyfunction]
 #[pyo3(signature = (path, inputs = None, free_inputs = false, method = "by-dimension", seed = 1,
-    max_paths = kinsyn::homotopy::DEFAULT_DECOMPOSE_PATHS))]
+    max_paths = None))]
 #[expect(
     clippy::needless_pass_by_value,
     reason = "PyO3 converts a Python path (str or os.PathLike) to an owned PathBuf"
@@ -70,7 +71,7 @@ pub fn components_json(
     free_inputs: bool,
     method: &str,
     seed: u64,
-    max_paths: u64,
+    max_paths: Option<u64>,
 ) -> PyResult<String> {
     // The command's clap parses these names.
     let method = match method {
@@ -87,7 +88,7 @@ pub fn components_json(
         method,
         inputs,
         free_inputs,
-        max_paths,
+        max_paths: max_paths.unwrap_or(kinsyn::homotopy::DEFAULT_DECOMPOSE_PATHS),
     };
     py.detach(|| components(&path, &options, true))
         .map_err(py_err)

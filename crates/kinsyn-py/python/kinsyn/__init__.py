@@ -602,14 +602,14 @@ def components(
     free_inputs: bool = False,
     method: str = "by-dimension",
     seed: int = 1,
-    max_paths: int = 65536,
+    max_paths: Optional[int] = None,
 ) -> pd.DataFrame:
     """The irreducible components of the solution set of a manipulator file's constraint
     equations in the Study parameters of its platform (at the ``inputs``, the reference values
     for inputs not named; or with every input an unknown when ``free_inputs``) or of a Bertini
     input file's system, by numerical irreducible decomposition (``kinsyn components FILE
     [--inputs] [--free-inputs] [--method] --seed S --json``; ``method``: ``"by-dimension"`` or
-    ``"regeneration"``; ``max_paths``: ``--max-paths``, the most paths tracked in all, counted
+    ``"regeneration"``; ``max_paths``: ``--max-paths``, the command's default when ``None``, the most paths tracked in all, counted
     from the degrees before any tracking; past it the call raises ``InputError``).
 
     One row per component: ``dimension`` (0: isolated solutions, the assemblies; above 0: a

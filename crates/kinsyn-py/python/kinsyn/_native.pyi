@@ -38,7 +38,7 @@ def components_json(
     free_inputs: bool = False,
     method: str = "by-dimension",
     seed: int = 1,
-    max_paths: int = 65536,
+    max_paths: Optional[int] = None,
 ) -> str: ...
 def sweep_json(
     out: Union[str, PathLike[str]],
