@@ -18,7 +18,7 @@ create_exception!(
     "Bad input (a missing or malformed file, chain, pattern, pose, input value or option): what the kinsyn command refuses with exit code 2."
 );
 
-pub use kinsyn_cli::Error;
+pub use kinsyn_report::Error;
 
 /// `e` as a Python exception: bad input as [`InputError`], anything else as [`KinsynError`],
 /// with the command's one-line message.
@@ -27,7 +27,7 @@ pub use kinsyn_cli::Error;
     reason = "used as `map_err(py_err)`, which passes the error by value"
 )]
 pub fn py_err(e: Error) -> PyErr {
-    let message = kinsyn_cli::one_line(&e.to_string());
+    let message = kinsyn_report::terminal::one_line(&e.to_string());
     match e {
         Error::Input(_) => InputError::new_err(message),
         Error::Io(_) | Error::Internal(_) => KinsynError::new_err(message),

@@ -1,15 +1,16 @@
 //! A parallel manipulator from a description file or built from a leg chain (as `kinsyn
 //! build`), and what the command line computes for it: `analyze`, `modes` and
-//! `analyze --all-assemblies`, each by the command's own code (the crate `kinsyn_cli`).
+//! `analyze --all-assemblies`, each by the command's own code (the crate `kinsyn_report`).
 
 use crate::error::{Error, py_err};
 use kinsyn::manipulator::build::BuildSpec;
 use kinsyn::manipulator::{self as m, file};
 use kinsyn::mechanism::SampleSettings;
-use kinsyn_cli::{
+use kinsyn_report::files::read_text;
+use kinsyn_report::manipulator::{
     DEFAULT_MAX_SUBSETS, MAX_SAMPLES, MAX_SUBSETS_CEILING, Placement, Selection, all_assemblies_of,
     analyse_placed, build_checked, modes_json, parse_description, parse_description_legs,
-    read_text, sample_modes, select_body,
+    sample_modes, select_body,
 };
 use nalgebra::DMatrix;
 use pyo3::prelude::*;

@@ -1,13 +1,14 @@
 //! The commands of single papers: `kinsyn configurable inverse|forward|velocity` (paper 003's
 //! planar 4-RRR with a configurable platform) and `kinsyn components` (the irreducible
 //! components of a manipulator's constraint variety or of a polynomial system; paper 004's
-//! operation modes), each by the command's own code (the crate `kinsyn_cli`).
+//! operation modes), each by the command's own code (the crate `kinsyn_report`).
 
 use crate::error::{Error, py_err};
 use kinsyn::manipulator::DecompositionMethod;
-use kinsyn_cli::{
-    ComponentsOptions, components, configurable_forward, configurable_inverse,
-    configurable_velocity,
+use kinsyn_report::components::{ComponentsOptions, components};
+use kinsyn_report::configurable::{
+    forward as configurable_forward, inverse as configurable_inverse,
+    velocity as configurable_velocity,
 };
 use pyo3::prelude::*;
 use std::path::PathBuf;

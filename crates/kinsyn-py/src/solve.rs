@@ -1,10 +1,11 @@
 //! `kinsyn solve`: every isolated solution of a polynomial system in Bertini's input format,
 //! by homotopy continuation, certified; the report of `kinsyn solve --json`, computed by the
-//! command's own code ([`kinsyn_cli::solve_system`]).
+//! command's own code ([`kinsyn_report::solve::solve_system`]).
 
 use crate::error::{Error, py_err};
 use kinsyn::homotopy::StartSystem;
-use kinsyn_cli::{Show, SolveOptions, read_text, solve_system};
+use kinsyn_report::files::read_text;
+use kinsyn_report::solve::{Show, SolveOptions, solve_system};
 use pyo3::prelude::*;
 use std::path::PathBuf;
 

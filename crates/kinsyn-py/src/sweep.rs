@@ -1,13 +1,14 @@
 //! `kinsyn sweep` and `kinsyn sweep merge` (docs/sweep.md): the catalogue-wide multioperation
 //! sweep run into a directory (whole or one shard, resumable), shard directories merged, the
 //! shards of a sweep listed, and a sweep's rows read back (checked as `kinsyn sweep report`
-//! reads them), each by the command's own code ([`kinsyn_cli::sweep`]).
+//! reads them), each by the command's own code ([`kinsyn_report::sweep`]).
 
 use crate::error::{Error, py_err};
 use kinsyn::mechanism::SampleSettings;
-use kinsyn_cli::check_file;
-use kinsyn_cli::sweep::{
-    ROW_FILES, Request, Shard, check_rows, merge, outcome_json, read_results, rows_file,
+use kinsyn::sweep::DesignRow;
+use kinsyn_report::files::check_file;
+use kinsyn_report::sweep::{
+    Manifest, ROW_FILES, Request, Shard, check_rows, merge, outcome_json, read_results, rows_file,
     run_request, shard_manifests,
 };
 use pyo3::prelude::*;
@@ -23,6 +24,43 @@ fn to_json(value: Result<serde_json::Value, serde_json::Error>) -> PyResult<Stri
     value
         .and_then(|v| serde_json::to_string(&v))
         .map_err(|e| py_err(Error::Internal(format!("the sweep report: {e}"))))
+}
+
+/// `row` as a JSON line whose `groups` and `non_groups` are their compact JSON text, as
+/// `designs.parquet` holds them.
+fn table_line(row: &DesignRow) -> String {
+    let mut value = serde_json::to_value(row).unwrap_or_default();
+    if let Some(o) = value.as_object_mut() {
+        for (name, reached) in [("groups", &row.groups), ("non_groups", &row.non_groups)] {
+            o.insert(
+                name.into(),
+                serde_json::to_string(reached).unwrap_or_default().into(),
+            );
+        }
+    }
+    let mut line = value.to_string();
+    line.push('\n');
+    line
+}
+
+/// `rows` (sorted by design) and `manifest` as the bytes of `designs.parquet`, encoded by pyarrow
+/// (`kinsyn.sweep._parquet_bytes`): the command's columns, types and key-value metadata
+/// ([`Manifest::table_metadata`]), so that the file reads back to the same frame as the
+/// command's. Called with the GIL taken again while a sweep or merge runs without it.
+fn parquet_by_pyarrow(manifest: &Manifest, rows: &[&DesignRow]) -> Result<Vec<u8>, Error> {
+    let rows: String = rows.iter().map(|r| table_line(r)).collect();
+    let metadata: Vec<(String, String)> = manifest
+        .table_metadata()
+        .into_iter()
+        .map(|(k, v)| (k.to_string(), v))
+        .collect();
+    Python::attach(|py| -> PyResult<Vec<u8>> {
+        py.import("kinsyn.sweep")?
+            .getattr("_parquet_bytes")?
+            .call1((rows, metadata))?
+            .extract()
+    })
+    .map_err(|e| Error::Internal(format!("designs.parquet (pyarrow): {e}")))
 }
 
 /// `kinsyn sweep --out OUT [--shard K/N] … --json`, as JSON text: runs (or resumes, or finds
@@ -64,7 +102,7 @@ pub fn sweep_json(
         force,
     };
     let outcome = py
-        .detach(|| run_request(&out, &request, false))
+        .detach(|| run_request(&out, &request, false, &parquet_by_pyarrow))
         .map_err(py_err)?;
     to_json(Ok(outcome_json(&outcome)))
 }
@@ -84,7 +122,9 @@ pub fn sweep_merge_json(
     out: PathBuf,
     force: bool,
 ) -> PyResult<String> {
-    let manifest = py.detach(|| merge(&dirs, &out, force)).map_err(py_err)?;
+    let manifest = py
+        .detach(|| merge(&dirs, &out, force, &parquet_by_pyarrow))
+        .map_err(py_err)?;
     to_json(serde_json::to_value(&manifest))
 }
 
@@ -133,10 +173,7 @@ pub fn sweep_partitions_json(
 }
 
 /// The manifest and rows read back, as `{"manifest": …, "rows": […]}`.
-fn rows_json(
-    manifest: Option<&kinsyn_cli::sweep::Manifest>,
-    rows: &[kinsyn::sweep::DesignRow],
-) -> PyResult<String> {
+fn rows_json(manifest: Option<&Manifest>, rows: &[DesignRow]) -> PyResult<String> {
     to_json(Ok(
         serde_json::json!({ "manifest": manifest, "rows": rows }),
     ))

@@ -1,7 +1,9 @@
 """kinsyn.sweep against the kinsyn command line (an independent run of `kinsyn sweep` by the
-binary named by $KINSYN_BIN, or `cargo run`): the files of a Python run are the command's byte
-for byte; three shards run on a Dask cluster of two worker processes and merged are one run's
-files byte for byte; the Parquet and JSON-lines files read back give equal frames with the
+binary named by $KINSYN_BIN, or `cargo run`): the files of a Python run are the command's
+(designs.jsonl and sweep.json byte for byte; designs.parquet, which Python encodes with pyarrow
+and the command with the Parquet crate, with the same schema, key-value metadata, row groups
+and values); three shards run on a Dask cluster of two worker processes and merged are one
+run's files likewise; the Parquet and JSON-lines files read back give equal frames with the
 command's design count; bad input raises InputError with the command's one-line message.
 
 Dask (dask, distributed) is required in CI (`CI` set) and skipped elsewhere when missing; the
@@ -39,9 +41,29 @@ def optional(module: str, why: str):
         pytest.skip(f"{module} is not installed: {why} is skipped")
 
 
+def assert_same_table(a: Path, b: Path) -> None:
+    """The two designs.parquet files hold the same table: schema (names, types, nullability),
+    key-value metadata, row groups and values, read by pyarrow."""
+    import pyarrow.parquet as pq
+
+    fa, fb = pq.ParquetFile(a), pq.ParquetFile(b)
+    assert fa.metadata.num_row_groups == fb.metadata.num_row_groups
+    assert [fa.metadata.row_group(i).num_rows for i in range(fa.metadata.num_row_groups)] == [
+        fb.metadata.row_group(i).num_rows for i in range(fb.metadata.num_row_groups)
+    ]
+    ta, tb = fa.read(), fb.read()
+    kinsyn_keys = lambda t: {k: v for k, v in t.schema.metadata.items() if k.startswith(b"kinsyn.")}
+    assert kinsyn_keys(ta) == kinsyn_keys(tb) and len(kinsyn_keys(ta)) == 6
+    assert ta.schema.remove_metadata().equals(tb.schema.remove_metadata())
+    assert ta.equals(tb)
+
+
 def assert_same_files(a: Path, b: Path) -> None:
     for name in FILES:
-        assert (a / name).read_bytes() == (b / name).read_bytes(), name
+        if name.endswith(".parquet"):
+            assert_same_table(a / name, b / name)
+        else:
+            assert (a / name).read_bytes() == (b / name).read_bytes(), name
     assert not (a / "checkpoint.jsonl").exists()
 
 

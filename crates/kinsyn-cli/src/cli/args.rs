@@ -271,7 +271,7 @@ pub(super) enum Command {
         /// Which solutions to list: real (the real non-singular ones), all (every finite one),
         /// none.
         #[arg(long, value_enum, default_value = "real")]
-        show: crate::cli::solve::Show,
+        show: ShowArg,
         /// Skip the Krawczyk certificates.
         #[arg(long)]
         no_certify: bool,
@@ -617,6 +617,27 @@ impl From<MethodArg> for kinsyn::manipulator::DecompositionMethod {
         match m {
             MethodArg::Regeneration => Self::Regeneration,
             MethodArg::ByDimension => Self::ByDimension,
+        }
+    }
+}
+
+/// `--show` of `kinsyn solve`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub(super) enum ShowArg {
+    /// Every finite solution.
+    All,
+    /// The real non-singular ones.
+    Real,
+    /// None: the counts only.
+    None,
+}
+
+impl From<ShowArg> for kinsyn_report::solve::Show {
+    fn from(s: ShowArg) -> Self {
+        match s {
+            ShowArg::All => Self::All,
+            ShowArg::Real => Self::Real,
+            ShowArg::None => Self::None,
         }
     }
 }

@@ -8,42 +8,25 @@
 
 mod args;
 mod catalogue;
-pub mod components;
-pub mod configurable;
 mod export;
-pub mod files;
 mod hexa_plot;
-pub mod manipulator;
 mod notation;
-mod output;
 mod plot;
 mod site;
-pub mod solve;
-pub mod sweep;
+mod sweep_command;
+pub use sweep_command::parquet_bytes;
 mod sweep_report;
-pub mod terminal;
 
-/// The error type under its name inside the command's modules.
-use Error as CliError;
+/// The commands as functions (`kinsyn-report`), under the names the command's modules use.
+use kinsyn_report::{
+    Error as CliError, components, configurable, json, list_or_none, manipulator, output, solve,
+    sweep, terminal,
+};
 
 use args::{Cli, Command};
 use clap::Parser;
 
-/// A failure the user sees, as one message (printed after `kinsyn: error: `, made one line by
-/// [`terminal::one_line`]): bad input (exit 2) or an environment problem (exit 1).
-#[derive(Debug, thiserror::Error)]
-pub enum Error {
-    /// Bad input: arguments, chains, patterns, poses, input values, files that are missing or
-    /// not what they should be, faulty fields, limits (exit 2).
-    #[error("{0}")]
-    Input(String),
-    /// An output that cannot be written (exit 1).
-    #[error("{0}")]
-    Io(#[from] std::io::Error),
-    /// A fault of the build, not of the input or the environment (exit 1).
-    #[error("{0}")]
-    Internal(String),
-}
+pub use kinsyn_report::Error;
 
 /// Runs the command line on the process's arguments, printing the result on stdout and errors
 /// on stderr, and returns the process exit code (0, 1 or 2, as above).
@@ -254,7 +237,7 @@ fn execute(command: Command) -> Result<String, CliError> {
                 threads,
                 max_paths,
                 certify: !no_certify,
-                show,
+                show: show.into(),
             },
             as_json,
         ),
@@ -355,12 +338,12 @@ fn execute(command: Command) -> Result<String, CliError> {
                     json,
                 }),
             ..
-        } => sweep::merge_command(&dirs, &out, force.force, json),
+        } => sweep_command::merge_command(&dirs, &out, force.force, json),
         Command::Sweep { run, command: None } => {
             let out = run
                 .out
                 .ok_or_else(|| CliError::Input("kinsyn sweep needs --out DIR".into()))?;
-            sweep::command(
+            sweep_command::command(
                 &out,
                 &sweep::Request {
                     legs: run.legs,
@@ -377,25 +360,5 @@ fn execute(command: Command) -> Result<String, CliError> {
                 run.json,
             )
         }
-    }
-}
-
-/// `value` as the pretty JSON a command prints, one trailing newline, with every control or
-/// bidirectional-formatting character in its strings as a `\uXXXX` escape
-/// ([`kinsyn::markup::json_visible`]): valid JSON of the same value that cannot drive a terminal.
-pub(super) fn json<T: serde::Serialize>(value: &T) -> String {
-    let mut s =
-        kinsyn::markup::json_visible(&serde_json::to_string_pretty(value).expect("serialisable"))
-            .into_owned();
-    s.push('\n');
-    s
-}
-
-/// The items joined by commas, or "none".
-pub(super) fn list_or_none(items: &[String]) -> String {
-    if items.is_empty() {
-        "none".to_string()
-    } else {
-        items.join(", ")
     }
 }

@@ -214,7 +214,7 @@ fn sweep_report_reads_only_regular_files_within_the_limit() {
     // A file one byte over the limit (sparse: nothing is written or read): refused on its size.
     let big = dir.path().join("big.jsonl");
     let f = std::fs::File::create(&big).unwrap();
-    f.set_len(kinsyn_cli::sweep::MAX_ROWS_BYTES + 1).unwrap();
+    f.set_len(kinsyn_report::sweep::MAX_ROWS_BYTES + 1).unwrap();
     let o = run_within(
         &["sweep", "report", big.to_str().unwrap()],
         Duration::from_secs(20),

@@ -2,7 +2,8 @@
 design (a verified catalogue chain as every leg of a symmetric manipulator, the same joints of
 each leg actuated) with the displacement groups and non-group patterns its lock subsets reach,
 written as files in a directory (``designs.jsonl``, ``designs.parquet``, ``sweep.json``), the
-same bytes as the command's.
+command's files (the JSON files byte for byte, the Parquet table encoded by pyarrow with the
+command's columns, types and metadata).
 
 - :func:`partitions`: the ``n`` shards of a sweep, as picklable :class:`Partition` values;
 - :func:`run`: one shard (or the whole sweep) into a directory, resumable like the command
@@ -250,12 +251,67 @@ def run(
 def merge(dirs: Sequence[PathType], out: PathType, *, force: bool = False) -> Dict[str, Any]:
     """Merges the complete shard directories ``dirs`` of one sweep (shards 1/N … N/N, each
     once, any order) into ``out`` (created if missing; its parent must exist): the files one
-    run of the whole sweep writes, byte for byte (``kinsyn sweep merge DIRS… --out OUT``).
+    run of the whole sweep writes (``kinsyn sweep merge DIRS… --out OUT``): ``designs.jsonl``
+    and ``sweep.json`` byte for byte, ``designs.parquet`` the same table encoded by pyarrow.
     A sweep's file already in ``out`` is refused unless ``force`` (``--force``), which
     replaces it. Returns the merged manifest (``sweep.json``)."""
     return json.loads(
         _native.sweep_merge_json([fspath(d) for d in dirs], fspath(out), force)
     )
+
+
+# designs.parquet's columns and Arrow types, as the command writes them (docs/sweep.md).
+_TABLE_COLUMNS = [
+    ("design", "uint32"),
+    ("chain", "string"),
+    ("notation", "string"),
+    ("family", "string"),
+    ("legs", "uint32"),
+    ("actuated", "list<uint32>"),
+    ("inputs", "uint32"),
+    ("dof", "uint32"),
+    ("subgroups", "uint32"),
+    ("kinds", "uint32"),
+    ("group_kinds", "list<string>"),
+    ("groups", "string"),
+    ("non_groups", "string"),
+    ("unsampled", "uint32"),
+    ("singular", "uint32"),
+    ("singular_lock_sets", "list<string>"),
+    ("error", "string"),
+]
+
+# Rows per row group, as the command writes them: a sweep of up to this many designs is one group.
+_ROW_GROUP = 16_384
+
+
+def _parquet_bytes(rows_jsonl: str, metadata: Sequence[Tuple[str, str]]) -> bytes:
+    """The bytes of ``designs.parquet`` for the rows ``rows_jsonl`` (JSON lines sorted by
+    design, ``groups`` and ``non_groups`` already compact JSON text) with the key-value
+    ``metadata`` (the manifest's fields): the command's columns, types, snappy pages and row
+    groups, encoded by pyarrow. The native sweep and merge call it when they write the table;
+    it needs pyarrow."""
+    try:
+        import pyarrow as pa
+        import pyarrow.parquet as pq
+    except ImportError as e:
+        raise InputError("writing designs.parquet needs pyarrow (pip install pyarrow)") from e
+    types = {
+        "uint32": pa.uint32(),
+        "string": pa.string(),
+        "list<uint32>": pa.list_(pa.uint32()),
+        "list<string>": pa.list_(pa.string()),
+    }
+    schema = pa.schema(
+        [pa.field(name, types[t], nullable=(name == "error")) for name, t in _TABLE_COLUMNS],
+        metadata=dict(metadata),
+    )
+    rows = [json.loads(line) for line in rows_jsonl.splitlines() if line]
+    columns = {name: [r.get(name) for r in rows] for name, _ in _TABLE_COLUMNS}
+    table = pa.Table.from_pydict(columns, schema=schema)
+    sink = pa.BufferOutputStream()
+    pq.write_table(table, sink, compression="snappy", row_group_size=_ROW_GROUP)
+    return sink.getvalue().to_pybytes()
 
 
 def _has_pyarrow() -> bool:

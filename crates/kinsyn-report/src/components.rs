@@ -2,9 +2,9 @@
 //! file) or of a manipulator's constraint variety — its assemblies, self-motions and operation
 //! modes — by numerical irreducible decomposition (docs/operation-modes.md).
 
-use super::manipulator::{input_texts, inputs_or_reference, load, pose_text};
-use super::solve::{paths_text, read_input, weighted_paths};
-use super::{CliError, json, terminal};
+use crate::manipulator::{input_texts, inputs_or_reference, load, pose_text};
+use crate::solve::{paths_text, read_input, weighted_paths};
+use crate::{Error, json, terminal};
 use kinsyn::homotopy::{
     Component, DecomposeError, DecomposeSettings, Decomposition, MAX_DECOMPOSE_PATHS,
     RegenerationProgress, decompose, decompose_paths, regenerate_with_progress, regeneration_paths,
@@ -43,7 +43,7 @@ fn refusal(
     method: DecompositionMethod,
     system: Option<&System>,
     e: &DecomposeError,
-) -> CliError {
+) -> Error {
     let raise = |limit: u64| {
         if limit < MAX_DECOMPOSE_PATHS {
             format!(
@@ -53,7 +53,7 @@ fn refusal(
             format!("more than the limit of {limit} (2^22), the most --max-paths takes")
         }
     };
-    CliError::Input(match e {
+    Error::Input(match e {
         DecomposeError::TooManyPaths {
             estimate,
             unknowns,
@@ -113,15 +113,15 @@ fn refusal(
 ///
 /// # Errors
 ///
-/// [`CliError::Input`]: a file that cannot be read or is neither kind, `--inputs` or
+/// [`Error::Input`]: a file that cannot be read or is neither kind, `--inputs` or
 /// `--free-inputs` for a polynomial system, malformed input values, a manipulator whose legs
 /// have no polynomial form, or a decomposition that fails.
 pub fn components(
     path: &Path,
     options: &ComponentsOptions,
     as_json: bool,
-) -> Result<String, CliError> {
-    let text = super::files::read_text(
+) -> Result<String, Error> {
+    let text = crate::files::read_text(
         path,
         "not a Bertini input file or a kinsyn manipulator file",
     )?;
@@ -134,7 +134,7 @@ pub fn components(
         return manipulator_components(path, options, settings, as_json);
     }
     if options.inputs.is_some() || options.free_inputs {
-        return Err(CliError::Input(format!(
+        return Err(Error::Input(format!(
             "{}: --inputs and --free-inputs apply to manipulator files, not to polynomial systems",
             path.display()
         )));
@@ -331,10 +331,10 @@ fn manipulator_components(
     options: &ComponentsOptions,
     decompose: DecomposeSettings,
     as_json: bool,
-) -> Result<String, CliError> {
+) -> Result<String, Error> {
     let m: Manipulator = load(path)?;
     if options.free_inputs && options.inputs.is_some() {
-        return Err(CliError::Input(
+        return Err(Error::Input(
             "--free-inputs and --inputs exclude each other: free inputs are unknowns".into(),
         ));
     }
@@ -357,7 +357,7 @@ fn manipulator_components(
             refusal(&path.display().to_string(), options.method, None, &e)
         }
         other @ OperationModeError::System(_) => {
-            CliError::Input(format!("{}: {other}", path.display()))
+            Error::Input(format!("{}: {other}", path.display()))
         }
     })?;
     let input_text = input_texts(&m, &all);

@@ -1,7 +1,7 @@
 //! `kinsyn solve`: every isolated solution of a polynomial system in a Bertini input file, by
 //! homotopy continuation, certified.
 
-use super::{CliError, json, terminal};
+use crate::{Error, json, terminal};
 use kinsyn::certify::Reality;
 use kinsyn::homotopy::{self, RunsReport, Solution, SolveReport, SolveSettings, StartSystem};
 use kinsyn::poly::{C64, System, bertini};
@@ -10,7 +10,7 @@ use std::fmt::Write as _;
 use std::path::Path;
 
 /// Which solutions the text lists.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Show {
     /// Every finite solution.
     All,
@@ -50,23 +50,23 @@ pub const MAX_THREADS: usize = 256;
 const NOT_BERTINI: &str = "not a Bertini input file";
 
 /// Reads a Bertini input file; errors name the file and the line.
-pub fn read_input(path: &Path) -> Result<bertini::BertiniInput, CliError> {
-    let text = super::files::read_text(path, NOT_BERTINI)?;
+pub fn read_input(path: &Path) -> Result<bertini::BertiniInput, Error> {
+    let text = crate::files::read_text(path, NOT_BERTINI)?;
     parse_input(&text, &path.display().to_string())
 }
 
 /// The system of the Bertini input `text`; errors name `source` and the line.
-fn parse_input(text: &str, source: &str) -> Result<bertini::BertiniInput, CliError> {
+fn parse_input(text: &str, source: &str) -> Result<bertini::BertiniInput, Error> {
     if !text.lines().any(|l| {
         l.split('%')
             .next()
             .is_some_and(|code| code.trim_start().starts_with("INPUT"))
     }) {
-        return Err(CliError::Input(format!(
+        return Err(Error::Input(format!(
             "{source} is {NOT_BERTINI} (no INPUT section)"
         )));
     }
-    bertini::parse(text).map_err(|e| CliError::Input(format!("{source}: {e}")))
+    bertini::parse(text).map_err(|e| Error::Input(format!("{source}: {e}")))
 }
 
 /// `n word` or `n words`.
@@ -133,9 +133,9 @@ pub fn check_cost(
     system: &System,
     settings: &SolveSettings,
     option: PathOption,
-) -> Result<u128, CliError> {
+) -> Result<u128, Error> {
     homotopy::check_solvable(system, settings).map_err(|e| {
-        CliError::Input(match e {
+        Error::Input(match e {
             homotopy::HomotopyError::TooManyPaths {
                 paths,
                 weight,
@@ -183,11 +183,11 @@ pub fn check_cost(
 /// Refuses, naming the file and the equation, a system homotopy continuation cannot solve:
 /// not square, an equation that is a constant (no solution, or no isolated one if zero), a
 /// coefficient that overflowed double precision. The cost is checked next ([`check_cost`]).
-fn check_solvable(file: &str, input: &bertini::BertiniInput) -> Result<(), CliError> {
+fn check_solvable(file: &str, input: &bertini::BertiniInput) -> Result<(), Error> {
     let system = &input.system;
     let (equations, variables) = (system.len(), system.nvars());
     if equations != variables {
-        return Err(CliError::Input(format!(
+        return Err(Error::Input(format!(
             "{file}: {} in {}: {} equations than variables; kinsyn solve needs a square system (as many equations as variables)",
             count(equations, "equation"),
             count(variables, "variable"),
@@ -207,7 +207,7 @@ fn check_solvable(file: &str, input: &bertini::BertiniInput) -> Result<(), CliEr
     for (i, p) in system.equations().iter().enumerate() {
         if p.total_degree() == 0 {
             let value = p.terms().map(|(_, c)| c).sum::<C64>();
-            return Err(CliError::Input(if value == C64::new(0.0, 0.0) {
+            return Err(Error::Input(if value == C64::new(0.0, 0.0) {
                 format!(
                     "{file}: equation {} is identically zero: the solutions are not isolated",
                     name(i)
@@ -227,7 +227,7 @@ fn check_solvable(file: &str, input: &bertini::BertiniInput) -> Result<(), CliEr
         if p.terms()
             .any(|(_, c)| !(c.re.is_finite() && c.im.is_finite()))
         {
-            return Err(CliError::Input(format!(
+            return Err(Error::Input(format!(
                 "{file}: equation {} has a coefficient beyond the range of double precision (its expansion overflows)",
                 name(i)
             )));
@@ -240,17 +240,17 @@ fn check_solvable(file: &str, input: &bertini::BertiniInput) -> Result<(), CliEr
 pub fn with_threads<T: Send>(
     threads: Option<usize>,
     work: impl FnOnce() -> T + Send,
-) -> Result<T, CliError> {
+) -> Result<T, Error> {
     match threads {
         None => Ok(work()),
-        Some(n) if n == 0 || n > MAX_THREADS => Err(CliError::Input(format!(
+        Some(n) if n == 0 || n > MAX_THREADS => Err(Error::Input(format!(
             "--threads {n}: give 1 to {MAX_THREADS}"
         ))),
         Some(n) => rayon::ThreadPoolBuilder::new()
             .num_threads(n)
             .build()
             .map(|pool| pool.install(work))
-            .map_err(|e| CliError::Internal(format!("cannot start {n} threads: {e}"))),
+            .map_err(|e| Error::Internal(format!("cannot start {n} threads: {e}"))),
     }
 }
 
@@ -262,7 +262,7 @@ pub fn solve_with_bar(
     settings: &SolveSettings,
     runs: usize,
     option: PathOption,
-) -> Result<RunsReport, CliError> {
+) -> Result<RunsReport, Error> {
     let paths = check_cost(source, system, settings, option)?;
     let paths = usize::try_from(paths).unwrap_or(usize::MAX);
     let bar = terminal::progress(paths.saturating_mul(runs), "paths", "solve");
@@ -273,7 +273,7 @@ pub fn solve_with_bar(
             ..settings.clone()
         };
         let report = homotopy::solve_with_progress(system, &s, &|| bar.inc(1))
-            .map_err(|e| CliError::Input(e.to_string()))?;
+            .map_err(|e| Error::Input(e.to_string()))?;
         reports.push(report);
     }
     bar.finish_and_clear();
@@ -281,11 +281,11 @@ pub fn solve_with_bar(
 }
 
 /// `kinsyn solve FILE`.
-pub fn solve(path: &Path, options: &SolveOptions, as_json: bool) -> Result<String, CliError> {
-    let text = super::files::read_text(path, NOT_BERTINI)?;
+pub fn solve(path: &Path, options: &SolveOptions, as_json: bool) -> Result<String, Error> {
+    let text = crate::files::read_text(path, NOT_BERTINI)?;
     let solved = solve_system(&text, &path.display().to_string(), options)?;
     if options.start == StartSystem::MultiHomogeneous && solved.system.groups().len() < 2 {
-        super::terminal::warning(&format!(
+        crate::terminal::warning(&format!(
             "{}: one variable group: the multi-homogeneous start system is the total-degree count",
             path.display()
         ));
@@ -317,13 +317,13 @@ pub struct Solved {
 ///
 /// # Errors
 ///
-/// [`CliError::Input`]: options out of range (`--runs`, `--threads`), text that is not a
+/// [`Error::Input`]: options out of range (`--runs`, `--threads`), text that is not a
 /// Bertini input, a system that is not square, has a constant equation or overflowing
-/// coefficients or too many paths, or a solve that fails; [`CliError::Internal`] when the
+/// coefficients or too many paths, or a solve that fails; [`Error::Internal`] when the
 /// threads cannot be started.
-pub fn solve_system(text: &str, source: &str, options: &SolveOptions) -> Result<Solved, CliError> {
+pub fn solve_system(text: &str, source: &str, options: &SolveOptions) -> Result<Solved, Error> {
     if options.runs == 0 || options.runs > MAX_RUNS {
-        return Err(CliError::Input(format!(
+        return Err(Error::Input(format!(
             "--runs {}: give 1 to {MAX_RUNS}",
             options.runs
         )));

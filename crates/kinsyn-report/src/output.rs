@@ -11,42 +11,42 @@
 //!   where a file is, its parent is missing) is bad input (exit 2); the environment failing
 //!   (permission denied, a full disk) is exit 1. Either message names the path.
 
-use super::CliError;
+use crate::Error;
 use kinsyn::output::{self, OutputError, Overwrite};
 use std::path::{Path, PathBuf};
 
 /// `error` met on the output `given` with `option` (e.g. `--out figures`) as the command's
 /// error: one line naming the option, the path and, for an existing file, `--force`.
-pub(super) fn error(option: &str, given: &Path, error: OutputError) -> CliError {
+pub fn error(option: &str, given: &Path, error: OutputError) -> Error {
     let shown = given.display();
     let this = error.path() == given;
     match error {
-        OutputError::Exists { .. } if this => CliError::Input(format!(
+        OutputError::Exists { .. } if this => Error::Input(format!(
             "{option} {shown}: exists; give --force to replace it"
         )),
-        OutputError::Exists { path } => CliError::Input(format!(
+        OutputError::Exists { path } => Error::Input(format!(
             "{option} {shown}: {} exists; give --force to replace it",
             path.display()
         )),
         OutputError::IsFolder { .. } if this => {
-            CliError::Input(format!("{option} {shown}: is a folder, give a file"))
+            Error::Input(format!("{option} {shown}: is a folder, give a file"))
         }
-        OutputError::IsFolder { path } => CliError::Input(format!(
+        OutputError::IsFolder { path } => Error::Input(format!(
             "{option} {shown}: {} is a folder, where kinsyn writes a file",
             path.display()
         )),
         OutputError::NotFolder { .. } if this => {
-            CliError::Input(format!("{option} {shown}: is a file, give a folder"))
+            Error::Input(format!("{option} {shown}: is a file, give a folder"))
         }
-        OutputError::NotFolder { path } => CliError::Input(format!(
+        OutputError::NotFolder { path } => Error::Input(format!(
             "{option} {shown}: {} is not a folder",
             path.display()
         )),
-        OutputError::Missing { path } => CliError::Input(format!(
+        OutputError::Missing { path } => Error::Input(format!(
             "{option} {shown}: {} does not exist",
             path.display()
         )),
-        OutputError::Io { path, source } => CliError::Io(std::io::Error::new(
+        OutputError::Io { path, source } => Error::Io(std::io::Error::new(
             source.kind(),
             format!("cannot write {}: {source}", path.display()),
         )),
@@ -55,7 +55,7 @@ pub(super) fn error(option: &str, given: &Path, error: OutputError) -> CliError 
 
 /// A file given by `option` (`-o FILE`, `--mjcf FILE`), checked before the command's work.
 #[derive(Debug)]
-pub(super) struct OutputFile<'a> {
+pub struct OutputFile<'a> {
     option: &'static str,
     path: &'a Path,
     overwrite: Overwrite,
@@ -64,11 +64,7 @@ pub(super) struct OutputFile<'a> {
 impl<'a> OutputFile<'a> {
     /// `path` as the file `option` names: its folder exists, and nothing is there unless
     /// `force` (a folder never is accepted).
-    pub(super) fn check(
-        option: &'static str,
-        path: &'a Path,
-        force: bool,
-    ) -> Result<Self, CliError> {
+    pub fn check(option: &'static str, path: &'a Path, force: bool) -> Result<Self, Error> {
         let overwrite = Overwrite::from_force(force);
         output::check_target(path, overwrite).map_err(|e| error(option, path, e))?;
         Ok(OutputFile {
@@ -79,12 +75,12 @@ impl<'a> OutputFile<'a> {
     }
 
     /// The file's path.
-    pub(super) fn path(&self) -> &Path {
+    pub fn path(&self) -> &Path {
         self.path
     }
 
     /// Writes `bytes` to the file, whole or not at all.
-    pub(super) fn write(&self, bytes: &[u8]) -> Result<(), CliError> {
+    pub fn write(&self, bytes: &[u8]) -> Result<(), Error> {
         output::write(self.path, bytes, self.overwrite)
             .map_err(|e| error(self.option, self.path, e))
     }
@@ -92,7 +88,7 @@ impl<'a> OutputFile<'a> {
 
 /// The folder given by `option` (`--out DIR`) and the files a command writes into it.
 #[derive(Debug)]
-pub(super) struct OutputFolder {
+pub struct OutputFolder {
     option: &'static str,
     dir: PathBuf,
     overwrite: Overwrite,
@@ -103,12 +99,12 @@ impl OutputFolder {
     /// subfolder allowed: `entry/T1-001.html`): a folder, or absent with a parent folder that
     /// exists; every one of the files absent unless `force` (counted in the refusal). Nothing
     /// is created or written.
-    pub(super) fn check<I, S>(
+    pub fn check<I, S>(
         option: &'static str,
         dir: &Path,
         names: I,
         force: bool,
-    ) -> Result<Self, CliError>
+    ) -> Result<Self, Error>
     where
         I: IntoIterator<Item = S>,
         S: AsRef<Path>,
@@ -143,7 +139,7 @@ impl OutputFolder {
                 1 => String::new(),
                 n => format!(" (and {} more of the files it writes)", n - 1),
             };
-            return Err(CliError::Input(format!(
+            return Err(Error::Input(format!(
                 "{option} {}: {} exists{more}; give --force to replace {}",
                 dir.display(),
                 first.display(),
@@ -154,7 +150,7 @@ impl OutputFolder {
     }
 
     /// Creates the folder if missing (only it), and its subfolders `subfolders`.
-    pub(super) fn create(&self, subfolders: &[&str]) -> Result<(), CliError> {
+    pub fn create(&self, subfolders: &[&str]) -> Result<(), Error> {
         output::create_folder(&self.dir).map_err(|e| self.error(e))?;
         for sub in subfolders {
             output::create_folder(&self.dir.join(sub)).map_err(|e| self.error(e))?;
@@ -163,14 +159,14 @@ impl OutputFolder {
     }
 
     /// Writes `bytes` to the file `name` in the folder, whole or not at all; its path.
-    pub(super) fn write(&self, name: impl AsRef<Path>, bytes: &[u8]) -> Result<PathBuf, CliError> {
+    pub fn write(&self, name: impl AsRef<Path>, bytes: &[u8]) -> Result<PathBuf, Error> {
         let path = self.dir.join(name);
         output::write(&path, bytes, self.overwrite).map_err(|e| self.error(e))?;
         Ok(path)
     }
 
     /// `e` as the command's error, naming the option and the folder.
-    fn error(&self, e: OutputError) -> CliError {
+    fn error(&self, e: OutputError) -> Error {
         error(self.option, &self.dir, e)
     }
 }

@@ -13,18 +13,18 @@ pub use modes::{
     sample_modes,
 };
 
-use super::CliError;
-use super::output::OutputFile;
+use crate::Error;
+use crate::output::OutputFile;
 use kinsyn::manipulator::build::{BuildField, BuildSpec, build};
 use kinsyn::manipulator::file::Description;
 use kinsyn::manipulator::{Manipulator, ManipulatorError, file};
 use std::path::Path;
 
 /// Reads and builds a manipulator file; errors name the file and the field. A path that is
-/// not a regular file, a file over [`crate::cli::files::MAX_FILE_BYTES`], or text that is not UTF-8 or not a
+/// not a regular file, a file over [`crate::files::MAX_FILE_BYTES`], or text that is not UTF-8 or not a
 /// description is refused as "not a kinsyn manipulator file" before it is parsed further.
-pub fn load(path: &Path) -> Result<Manipulator, CliError> {
-    let text = crate::cli::files::read_text(path, file::NOT_A_DESCRIPTION)?;
+pub fn load(path: &Path) -> Result<Manipulator, Error> {
+    let text = crate::files::read_text(path, file::NOT_A_DESCRIPTION)?;
     parse_description(&text, &path.display().to_string())
 }
 
@@ -33,32 +33,32 @@ pub fn load(path: &Path) -> Result<Manipulator, CliError> {
 ///
 /// # Errors
 ///
-/// [`CliError::Input`]: `SOURCE is not a kinsyn manipulator file (why)` when the text is not a
+/// [`Error::Input`]: `SOURCE is not a kinsyn manipulator file (why)` when the text is not a
 /// description, `SOURCE: …` naming the faulty field otherwise.
-pub fn parse_description(text: &str, source: &str) -> Result<Manipulator, CliError> {
+pub fn parse_description(text: &str, source: &str) -> Result<Manipulator, Error> {
     Manipulator::from_json(text).map_err(|e| match &e {
         ManipulatorError::Description(d) if d.is_not_a_description() => {
-            CliError::Input(format!("{source} is {}", d.message))
+            Error::Input(format!("{source} is {}", d.message))
         }
-        _ => CliError::Input(format!("{source}: {e}")),
+        _ => Error::Input(format!("{source}: {e}")),
     })
 }
 
 /// The description a file holds, as the description of several bodies (a `/1` file as its `/2`
 /// form), without building the mechanism.
-pub fn load_description(path: &Path) -> Result<file::MultibodyDescription, CliError> {
-    let text = crate::cli::files::read_text(path, file::NOT_A_DESCRIPTION)?;
+pub fn load_description(path: &Path) -> Result<file::MultibodyDescription, Error> {
+    let text = crate::files::read_text(path, file::NOT_A_DESCRIPTION)?;
     parse_multibody(&text, &path.display().to_string())
 }
 
 /// The description `text` as the description of several bodies (a `/1` description as its `/2`
 /// form), `source` naming it in messages, without building the mechanism.
-fn parse_multibody(text: &str, source: &str) -> Result<file::MultibodyDescription, CliError> {
+fn parse_multibody(text: &str, source: &str) -> Result<file::MultibodyDescription, Error> {
     file::MultibodyDescription::from_json(text).map_err(|e| {
         if e.is_not_a_description() {
-            CliError::Input(format!("{source} is {}", e.message))
+            Error::Input(format!("{source} is {}", e.message))
         } else {
-            CliError::Input(format!("{source}: {e}"))
+            Error::Input(format!("{source}: {e}"))
         }
     })
 }
@@ -69,16 +69,16 @@ fn parse_multibody(text: &str, source: &str) -> Result<file::MultibodyDescriptio
 ///
 /// # Errors
 ///
-/// [`CliError::Input`]: what [`parse_description`] refuses, or `--legs "…": …` for a malformed
+/// [`Error::Input`]: what [`parse_description`] refuses, or `--legs "…": …` for a malformed
 /// leg list or one that leaves no mechanism.
 pub fn parse_description_legs(
     text: &str,
     source: &str,
     legs: &str,
     body: Option<&str>,
-) -> Result<Manipulator, CliError> {
+) -> Result<Manipulator, Error> {
     let d = parse_multibody(text, source)?;
-    let refuse = |e: &dyn std::fmt::Display| CliError::Input(format!("--legs {legs:?}: {e}"));
+    let refuse = |e: &dyn std::fmt::Display| Error::Input(format!("--legs {legs:?}: {e}"));
     let kept = kinsyn::manipulator::parse_leg_list(legs, d.legs.len())
         .and_then(|list| d.with_legs(&list, body))
         .map_err(|e| refuse(&e))?;
@@ -90,24 +90,24 @@ pub fn parse_description_legs(
 ///
 /// # Errors
 ///
-/// [`CliError::Input`]: `--body "…": …` or `--relative-to "…": …` for a body the manipulator
+/// [`Error::Input`]: `--body "…": …` or `--relative-to "…": …` for a body the manipulator
 /// does not have.
 pub fn select_body(
     m: Manipulator,
     body: Option<&str>,
     relative: Option<&str>,
-) -> Result<Manipulator, CliError> {
+) -> Result<Manipulator, Error> {
     let m = match body {
         None => m,
         Some(name) => m
             .with_end_effector(name)
-            .map_err(|e| CliError::Input(format!("--body {name:?}: {e}")))?,
+            .map_err(|e| Error::Input(format!("--body {name:?}: {e}")))?,
     };
     match relative {
         None => Ok(m),
         Some(name) => m
             .relative_to(name)
-            .map_err(|e| CliError::Input(format!("--relative-to {name:?}: {e}"))),
+            .map_err(|e| Error::Input(format!("--relative-to {name:?}: {e}"))),
     }
 }
 
@@ -118,10 +118,10 @@ fn load_with_body(
     body: Option<&str>,
     relative: Option<&str>,
     legs: Option<&str>,
-) -> Result<Manipulator, CliError> {
+) -> Result<Manipulator, Error> {
     let m = match legs {
         Some(list) => {
-            let text = crate::cli::files::read_text(path, file::NOT_A_DESCRIPTION)?;
+            let text = crate::files::read_text(path, file::NOT_A_DESCRIPTION)?;
             parse_description_legs(&text, &path.display().to_string(), list, body)?
         }
         None => load(path)?,
@@ -138,7 +138,7 @@ fn leg_warnings(m: &Manipulator) -> Vec<String> {
 /// succeeded, so that an error stays the only line on stderr.
 fn warn(path: &Path, warnings: &[String]) {
     for w in warnings {
-        super::terminal::warning(&format!("{}: {w}", path.display()));
+        crate::terminal::warning(&format!("{}: {w}", path.display()));
     }
 }
 
@@ -164,20 +164,20 @@ pub fn build_flag(field: BuildField) -> String {
 ///
 /// # Errors
 ///
-/// [`CliError::Input`]: a faulty specification (naming the option, [`build_flag`]), or a chain
+/// [`Error::Input`]: a faulty specification (naming the option, [`build_flag`]), or a chain
 /// that in this geometry makes no usable manipulator or legs that are not generic.
-pub fn build_checked(spec: &BuildSpec) -> Result<(Description, Manipulator), CliError> {
-    let description = build(spec).map_err(|e| CliError::Input(e.describe(build_flag)))?;
+pub fn build_checked(spec: &BuildSpec) -> Result<(Description, Manipulator), Error> {
+    let description = build(spec).map_err(|e| Error::Input(e.describe(build_flag)))?;
     // Check that what is written can be read back and built.
     let m = Manipulator::new(&description).map_err(|e| {
-        CliError::Input(format!(
+        Error::Input(format!(
             "--chain {:?} in this geometry makes no usable manipulator: {e}",
             spec.chain.trim()
         ))
     })?;
     // `build` refuses legs that are not generic; the file as read back must agree.
     if let Some(w) = m.leg_warnings().first() {
-        return Err(CliError::Input(format!(
+        return Err(Error::Input(format!(
             "--chain {:?}: {w}",
             spec.chain.trim()
         )));
@@ -191,7 +191,7 @@ pub fn build_command(
     spec: &BuildSpec,
     output: Option<&Path>,
     force: bool,
-) -> Result<String, CliError> {
+) -> Result<String, Error> {
     let target = output
         .map(|path| OutputFile::check("--output", path, force))
         .transpose()?;
@@ -221,11 +221,11 @@ pub fn build_command(
 pub fn inputs_or_reference(
     m: &Manipulator,
     text: Option<&str>,
-) -> Result<Vec<(usize, f64)>, CliError> {
+) -> Result<Vec<(usize, f64)>, Error> {
     let mut inputs = match text {
         Some(text) => m
             .parse_inputs(text)
-            .map_err(|e| CliError::Input(format!("--inputs {text:?}: {e}")))?,
+            .map_err(|e| Error::Input(format!("--inputs {text:?}: {e}")))?,
         None => Vec::new(),
     };
     for a in 0..m.actuators().len() {
@@ -286,7 +286,7 @@ pub fn stack_command(
     heights: Vec<f64>,
     output: Option<&Path>,
     force: bool,
-) -> Result<String, CliError> {
+) -> Result<String, Error> {
     use kinsyn::manipulator::stacking::{ModuleKind, StackSpec, stack};
     let target = output
         .map(|path| OutputFile::check("--output", path, force))
@@ -296,7 +296,7 @@ pub fn stack_command(
         .map(|t| match t.trim().to_ascii_uppercase().as_str() {
             "RPS" | "3-RPS" => Ok(ModuleKind::Rps),
             "SPR" | "3-SPR" => Ok(ModuleKind::Spr),
-            _ => Err(CliError::Input(format!(
+            _ => Err(Error::Input(format!(
                 "--modules: {t:?} is not a module (RPS or SPR)"
             ))),
         })
@@ -306,9 +306,9 @@ pub fn stack_command(
         radii,
         heights,
     })
-    .map_err(|e| CliError::Input(format!("kinsyn stack: {e}")))?;
+    .map_err(|e| Error::Input(format!("kinsyn stack: {e}")))?;
     Manipulator::from_bodies(&d)
-        .map_err(|e| CliError::Internal(format!("the stack written does not read back: {e}")))?;
+        .map_err(|e| Error::Internal(format!("the stack written does not read back: {e}")))?;
     let text = d.to_json();
     match target {
         Some(target) => {

@@ -3,8 +3,8 @@
 
 use super::files::{self, Checkpoint, Manifest, read_checkpoint, read_manifest, write_results};
 use super::selection::{Shard, SweepSelection};
-use crate::cli::CliError;
-use crate::cli::output::{self, OutputFolder};
+use crate::Error;
+use crate::output::{self, OutputFolder};
 use kinsyn::catalogue::Catalogue;
 use kinsyn::sweep::rows::Known;
 use kinsyn::sweep::{Design, DesignRow, SweepSettings};
@@ -106,21 +106,22 @@ fn difference(found: &Manifest, wanted: &Manifest) -> Option<String> {
 /// Runs the sweep of `options` over `catalogue` into `dir` (created if missing, not its
 /// parent): resumes an interrupted run of the same sweep there from its checkpoint, evaluates
 /// the remaining designs in parallel (each row appended to the checkpoint as soon as it is
-/// done, `progress` advanced), then writes the result files (`files::write_results`). A
+/// done, `progress` advanced), then writes the result files (`files::write_results`, `designs.parquet` by `table`). A
 /// directory already complete with the same sweep is left as it is. A fresh start refuses a
 /// directory holding another sweep or any of the sweep's files ([`FILES`](super::FILES))
 /// unless `options.force`, which replaces them.
 ///
 /// # Errors
-/// [`CliError::Input`] for an empty selection, bad `--threads`, a directory holding another
+/// [`Error::Input`] for an empty selection, bad `--threads`, a directory holding another
 /// sweep or files of one (without `force`), a path that is no folder or whose parent is
-/// missing, or a damaged checkpoint; [`CliError::Io`] when the directory cannot be written.
+/// missing, or a damaged checkpoint; [`Error::Io`] when the directory cannot be written.
 pub fn sweep(
     catalogue: &Catalogue,
     dir: &Path,
     options: &SweepOptions,
     progress: &indicatif::ProgressBar,
-) -> Result<SweepOutcome, CliError> {
+    table: super::Table,
+) -> Result<SweepOutcome, Error> {
     let all = options.selection.designs(catalogue, &options.settings)?;
     let manifest = Manifest::new(
         &options.settings,
@@ -148,7 +149,7 @@ pub fn sweep(
     kinsyn::output::check_folder(dir).map_err(|e| output::error("--out", dir, e))?;
     let found = match read_manifest(dir) {
         // With --force a manifest that does not read is replaced too.
-        Err(CliError::Input(_)) if options.force => None,
+        Err(Error::Input(_)) if options.force => None,
         other => other?,
     };
     let found = match found {
@@ -157,7 +158,7 @@ pub fn sweep(
             // Replaced: this sweep starts afresh there.
             Some(_) if options.force => None,
             Some(why) => {
-                return Err(CliError::Input(format!(
+                return Err(Error::Input(format!(
                     "{} holds another sweep: {why}; give another --out DIR, the options it was written with, or --force to replace it",
                     dir.display()
                 )));
@@ -210,7 +211,7 @@ pub fn sweep(
         return Ok(outcome);
     }
     let written = Instant::now();
-    write_results(dir, &manifest, &rows)?;
+    write_results(dir, &manifest, &rows, table)?;
     outcome.write_ms = written.elapsed().as_secs_f64() * 1e3;
     outcome.complete = true;
     outcome.manifest.complete = true;
@@ -225,8 +226,8 @@ fn evaluate(
     options: &SweepOptions,
     checkpoint: Checkpoint,
     progress: &indicatif::ProgressBar,
-) -> Result<(Vec<DesignRow>, usize), CliError> {
-    let state = Mutex::new((checkpoint, Vec::<DesignRow>::new(), None::<CliError>));
+) -> Result<(Vec<DesignRow>, usize), Error> {
+    let state = Mutex::new((checkpoint, Vec::<DesignRow>::new(), None::<Error>));
     let stop = AtomicBool::new(false);
     let one = |d: &&Design| {
         if stop.load(Ordering::SeqCst) {
@@ -249,7 +250,7 @@ fn evaluate(
         }
         progress.inc(1);
     };
-    let threads = crate::cli::solve::with_threads(options.threads, || {
+    let threads = crate::solve::with_threads(options.threads, || {
         pending.par_iter().for_each(one);
         rayon::current_num_threads()
     })?;
@@ -268,9 +269,9 @@ fn checkpoint_rows(
     path: &Path,
     mine: &[Design],
     legs: usize,
-) -> Result<(BTreeMap<usize, DesignRow>, u64), CliError> {
+) -> Result<(BTreeMap<usize, DesignRow>, u64), Error> {
     let (rows, keep) = read_checkpoint(path, &Known::sweep(mine, legs)).map_err(|e| {
-        CliError::Input(format!(
+        Error::Input(format!(
             "{e}; the checkpoint is damaged: remove it to start again"
         ))
     })?;

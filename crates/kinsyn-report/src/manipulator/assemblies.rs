@@ -2,8 +2,8 @@
 //! inputs, from its constraint polynomials in Study parameters solved by homotopy continuation.
 
 use super::{clean, input_texts, inputs_or_reference, leg_warnings, load_with_body, warn};
-use crate::cli::solve::{PathOption, certificate_line, solve_with_bar};
-use crate::cli::{CliError, json};
+use crate::solve::{PathOption, certificate_line, solve_with_bar};
+use crate::{Error, json};
 use kinsyn::geometry::Chart;
 use kinsyn::homotopy::{SolveReport, SolveSettings};
 use kinsyn::manipulator::{LegKind, Manipulator, PositionRequest};
@@ -41,7 +41,7 @@ pub fn all_assemblies(
     body: Option<&str>,
     seed: u64,
     as_json: bool,
-) -> Result<String, CliError> {
+) -> Result<String, Error> {
     let m = load_with_body(path, body, None, None)?;
     let all = all_assemblies_of(&m, inputs_text, seed)?;
     let warnings = leg_warnings(&m);
@@ -78,17 +78,17 @@ pub struct AllAssemblies {
 ///
 /// # Errors
 ///
-/// [`CliError::Input`]: malformed input values, a manipulator without a position system, or
+/// [`Error::Input`]: malformed input values, a manipulator without a position system, or
 /// a system the solver refuses.
 pub fn all_assemblies_of(
     m: &Manipulator,
     inputs_text: Option<&str>,
     seed: u64,
-) -> Result<AllAssemblies, CliError> {
+) -> Result<AllAssemblies, Error> {
     let inputs = inputs_or_reference(m, inputs_text)?;
     let ps = m
         .position_system(&inputs, &Chart::random_linear(seed))
-        .map_err(|e| CliError::Input(format!("--all-assemblies: {e}")))?;
+        .map_err(|e| Error::Input(format!("--all-assemblies: {e}")))?;
     let settings = SolveSettings {
         seed,
         ..SolveSettings::default()

@@ -1,8 +1,13 @@
-//! `designs.parquet`: the rows of a sweep as one flat table (docs/sweep.md lists the columns),
-//! with the sweep's manifest in the file's key-value metadata.
+//! `kinsyn sweep` and `kinsyn sweep merge` as the command runs them: the reports as text, and
+//! `designs.parquet`, the rows of a sweep as one flat table (docs/sweep.md lists the columns)
+//! with the sweep's manifest in the file's key-value metadata, encoded by the Parquet crate's
+//! Arrow writer.
 
-use super::files::Manifest;
-use crate::cli::CliError;
+use super::sweep::{
+    CHECKPOINT, JSONL, MANIFEST, Manifest, PARQUET, Request, SweepOutcome, merge, outcome_json,
+    run_request,
+};
+use super::{CliError, json};
 use arrow_array::builder::{ListBuilder, StringBuilder, UInt32Builder};
 use arrow_array::{ArrayRef, RecordBatch, StringArray, UInt32Array};
 use kinsyn::sweep::DesignRow;
@@ -10,6 +15,8 @@ use parquet::arrow::ArrowWriter;
 use parquet::basic::Compression;
 use parquet::file::metadata::KeyValue;
 use parquet::file::properties::WriterProperties;
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
 /// Rows per row group: the whole committed sweep (9261 designs) is one group, and the groups
@@ -38,21 +45,13 @@ fn compact<T: serde::Serialize>(value: &T) -> String {
     serde_json::to_string(value).expect("serialisable")
 }
 
-/// The file's key-value metadata: the manifest's fields that say what the rows are.
+/// The file's key-value metadata ([`Manifest::table_metadata`]).
 fn metadata(manifest: &Manifest) -> Vec<KeyValue> {
-    vec![
-        KeyValue::new("kinsyn.format".into(), manifest.format.clone()),
-        KeyValue::new("kinsyn.version".into(), manifest.kinsyn.clone()),
-        KeyValue::new("kinsyn.settings".into(), compact(&manifest.settings)),
-        KeyValue::new("kinsyn.selection".into(), compact(&manifest.selection)),
-        KeyValue::new(
-            "kinsyn.shard".into(),
-            manifest
-                .shard
-                .map_or_else(|| "none".to_string(), |s| s.to_string()),
-        ),
-        KeyValue::new("kinsyn.designs".into(), manifest.designs.to_string()),
-    ]
+    manifest
+        .table_metadata()
+        .into_iter()
+        .map(|(k, v)| KeyValue::new(k.into(), v))
+        .collect()
 }
 
 /// `rows` (sorted by design) as the bytes of `designs.parquet`: snappy pages, the same bytes
@@ -126,4 +125,92 @@ pub fn parquet_bytes(manifest: &Manifest, rows: &[&DesignRow]) -> Result<Vec<u8>
     writer.write(&batch).map_err(|e| internal(&e))?;
     writer.close().map_err(|e| internal(&e))?;
     Ok(bytes)
+}
+
+/// `kinsyn sweep --out DIR …`: runs (or resumes) the sweep and reports it.
+pub(super) fn command(
+    out: &Path,
+    request: &Request,
+    bench: bool,
+    as_json: bool,
+) -> Result<String, CliError> {
+    let outcome = run_request(out, request, true, &parquet_bytes)?;
+    if as_json {
+        return Ok(json(&outcome_json(&outcome)));
+    }
+    Ok(summary(&outcome, bench))
+}
+
+/// The text report of a run, with `--bench`'s figures.
+fn summary(o: &SweepOutcome, bench: bool) -> String {
+    let m = &o.manifest;
+    let shard = m.shard.map_or_else(String::new, |s| format!(", shard {s}"));
+    let what = format!(
+        "{} designs of {} ({}; {} legs, {} actuated per leg, seed {}{shard})",
+        m.designs,
+        m.sweep_designs,
+        m.selection,
+        m.settings.legs,
+        m.settings
+            .actuated_per_leg
+            .iter()
+            .map(ToString::to_string)
+            .collect::<Vec<_>>()
+            .join(" or "),
+        m.settings.sampling.seed,
+    );
+    if o.already_complete {
+        return format!(
+            "{}: already complete with {what}; nothing rewritten\n",
+            o.out
+        );
+    }
+    let mut s = format!(
+        "{}: {what}: {} evaluated, resumed {} rows, {} errors; ",
+        o.out, o.evaluated, o.resumed, o.errors
+    );
+    if o.complete {
+        let _ = writeln!(s, "complete: {JSONL}, {PARQUET}, {MANIFEST}");
+    } else {
+        let _ = writeln!(
+            s,
+            "stopped with {} of {} rows in {CHECKPOINT}; run the same command again to resume",
+            o.resumed + o.evaluated,
+            m.designs
+        );
+    }
+    if bench {
+        let _ = writeln!(s, "designs evaluated      {}", o.evaluated);
+        let _ = writeln!(s, "lock subsets sampled   {}", o.lock_subsets);
+        let _ = writeln!(s, "wall seconds           {:.3}", o.seconds);
+        let _ = writeln!(s, "designs/s              {:.2}", o.designs_per_second());
+        let _ = writeln!(
+            s,
+            "subsets per core-s     {:.1}",
+            o.subsets_per_core_second()
+        );
+        let _ = writeln!(s, "threads                {}", o.threads);
+        let _ = writeln!(s, "writing ms             {:.1}", o.write_ms);
+    }
+    s
+}
+
+/// `kinsyn sweep merge DIR… --out OUT [--force]`.
+pub(super) fn merge_command(
+    dirs: &[PathBuf],
+    out: &Path,
+    force: bool,
+    as_json: bool,
+) -> Result<String, CliError> {
+    let manifest = merge(dirs, out, force, &parquet_bytes)?;
+    if as_json {
+        return Ok(json(&manifest));
+    }
+    Ok(format!(
+        "{}: merged {} shards: {} designs ({}); {JSONL}, {PARQUET}, {MANIFEST}\n",
+        out.display(),
+        dirs.len(),
+        manifest.designs,
+        manifest.selection
+    ))
 }

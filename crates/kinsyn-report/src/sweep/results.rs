@@ -3,7 +3,7 @@
 //! its sweep when the folder holds the manifest, else against the catalogue.
 
 use super::files::{self, Manifest, read_manifest, read_rows};
-use crate::cli::CliError;
+use crate::Error;
 use kinsyn::sweep::DesignRow;
 use kinsyn::sweep::rows::Known;
 use std::path::{Path, PathBuf};
@@ -25,14 +25,14 @@ pub struct SweepRows {
 /// its folder.
 ///
 /// # Errors
-/// [`CliError::Input`] for a missing path or a folder without `designs.jsonl`.
-pub fn rows_file(path: &Path) -> Result<(PathBuf, PathBuf), CliError> {
+/// [`Error::Input`] for a missing path or a folder without `designs.jsonl`.
+pub fn rows_file(path: &Path) -> Result<(PathBuf, PathBuf), Error> {
     let shown = path.display();
-    let metadata = std::fs::metadata(path).map_err(|e| CliError::Input(format!("{shown}: {e}")))?;
+    let metadata = std::fs::metadata(path).map_err(|e| Error::Input(format!("{shown}: {e}")))?;
     if metadata.is_dir() {
         let file = path.join(files::JSONL);
         if std::fs::symlink_metadata(&file).is_err() {
-            return Err(CliError::Input(format!(
+            return Err(Error::Input(format!(
                 "{shown} has no designs.jsonl: give a sweep folder (kinsyn sweep --out) or a .jsonl file of design rows"
             )));
         }
@@ -53,8 +53,8 @@ pub fn rows_file(path: &Path) -> Result<(PathBuf, PathBuf), CliError> {
 /// A manifest that does not read or does not check, and `read`'s.
 pub fn with_known<T>(
     folder: &Path,
-    read: impl FnOnce(&Known) -> Result<T, CliError>,
-) -> Result<(Option<Manifest>, T), CliError> {
+    read: impl FnOnce(&Known) -> Result<T, Error>,
+) -> Result<(Option<Manifest>, T), Error> {
     let catalogue = super::catalogue()?;
     let manifest = read_manifest(folder)?;
     let value = match &manifest {
@@ -71,13 +71,13 @@ pub fn with_known<T>(
 /// ([`with_known`], [`read_rows`]); an empty file is refused.
 ///
 /// # Errors
-/// [`CliError::Input`] for a file or manifest that does not read or check (one line naming
+/// [`Error::Input`] for a file or manifest that does not read or check (one line naming
 /// the file, and the line for a row), or no rows.
-pub fn read_results(path: &Path) -> Result<SweepRows, CliError> {
+pub fn read_results(path: &Path) -> Result<SweepRows, Error> {
     let (file, folder) = rows_file(path)?;
     let (manifest, rows) = with_known(&folder, |known| read_rows(&file, known))?;
     if rows.is_empty() {
-        return Err(CliError::Input(format!(
+        return Err(Error::Input(format!(
             "{}: no design rows (the file is empty)",
             file.display()
         )));
@@ -100,10 +100,10 @@ pub fn check_rows(
     text: &str,
     folder: &Path,
     shown: &Path,
-) -> Result<(Option<Manifest>, Vec<DesignRow>), CliError> {
+) -> Result<(Option<Manifest>, Vec<DesignRow>), Error> {
     with_known(folder, |known| {
         known
             .parse_rows(text)
-            .map_err(|e| CliError::Input(format!("{} {e}", shown.display())))
+            .map_err(|e| Error::Input(format!("{} {e}", shown.display())))
     })
 }

@@ -2,7 +2,7 @@
 //! paper's own formulas (`kinsyn_papers::configurable`), with the geometry of §5 (a = 80, b = 120,
 //! c = 120 mm, `A_i` at (±200, 0), (0, ±200) mm). Angles are in degrees at this interface.
 
-use super::{CliError, json};
+use crate::{Error, json};
 use kinsyn_papers::configurable::trajectory::assemble;
 use kinsyn_papers::configurable::velocity::{Configuration, velocities};
 use kinsyn_papers::configurable::{
@@ -15,8 +15,8 @@ use std::fmt::Write as _;
 ///
 /// # Errors
 ///
-/// [`CliError::Input`], `OPTION "TEXT": …` when the text is not `n` finite numbers.
-pub fn numbers(option: &str, text: &str, n: usize) -> Result<Vec<f64>, CliError> {
+/// [`Error::Input`], `OPTION "TEXT": …` when the text is not `n` finite numbers.
+pub fn numbers(option: &str, text: &str, n: usize) -> Result<Vec<f64>, Error> {
     let values: Vec<f64> = text
         .split(',')
         .map(|t| {
@@ -27,21 +27,21 @@ pub fn numbers(option: &str, text: &str, n: usize) -> Result<Vec<f64>, CliError>
         })
         .collect::<Option<_>>()
         .ok_or_else(|| {
-            CliError::Input(format!(
+            Error::Input(format!(
                 "{option} {text:?}: give {n} finite numbers separated by commas"
             ))
         })?;
     if values.len() == n {
         Ok(values)
     } else {
-        Err(CliError::Input(format!(
+        Err(Error::Input(format!(
             "{option} {text:?}: {} numbers given, {n} expected",
             values.len()
         )))
     }
 }
 
-fn inputs(text: &str) -> Result<[f64; 4], CliError> {
+fn inputs(text: &str) -> Result<[f64; 4], Error> {
     let v = numbers("--q", text, 4)?;
     Ok(std::array::from_fn(|i| v[i].to_radians()))
 }
@@ -55,7 +55,7 @@ fn point(v: Vector2<f64>) -> String {
 ///
 /// # Errors
 ///
-/// [`CliError::Input`], naming the option: malformed numbers, neither or both of `--centre`
+/// [`Error::Input`], naming the option: malformed numbers, neither or both of `--centre`
 /// and `--c4`, or a pose the legs cannot reach.
 pub fn inverse(
     centre: Option<&str>,
@@ -63,7 +63,7 @@ pub fn inverse(
     theta: f64,
     phi: f64,
     as_json: bool,
-) -> Result<String, CliError> {
+) -> Result<String, Error> {
     let m = Configurable::paper003();
     let (theta, phi) = (theta.to_radians(), phi.to_radians());
     let (inverse, described) = match (centre, corner) {
@@ -95,12 +95,12 @@ pub fn inverse(
             )
         }
         _ => {
-            return Err(CliError::Input(
+            return Err(Error::Input(
                 "give the pose by --centre X,Y or by --c4 X,Y".into(),
             ));
         }
     };
-    let inverse = inverse.map_err(|e| CliError::Input(e.to_string()))?;
+    let inverse = inverse.map_err(|e| Error::Input(e.to_string()))?;
     let sets = inverse.sets();
     if as_json {
         return Ok(json(&serde_json::json!({
@@ -146,22 +146,22 @@ pub fn inverse(
 ///
 /// # Errors
 ///
-/// [`CliError::Input`], naming the option: malformed numbers, a method other than 1 and 2,
+/// [`Error::Input`], naming the option: malformed numbers, a method other than 1 and 2,
 /// or a homotopy that fails.
-pub fn forward(q_text: &str, method: u8, as_json: bool) -> Result<String, CliError> {
+pub fn forward(q_text: &str, method: u8, as_json: bool) -> Result<String, Error> {
     let m = Configurable::paper003();
     let q = inputs(q_text)?;
     let method = match method {
         1 => ForwardMethod::Centre,
         2 => ForwardMethod::Corner,
         k => {
-            return Err(CliError::Input(format!(
+            return Err(Error::Input(format!(
                 "--method {k}: the paper's methods are 1 and 2"
             )));
         }
     };
-    let f = super::terminal::working("forward position", || forward_position(&m, q, method))
-        .map_err(|e| CliError::Input(e.to_string()))?;
+    let f = crate::terminal::working("forward position", || forward_position(&m, q, method))
+        .map_err(|e| Error::Input(e.to_string()))?;
     if as_json {
         return Ok(json(&serde_json::json!({
             "method": method.number(),
@@ -227,14 +227,14 @@ pub fn forward(q_text: &str, method: u8, as_json: bool) -> Result<String, CliErr
 ///
 /// # Errors
 ///
-/// [`CliError::Input`], naming the option: malformed numbers, no assembly near the pose, or
+/// [`Error::Input`], naming the option: malformed numbers, no assembly near the pose, or
 /// a singular configuration.
 pub fn velocity(
     q_text: &str,
     qdot_text: &str,
     near: Option<&str>,
     as_json: bool,
-) -> Result<String, CliError> {
+) -> Result<String, Error> {
     let m = Configurable::paper003();
     let q = inputs(q_text)?;
     let rates = numbers("--qdot", qdot_text, 4)?;
@@ -254,7 +254,7 @@ pub fn velocity(
         },
     };
     let pose = assemble(&m, &q, &guess).ok_or_else(|| {
-        CliError::Input(format!(
+        Error::Input(format!(
             "--q {q_text:?}: no assembly near the pose given (Newton does not converge)"
         ))
     })?;
@@ -262,7 +262,7 @@ pub fn velocity(
         &Configuration::new(&m, q, &pose),
         &Vector4::new(rates[0], rates[1], rates[2], rates[3]),
     )
-    .map_err(|e| CliError::Input(e.to_string()))?;
+    .map_err(|e| Error::Input(e.to_string()))?;
     if as_json {
         return Ok(json(&serde_json::json!({
             "c4": [pose.c4.x, pose.c4.y], "theta_deg": pose.theta.to_degrees(), "phi_deg": pose.phi.to_degrees(),

@@ -1,7 +1,7 @@
 //! Which designs a sweep evaluates: the catalogue chains chosen (`--chains`, `--family`) and
 //! this run's shard of them (`--shard K/N`).
 
-use crate::cli::CliError;
+use crate::Error;
 use kinsyn::catalogue::Catalogue;
 use kinsyn::sweep::{Design, SweepSettings, designs};
 use kinsyn::synthesis::tables;
@@ -22,17 +22,17 @@ impl SweepSelection {
     /// against `catalogue`: the ids become the catalogue's spelling, in catalogue order.
     ///
     /// # Errors
-    /// [`CliError::Input`] naming an unknown id, an id whose chain is not verified (so not in
+    /// [`Error::Input`] naming an unknown id, an id whose chain is not verified (so not in
     /// the sweep), an empty list, or an unknown family.
     pub fn new(
         catalogue: &Catalogue,
         chains: Option<&str>,
         family: Option<&str>,
-    ) -> Result<Self, CliError> {
+    ) -> Result<Self, Error> {
         if let Some(f) = family
             && !tables::families().contains(&f)
         {
-            return Err(CliError::Input(format!(
+            return Err(Error::Input(format!(
                 "--family {f:?}: unknown family; the families are {}",
                 tables::families().join(", ")
             )));
@@ -43,7 +43,7 @@ impl SweepSelection {
                 let mut wanted = Vec::new();
                 for id in text.split(',').map(str::trim) {
                     if id.is_empty() {
-                        return Err(CliError::Input(format!(
+                        return Err(Error::Input(format!(
                             "--chains {text:?}: an empty id; give catalogue ids such as T1-001,T4-034"
                         )));
                     }
@@ -52,12 +52,12 @@ impl SweepSelection {
                         .iter()
                         .find(|e| e.id.eq_ignore_ascii_case(id))
                     else {
-                        return Err(CliError::Input(format!(
+                        return Err(Error::Input(format!(
                             "--chains: no catalogue entry {id:?} (ids look like T1-001; see kinsyn catalogue list)"
                         )));
                     };
                     if !catalogue.verified().any(|e| e.id == entry.id) {
-                        return Err(CliError::Input(format!(
+                        return Err(Error::Input(format!(
                             "--chains: {} is not a verified chain (the numerical check rejects it), so it is in no sweep",
                             entry.id
                         )));
@@ -83,13 +83,13 @@ impl SweepSelection {
     /// numbered from 0 in that order.
     ///
     /// # Errors
-    /// [`CliError::Input`] when the selection leaves no design (a family with none of the
+    /// [`Error::Input`] when the selection leaves no design (a family with none of the
     /// chosen chains).
     pub fn designs(
         &self,
         catalogue: &Catalogue,
         settings: &SweepSettings,
-    ) -> Result<Vec<Design>, CliError> {
+    ) -> Result<Vec<Design>, Error> {
         let mut chosen = catalogue.clone();
         chosen.entries.retain(|e| {
             self.chains.as_ref().is_none_or(|c| c.contains(&e.id))
@@ -97,7 +97,7 @@ impl SweepSelection {
         });
         let list = designs(&chosen, settings);
         if list.is_empty() {
-            return Err(CliError::Input(format!(
+            return Err(Error::Input(format!(
                 "the selection ({self}) has no design; check --chains and --family"
             )));
         }
@@ -131,10 +131,10 @@ impl Shard {
     /// The shard of `--shard K/N`.
     ///
     /// # Errors
-    /// [`CliError::Input`] when the text is not two whole numbers `K/N` with `1 ≤ K ≤ N`.
-    pub fn parse(text: &str) -> Result<Self, CliError> {
+    /// [`Error::Input`] when the text is not two whole numbers `K/N` with `1 ≤ K ≤ N`.
+    pub fn parse(text: &str) -> Result<Self, Error> {
         let bad = |why: &str| {
-            CliError::Input(format!(
+            Error::Input(format!(
                 "--shard {text:?}: {why}; give K/N with 1 <= K <= N, e.g. 2/3"
             ))
         };

@@ -7,7 +7,6 @@ mod merge;
 mod results;
 mod run;
 mod selection;
-mod table;
 
 pub use files::{
     CHECKPOINT, Checkpoint, FILES, FORMAT, JSONL, MANIFEST, MAX_ROWS_BYTES, Manifest, PARQUET,
@@ -16,16 +15,21 @@ pub use files::{
 pub use merge::merge;
 pub use results::{SweepRows, check_rows, read_results, rows_file, with_known};
 pub use run::{SweepOptions, SweepOutcome, sweep};
-pub use selection::{Shard, SweepSelection};
-pub use table::parquet_bytes;
 
-use crate::cli::{CliError, json};
+/// The encoder of `designs.parquet` ([`PARQUET`]): the rows of a finished sweep part (sorted by
+/// design) and its manifest as the bytes of the file. The Parquet encoder is the front end's
+/// (the command's, the Parquet crate's Arrow writer; Python's, pyarrow), so that the reports
+/// need neither.
+pub type Table<'a> =
+    &'a (dyn Fn(&Manifest, &[&kinsyn::sweep::DesignRow]) -> Result<Vec<u8>, Error> + Sync);
+pub use selection::{Shard, SweepSelection};
+
+use crate::Error;
 use kinsyn::catalogue::Catalogue;
 use kinsyn::manipulator::MAX_INPUTS;
 use kinsyn::mechanism::SampleSettings;
 use kinsyn::sweep::SweepSettings;
-use std::fmt::Write as _;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 /// The options of `kinsyn sweep` as given on the command line (and by Python's
 /// `kinsyn.sweep`), not yet checked.
@@ -56,14 +60,10 @@ pub struct Request<'a> {
 /// [`MAX_INPUTS`] inputs per manipulator.
 ///
 /// # Errors
-/// [`CliError::Input`] naming the option out of range.
-pub fn sweep_settings(
-    legs: usize,
-    actuated: &[usize],
-    seed: u64,
-) -> Result<SweepSettings, CliError> {
+/// [`Error::Input`] naming the option out of range.
+pub fn sweep_settings(legs: usize, actuated: &[usize], seed: u64) -> Result<SweepSettings, Error> {
     if !kinsyn::sweep::LEGS.contains(&legs) {
-        return Err(CliError::Input(format!(
+        return Err(Error::Input(format!(
             "--legs {legs}: give 3 to 6 (as kinsyn build)"
         )));
     }
@@ -71,18 +71,18 @@ pub fn sweep_settings(
     per_leg.sort_unstable();
     per_leg.dedup();
     if per_leg.is_empty() {
-        return Err(CliError::Input(
+        return Err(Error::Input(
             "--actuated: give at least one count, e.g. 1,2".into(),
         ));
     }
     for &k in &per_leg {
         if !(1..=6).contains(&k) {
-            return Err(CliError::Input(format!(
+            return Err(Error::Input(format!(
                 "--actuated {k}: each count of actuated joints per leg is 1 to 6"
             )));
         }
         if legs * k > MAX_INPUTS {
-            return Err(CliError::Input(format!(
+            return Err(Error::Input(format!(
                 "--actuated {k} with --legs {legs}: {} inputs, more than {MAX_INPUTS} (2^inputs lock subsets per design)",
                 legs * k
             )));
@@ -99,29 +99,29 @@ pub fn sweep_settings(
 }
 
 /// The committed catalogue, read once.
-pub(crate) fn catalogue() -> Result<Catalogue, CliError> {
+pub(crate) fn catalogue() -> Result<Catalogue, Error> {
     Catalogue::committed()
-        .map_err(|e| CliError::Internal(format!("the compiled-in catalogue does not read: {e}")))
+        .map_err(|e| Error::Internal(format!("the compiled-in catalogue does not read: {e}")))
 }
 
 /// The sweep `request` asks for, checked against `catalogue`: its settings, selection, shard
 /// and threads.
 ///
 /// # Errors
-/// [`CliError::Input`] naming the option that is out of range or malformed (as
+/// [`Error::Input`] naming the option that is out of range or malformed (as
 /// [`sweep_settings`], [`Shard::parse`], [`SweepSelection::new`]; `--threads` 0 or above
 /// [`MAX_THREADS`](crate::MAX_THREADS)).
-pub fn options(catalogue: &Catalogue, request: &Request) -> Result<SweepOptions, CliError> {
+pub fn options(catalogue: &Catalogue, request: &Request) -> Result<SweepOptions, Error> {
     let settings = sweep_settings(request.legs, request.actuated, request.seed)?;
     let shard = request.shard.map(Shard::parse).transpose()?;
     if request
         .threads
-        .is_some_and(|t| t == 0 || t > crate::cli::solve::MAX_THREADS)
+        .is_some_and(|t| t == 0 || t > crate::solve::MAX_THREADS)
     {
-        return Err(CliError::Input(format!(
+        return Err(Error::Input(format!(
             "--threads {}: give 1 to {}",
             request.threads.unwrap_or(0),
-            crate::cli::solve::MAX_THREADS
+            crate::solve::MAX_THREADS
         )));
     }
     let selection = SweepSelection::new(catalogue, request.chains, request.family)?;
@@ -137,7 +137,7 @@ pub fn options(catalogue: &Catalogue, request: &Request) -> Result<SweepOptions,
 
 /// `kinsyn sweep --out OUT …` on the committed catalogue: runs (or resumes) the sweep
 /// `request` asks for into `out`, with a progress bar on stderr when `progress` is true and
-/// stderr is a terminal.
+/// stderr is a terminal, `designs.parquet` encoded by `table`.
 ///
 /// # Errors
 /// As [`options`] and [`sweep()`].
@@ -145,15 +145,16 @@ pub fn run_request(
     out: &Path,
     request: &Request,
     progress: bool,
-) -> Result<SweepOutcome, CliError> {
+    table: Table,
+) -> Result<SweepOutcome, Error> {
     let catalogue = catalogue()?;
     let options = options(&catalogue, request)?;
     let bar = if progress {
-        crate::cli::terminal::progress(0, "designs", "sweep")
+        crate::terminal::progress(0, "designs", "sweep")
     } else {
         indicatif::ProgressBar::hidden()
     };
-    sweep(&catalogue, out, &options, &bar)
+    sweep(&catalogue, out, &options, &bar, table)
 }
 
 /// The `--json` summary of a run: the outcome with `designs_per_second` and
@@ -180,7 +181,7 @@ pub fn outcome_json(outcome: &SweepOutcome) -> serde_json::Value {
 ///
 /// # Errors
 /// As [`options`]; `count` 0 is refused as `--shard 1/0` is.
-pub fn shard_manifests(request: &Request, count: usize) -> Result<Vec<Manifest>, CliError> {
+pub fn shard_manifests(request: &Request, count: usize) -> Result<Vec<Manifest>, Error> {
     Shard::parse(&format!("1/{count}"))?;
     let catalogue = catalogue()?;
     let options = options(
@@ -207,92 +208,4 @@ pub fn shard_manifests(request: &Request, count: usize) -> Result<Vec<Manifest>,
             ))
         })
         .collect()
-}
-
-/// `kinsyn sweep --out DIR …`: runs (or resumes) the sweep and reports it.
-pub(super) fn command(
-    out: &Path,
-    request: &Request,
-    bench: bool,
-    as_json: bool,
-) -> Result<String, CliError> {
-    let outcome = run_request(out, request, true)?;
-    if as_json {
-        return Ok(json(&outcome_json(&outcome)));
-    }
-    Ok(summary(&outcome, bench))
-}
-
-/// The text report of a run, with `--bench`'s figures.
-fn summary(o: &SweepOutcome, bench: bool) -> String {
-    let m = &o.manifest;
-    let shard = m.shard.map_or_else(String::new, |s| format!(", shard {s}"));
-    let what = format!(
-        "{} designs of {} ({}; {} legs, {} actuated per leg, seed {}{shard})",
-        m.designs,
-        m.sweep_designs,
-        m.selection,
-        m.settings.legs,
-        m.settings
-            .actuated_per_leg
-            .iter()
-            .map(ToString::to_string)
-            .collect::<Vec<_>>()
-            .join(" or "),
-        m.settings.sampling.seed,
-    );
-    if o.already_complete {
-        return format!(
-            "{}: already complete with {what}; nothing rewritten\n",
-            o.out
-        );
-    }
-    let mut s = format!(
-        "{}: {what}: {} evaluated, resumed {} rows, {} errors; ",
-        o.out, o.evaluated, o.resumed, o.errors
-    );
-    if o.complete {
-        let _ = writeln!(s, "complete: {JSONL}, {PARQUET}, {MANIFEST}");
-    } else {
-        let _ = writeln!(
-            s,
-            "stopped with {} of {} rows in {CHECKPOINT}; run the same command again to resume",
-            o.resumed + o.evaluated,
-            m.designs
-        );
-    }
-    if bench {
-        let _ = writeln!(s, "designs evaluated      {}", o.evaluated);
-        let _ = writeln!(s, "lock subsets sampled   {}", o.lock_subsets);
-        let _ = writeln!(s, "wall seconds           {:.3}", o.seconds);
-        let _ = writeln!(s, "designs/s              {:.2}", o.designs_per_second());
-        let _ = writeln!(
-            s,
-            "subsets per core-s     {:.1}",
-            o.subsets_per_core_second()
-        );
-        let _ = writeln!(s, "threads                {}", o.threads);
-        let _ = writeln!(s, "writing ms             {:.1}", o.write_ms);
-    }
-    s
-}
-
-/// `kinsyn sweep merge DIR… --out OUT [--force]`.
-pub(super) fn merge_command(
-    dirs: &[PathBuf],
-    out: &Path,
-    force: bool,
-    as_json: bool,
-) -> Result<String, CliError> {
-    let manifest = merge(dirs, out, force)?;
-    if as_json {
-        return Ok(json(&manifest));
-    }
-    Ok(format!(
-        "{}: merged {} shards: {} designs ({}); {JSONL}, {PARQUET}, {MANIFEST}\n",
-        out.display(),
-        dirs.len(),
-        manifest.designs,
-        manifest.selection
-    ))
 }

@@ -1,6 +1,6 @@
 //! Reading input files: the checks every file kinsyn reads passes before it is parsed.
 
-use super::CliError;
+use crate::Error;
 use std::io::Read as _;
 use std::path::Path;
 
@@ -29,7 +29,7 @@ pub const INPUT_FILES: SizeLimit = SizeLimit {
 /// # Errors
 ///
 /// As [`read_text_within`].
-pub fn read_text(path: &Path, not_what: &str) -> Result<String, CliError> {
+pub fn read_text(path: &Path, not_what: &str) -> Result<String, Error> {
     read_text_within(path, not_what, INPUT_FILES)
 }
 
@@ -38,8 +38,8 @@ pub fn read_text(path: &Path, not_what: &str) -> Result<String, CliError> {
 ///
 /// # Errors
 ///
-/// Those refusals, as [`CliError::Input`] (exit 2).
-pub fn read_text_within(path: &Path, not_what: &str, limit: SizeLimit) -> Result<String, CliError> {
+/// Those refusals, as [`Error::Input`] (exit 2).
+pub fn read_text_within(path: &Path, not_what: &str, limit: SizeLimit) -> Result<String, Error> {
     text_of(path, not_what, read_bytes_within(path, not_what, limit)?)
 }
 
@@ -48,10 +48,10 @@ pub fn read_text_within(path: &Path, not_what: &str, limit: SizeLimit) -> Result
 ///
 /// # Errors
 ///
-/// That refusal, as [`CliError::Input`] (exit 2).
-pub fn text_of(path: &Path, not_what: &str, bytes: Vec<u8>) -> Result<String, CliError> {
+/// That refusal, as [`Error::Input`] (exit 2).
+pub fn text_of(path: &Path, not_what: &str, bytes: Vec<u8>) -> Result<String, Error> {
     String::from_utf8(bytes).map_err(|e| {
-        CliError::Input(format!(
+        Error::Input(format!(
             "{} is {not_what} (not UTF-8 text: invalid byte at offset {})",
             path.display(),
             e.utf8_error().valid_up_to()
@@ -66,11 +66,11 @@ pub fn text_of(path: &Path, not_what: &str, bytes: Vec<u8>) -> Result<String, Cl
 ///
 /// # Errors
 ///
-/// Those refusals, as [`CliError::Input`] (exit 2).
-pub fn check_file(path: &Path, not_what: &str, limit: SizeLimit) -> Result<u64, CliError> {
+/// Those refusals, as [`Error::Input`] (exit 2).
+pub fn check_file(path: &Path, not_what: &str, limit: SizeLimit) -> Result<u64, Error> {
     let shown = path.display();
-    let refuse = |why: String| CliError::Input(format!("{shown} is {not_what} ({why})"));
-    let metadata = std::fs::metadata(path).map_err(|e| CliError::Input(format!("{shown}: {e}")))?;
+    let refuse = |why: String| Error::Input(format!("{shown} is {not_what} ({why})"));
+    let metadata = std::fs::metadata(path).map_err(|e| Error::Input(format!("{shown}: {e}")))?;
     if !metadata.is_file() {
         return Err(refuse(if metadata.is_dir() {
             "a directory".into()
@@ -95,20 +95,16 @@ pub fn check_file(path: &Path, not_what: &str, limit: SizeLimit) -> Result<u64, 
 /// # Errors
 ///
 /// As [`check_file`], and `FILE is NOT_WHAT (more than N bytes; …)` for a file that grew past
-/// `limit`, as [`CliError::Input`] (exit 2).
-pub fn read_bytes_within(
-    path: &Path,
-    not_what: &str,
-    limit: SizeLimit,
-) -> Result<Vec<u8>, CliError> {
+/// `limit`, as [`Error::Input`] (exit 2).
+pub fn read_bytes_within(path: &Path, not_what: &str, limit: SizeLimit) -> Result<Vec<u8>, Error> {
     let len = check_file(path, not_what, limit)?;
     let max = limit.bytes;
     let mut bytes = Vec::with_capacity(usize::try_from(len).map_or(0, |n| n + 1));
     std::fs::File::open(path)
         .and_then(|f| f.take(max + 1).read_to_end(&mut bytes))
-        .map_err(|e| CliError::Input(format!("{}: {e}", path.display())))?;
+        .map_err(|e| Error::Input(format!("{}: {e}", path.display())))?;
     if bytes.len() as u64 > max {
-        return Err(CliError::Input(format!(
+        return Err(Error::Input(format!(
             "{} is {not_what} (more than {max} bytes; {} are at most that)",
             path.display(),
             limit.files

@@ -2,9 +2,8 @@
 //! `designs.jsonl` and `designs.parquet`, and the checkpoint of a run under way.
 
 use super::selection::{Shard, SweepSelection};
-use super::table;
-use crate::cli::CliError;
-use crate::cli::files::{SizeLimit, read_bytes_within, read_text, read_text_within, text_of};
+use crate::Error;
+use crate::files::{SizeLimit, read_bytes_within, read_text, read_text_within, text_of};
 use kinsyn::catalogue::Catalogue;
 use kinsyn::sweep::rows::Known;
 use kinsyn::sweep::{Design, DesignRow, SweepSettings};
@@ -111,10 +110,39 @@ impl Manifest {
         } == *other
     }
 
+    /// The key-value metadata of `designs.parquet`: the manifest's fields that say what the
+    /// rows are (`kinsyn.format`, `kinsyn.version`, `kinsyn.settings` and `kinsyn.selection`
+    /// as compact JSON, `kinsyn.shard` as `K/N` or `none`, `kinsyn.designs`), the same pairs
+    /// whichever front end encodes the table.
+    ///
+    /// # Panics
+    /// Never: the settings and the selection serialise (string keys, finite numbers).
+    #[must_use]
+    pub fn table_metadata(&self) -> Vec<(&'static str, String)> {
+        vec![
+            ("kinsyn.format", self.format.clone()),
+            ("kinsyn.version", self.kinsyn.clone()),
+            (
+                "kinsyn.settings",
+                serde_json::to_string(&self.settings).expect("serialisable"),
+            ),
+            (
+                "kinsyn.selection",
+                serde_json::to_string(&self.selection).expect("serialisable"),
+            ),
+            (
+                "kinsyn.shard",
+                self.shard
+                    .map_or_else(|| "none".to_string(), |s| s.to_string()),
+            ),
+            ("kinsyn.designs", self.designs.to_string()),
+        ]
+    }
+
     /// The manifest as written: pretty JSON, one trailing newline.
     #[must_use]
     pub fn text(&self) -> String {
-        crate::cli::json(self)
+        crate::json(self)
     }
 
     /// The designs of this directory (its shard of the sweep, or all of it), by index, once
@@ -124,10 +152,10 @@ impl Manifest {
     /// those of that sweep. `path` names the manifest in refusals.
     ///
     /// # Errors
-    /// [`CliError::Input`] naming what does not match.
-    pub fn designs(&self, catalogue: &Catalogue, path: &Path) -> Result<Vec<Design>, CliError> {
+    /// [`Error::Input`] naming what does not match.
+    pub fn designs(&self, catalogue: &Catalogue, path: &Path) -> Result<Vec<Design>, Error> {
         let damaged = |why: String| {
-            CliError::Input(format!(
+            Error::Input(format!(
                 "{}: a damaged sweep manifest: {why}",
                 path.display()
             ))
@@ -163,7 +191,7 @@ impl Manifest {
             ..Manifest::new(&settings, &selection, self.shard, all.len())
         };
         if (expected.sweep_designs, expected.designs) != (self.sweep_designs, self.designs) {
-            return Err(CliError::Input(format!(
+            return Err(Error::Input(format!(
                 "{}: the sweep it describes has {} designs ({} in this directory) with this kinsyn's catalogue, not the {} ({}) it records: the results of another catalogue, or a damaged manifest",
                 path.display(),
                 expected.sweep_designs,
@@ -189,8 +217,8 @@ impl Manifest {
 /// ([`read_text`]: a regular UTF-8 file of at most 1 MiB).
 ///
 /// # Errors
-/// [`CliError::Input`] when `sweep.json` exists but is not a sweep manifest of this format.
-pub fn read_manifest(dir: &Path) -> Result<Option<Manifest>, CliError> {
+/// [`Error::Input`] when `sweep.json` exists but is not a sweep manifest of this format.
+pub fn read_manifest(dir: &Path) -> Result<Option<Manifest>, Error> {
     let path = dir.join(MANIFEST);
     if let Err(e) = std::fs::symlink_metadata(&path)
         && e.kind() == std::io::ErrorKind::NotFound
@@ -199,17 +227,17 @@ pub fn read_manifest(dir: &Path) -> Result<Option<Manifest>, CliError> {
     }
     let text = read_text(&path, "not a sweep manifest")?;
     let value: serde_json::Value = serde_json::from_str(&text)
-        .map_err(|e| CliError::Input(format!("{}: not a sweep manifest: {e}", path.display())))?;
+        .map_err(|e| Error::Input(format!("{}: not a sweep manifest: {e}", path.display())))?;
     let format = value.get("format").and_then(serde_json::Value::as_str);
     if format != Some(FORMAT) {
-        return Err(CliError::Input(format!(
+        return Err(Error::Input(format!(
             "{}: not a sweep manifest (format {format:?}, expected {FORMAT:?})",
             path.display()
         )));
     }
     serde_json::from_value(value)
         .map(Some)
-        .map_err(|e| CliError::Input(format!("{}: a damaged sweep manifest: {e}", path.display())))
+        .map_err(|e| Error::Input(format!("{}: a damaged sweep manifest: {e}", path.display())))
 }
 
 /// One row as its line of `designs.jsonl` and of the checkpoint (with the newline).
@@ -228,13 +256,13 @@ pub fn row_line(row: &DesignRow) -> String {
 /// The file is read as every input file is, within [`ROW_FILES`].
 ///
 /// # Errors
-/// [`CliError::Input`] for a file that does not read, or naming the first line that is not
+/// [`Error::Input`] for a file that does not read, or naming the first line that is not
 /// such a row (`FILE line 3: design 7: dof: 99 is more than 6`).
-pub fn read_rows(path: &Path, known: &Known) -> Result<Vec<DesignRow>, CliError> {
+pub fn read_rows(path: &Path, known: &Known) -> Result<Vec<DesignRow>, Error> {
     let text = read_text_within(path, NOT_ROWS, ROW_FILES)?;
     known
         .parse_rows(&text)
-        .map_err(|e| CliError::Input(format!("{} {e}", path.display())))
+        .map_err(|e| Error::Input(format!("{} {e}", path.display())))
 }
 
 /// The rows of a run's checkpoint `path`, as [`read_rows`] reads them, from the lines that end
@@ -243,14 +271,14 @@ pub fn read_rows(path: &Path, known: &Known) -> Result<Vec<DesignRow>, CliError>
 ///
 /// # Errors
 /// As [`read_rows`].
-pub fn read_checkpoint(path: &Path, known: &Known) -> Result<(Vec<DesignRow>, u64), CliError> {
+pub fn read_checkpoint(path: &Path, known: &Known) -> Result<(Vec<DesignRow>, u64), Error> {
     let mut bytes = read_bytes_within(path, NOT_ROWS, ROW_FILES)?;
     let end = bytes.iter().rposition(|&b| b == b'\n').map_or(0, |i| i + 1);
     bytes.truncate(end);
     let text = text_of(path, NOT_ROWS, bytes)?;
     let rows = known
         .parse_rows(&text)
-        .map_err(|e| CliError::Input(format!("{} {e}", path.display())))?;
+        .map_err(|e| Error::Input(format!("{} {e}", path.display())))?;
     Ok((rows, end as u64))
 }
 
@@ -266,11 +294,11 @@ impl Checkpoint {
     /// opened for appending.
     ///
     /// # Errors
-    /// [`CliError::Io`] when it cannot be opened or cut.
-    pub fn open(dir: &Path, keep: u64) -> Result<Self, CliError> {
+    /// [`Error::Io`] when it cannot be opened or cut.
+    pub fn open(dir: &Path, keep: u64) -> Result<Self, Error> {
         let path = dir.join(CHECKPOINT);
         if std::fs::symlink_metadata(&path).is_ok_and(|m| m.file_type().is_symlink()) {
-            return Err(CliError::Input(format!(
+            return Err(Error::Input(format!(
                 "{}: is a symbolic link; kinsyn does not write through one",
                 path.display()
             )));
@@ -287,8 +315,8 @@ impl Checkpoint {
     /// Writes `row` as one line and flushes it to the file.
     ///
     /// # Errors
-    /// [`CliError::Io`] when it cannot be written.
-    pub fn append(&mut self, row: &DesignRow) -> Result<(), CliError> {
+    /// [`Error::Io`] when it cannot be written.
+    pub fn append(&mut self, row: &DesignRow) -> Result<(), Error> {
         self.file
             .write_all(row_line(row).as_bytes())
             .and_then(|()| self.file.flush())
@@ -297,8 +325,8 @@ impl Checkpoint {
 }
 
 /// An I/O failure on `path` (exit 1).
-pub(super) fn io_error(path: &Path, e: &std::io::Error) -> CliError {
-    CliError::Io(std::io::Error::new(
+pub(super) fn io_error(path: &Path, e: &std::io::Error) -> Error {
+    Error::Io(std::io::Error::new(
         e.kind(),
         format!("{}: {e}", path.display()),
     ))
@@ -310,18 +338,18 @@ pub(super) fn io_error(path: &Path, e: &std::io::Error) -> CliError {
 /// finishing its own sweep).
 ///
 /// # Errors
-/// [`CliError::Io`] when it cannot be written; [`CliError::Input`] when a folder is in the way.
-pub fn write_atomic(dir: &Path, name: &str, bytes: &[u8]) -> Result<(), CliError> {
+/// [`Error::Io`] when it cannot be written; [`Error::Input`] when a folder is in the way.
+pub fn write_atomic(dir: &Path, name: &str, bytes: &[u8]) -> Result<(), Error> {
     kinsyn::output::write(&dir.join(name), bytes, kinsyn::output::Overwrite::Replace)
-        .map_err(|e| crate::cli::output::error("--out", dir, e))
+        .map_err(|e| crate::output::error("--out", dir, e))
 }
 
 /// Removes the rows and checkpoint a directory holds (of another sweep, or of none, that
 /// `--force` replaces), so that a fresh start never shows them beside its new manifest.
 ///
 /// # Errors
-/// [`CliError::Io`] when one cannot be removed.
-pub fn clear_rows(dir: &Path) -> Result<(), CliError> {
+/// [`Error::Io`] when one cannot be removed.
+pub fn clear_rows(dir: &Path) -> Result<(), Error> {
     for name in [JSONL, PARQUET, CHECKPOINT] {
         let path = dir.join(name);
         match std::fs::remove_file(&path) {
@@ -335,18 +363,23 @@ pub fn clear_rows(dir: &Path) -> Result<(), CliError> {
 }
 
 /// Writes the results of a finished sweep part to `dir`: `designs.jsonl` and `designs.parquet`
-/// with `rows` (sorted by design index), then `sweep.json` as `manifest` marked complete, then
+/// with `rows` (sorted by design index; the Parquet bytes by `table`), then `sweep.json` as `manifest` marked complete, then
 /// removes the checkpoint. The files depend on the manifest and the rows only.
 ///
 /// # Errors
-/// [`CliError::Io`] when a file cannot be written; [`CliError::Internal`] when the Parquet
-/// writer fails.
-pub fn write_results(dir: &Path, manifest: &Manifest, rows: &[DesignRow]) -> Result<(), CliError> {
+/// [`Error::Io`] when a file cannot be written; `table`'s error when the Parquet encoder
+/// fails.
+pub fn write_results(
+    dir: &Path,
+    manifest: &Manifest,
+    rows: &[DesignRow],
+    table: super::Table,
+) -> Result<(), Error> {
     let mut sorted: Vec<&DesignRow> = rows.iter().collect();
     sorted.sort_by_key(|r| r.design);
     let jsonl: String = sorted.iter().map(|r| row_line(r)).collect();
     write_atomic(dir, JSONL, jsonl.as_bytes())?;
-    write_atomic(dir, PARQUET, &table::parquet_bytes(manifest, &sorted)?)?;
+    write_atomic(dir, PARQUET, &table(manifest, &sorted)?)?;
     let done = Manifest {
         complete: true,
         ..manifest.clone()

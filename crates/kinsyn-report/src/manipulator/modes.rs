@@ -3,7 +3,7 @@
 
 use super::analyze::configuration_at_pose;
 use super::{body_names, clean, leg_warnings, load_with_body, warn};
-use crate::cli::{CliError, json};
+use crate::{Error, json};
 use kinsyn::manipulator::{Manipulator, Mode, Modes, ModesCost, PatternModes};
 use kinsyn::mechanism::{ASSEMBLY_STEPS, SampleSettings};
 use kinsyn::motion::MIN_SEPARATION;
@@ -46,7 +46,7 @@ const PATTERNS_SHOWN: usize = 12;
 /// The configuration the modes are sampled from: the file's reference configuration, or the
 /// assembly with the platform frame at `pose` (`x,y,z,rx,ry,rz` as for `analyze --pose`) with
 /// every input free, so that each subset's locked inputs are held at their values there.
-fn start_configuration(m: &Manipulator, pose: Option<&str>) -> Result<Vec<f64>, CliError> {
+fn start_configuration(m: &Manipulator, pose: Option<&str>) -> Result<Vec<f64>, Error> {
     match pose {
         None => Ok(m.reference()),
         Some(text) => configuration_at_pose(m, "--pose", text, &[]),
@@ -62,13 +62,13 @@ fn selected_subsets(
     selection: &Selection,
     max_subsets: u32,
     settings: &SampleSettings,
-) -> Result<Vec<Vec<usize>>, CliError> {
+) -> Result<Vec<Vec<usize>>, Error> {
     let n = m.actuators().len();
     let max_locks = match selection {
         Selection::Lock(text) => {
             let locked = m
                 .parse_locks(text)
-                .map_err(|e| CliError::Input(format!("--lock {text:?}: {e}")))?;
+                .map_err(|e| Error::Input(format!("--lock {text:?}: {e}")))?;
             return Ok(vec![locked]);
         }
         Selection::All => n,
@@ -88,7 +88,7 @@ fn selected_subsets(
         .take_while(|&k| m.lock_subset_count(k) <= limit)
         .last()
         .unwrap_or(0);
-    Err(CliError::Input(format!(
+    Err(Error::Input(format!(
         "{}: {n} inputs give {count} lock subsets {scope}, more than --max-subsets {max_subsets} (each a sampled motion: 1 loop closure where the locks leave the start rigid, {} from a regular start (1 + {} samples × {} steps), up to {} of up to {ASSEMBLY_STEPS} Newton steps each from a singular one; their CPU in docs/limits.md); use --max-locks {fits} ({} subsets) or --lock SET, or raise --max-subsets (at most {MAX_SUBSETS_CEILING})",
         source,
         ModesCost::closures_per_motion(settings),
@@ -109,7 +109,7 @@ pub fn modes(
     max_subsets: u32,
     settings: &SampleSettings,
     as_json: bool,
-) -> Result<String, CliError> {
+) -> Result<String, Error> {
     let m = load_with_body(path, body, relative, legs)?;
     let modes = sample_modes(
         &m,
@@ -142,7 +142,7 @@ pub fn modes(
 ///
 /// # Errors
 ///
-/// [`CliError::Input`]: a malformed lock set or pose, a pose that cannot be reached, or more
+/// [`Error::Input`]: a malformed lock set or pose, a pose that cannot be reached, or more
 /// subsets than `max_subsets`.
 pub fn sample_modes(
     m: &Manipulator,
@@ -151,11 +151,11 @@ pub fn sample_modes(
     selection: &Selection,
     max_subsets: u32,
     settings: &SampleSettings,
-) -> Result<Modes, CliError> {
+) -> Result<Modes, Error> {
     let subsets = selected_subsets(source, m, selection, max_subsets, settings)?;
     let start = start_configuration(m, pose)?;
     Ok(if subsets.len() > 1 {
-        let bar = crate::cli::terminal::progress(subsets.len(), "lock subsets", "modes");
+        let bar = crate::terminal::progress(subsets.len(), "lock subsets", "modes");
         let modes = m.modes_from(&start, &subsets, settings, &|| bar.inc(1));
         bar.finish_and_clear();
         modes

@@ -2,7 +2,7 @@
 //! Jacobians, ranks and singularities as text or JSON.
 
 use super::{clean, leg_warnings, load_with_body, warn};
-use crate::cli::{CliError, json};
+use crate::{Error, json};
 use kinsyn::manipulator::file::AngleUnit;
 use kinsyn::manipulator::{
     Analysis, ContinuationFailure, Manipulator, ManipulatorError, PRINTED_STUDY_TOLERANCE,
@@ -21,18 +21,18 @@ pub fn configuration_at_pose(
     option: &str,
     text: &str,
     locked: &[usize],
-) -> Result<Vec<f64>, CliError> {
+) -> Result<Vec<f64>, Error> {
     let request = PositionRequest {
         platform: Some(
             m.parse_pose(text)
-                .map_err(|e| CliError::Input(format!("{option} {text:?}: {e}")))?,
+                .map_err(|e| Error::Input(format!("{option} {text:?}: {e}")))?,
         ),
         held: locked.to_vec(),
         ..PositionRequest::default()
     };
     m.solve_position(&m.reference(), &request)
         .map(|p| p.q)
-        .map_err(|e| CliError::Input(format!("{option} {text:?}: {}", position_error(&e))))
+        .map_err(|e| Error::Input(format!("{option} {text:?}: {}", position_error(&e))))
 }
 
 /// A position error in words, with the option that helps when the start is too far.
@@ -85,7 +85,7 @@ pub fn analyze(
     lock: Option<&str>,
     settings: &SampleSettings,
     as_json: bool,
-) -> Result<String, CliError> {
+) -> Result<String, Error> {
     let m = load_with_body(path, placement.body, placement.relative_to, None)?;
     let analyzed = analyse_placed(&m, placement, lock, settings)?;
     let warnings = leg_warnings(&m);
@@ -126,18 +126,18 @@ impl Analyzed {
 ///
 /// # Errors
 ///
-/// [`CliError::Input`], naming the option: a malformed lock set, pose, input values or Study
+/// [`Error::Input`], naming the option: a malformed lock set, pose, input values or Study
 /// parameters, a configuration that cannot be reached, or one that cannot be analysed.
 pub fn analyse_placed(
     m: &Manipulator,
     placement: &Placement<'_>,
     lock: Option<&str>,
     settings: &SampleSettings,
-) -> Result<Analyzed, CliError> {
+) -> Result<Analyzed, Error> {
     let locked = match lock {
         Some(text) => m
             .parse_locks(text)
-            .map_err(|e| CliError::Input(format!("--lock {text:?}: {e}")))?,
+            .map_err(|e| Error::Input(format!("--lock {text:?}: {e}")))?,
         None => Vec::new(),
     };
     let (start, start_text) = match placement.from {
@@ -154,7 +154,7 @@ pub fn analyse_placed(
     if let Some(text) = placement.inputs {
         request.inputs = m
             .parse_inputs(text)
-            .map_err(|e| CliError::Input(format!("--inputs {text:?}: {e}")))?;
+            .map_err(|e| Error::Input(format!("--inputs {text:?}: {e}")))?;
         // Without a pose, inputs not named keep their values at the start; with one, they
         // are free, and the pose and the named inputs are met together.
         if placement.pose.is_none() {
@@ -166,7 +166,7 @@ pub fn analyse_placed(
     if let Some(text) = placement.pose {
         request.platform = Some(
             m.parse_pose(text)
-                .map_err(|e| CliError::Input(format!("--pose {text:?}: {e}")))?,
+                .map_err(|e| Error::Input(format!("--pose {text:?}: {e}")))?,
         );
     }
     let mut study_lines = String::new();
@@ -183,7 +183,7 @@ pub fn analyse_placed(
             .collect();
         let p = m
             .solve_position(&start, &request)
-            .map_err(|e| CliError::Input(format!("{}: {}", asked.join(" "), position_error(&e))))?;
+            .map_err(|e| Error::Input(format!("{}: {}", asked.join(" "), position_error(&e))))?;
         (p.q, p.steps, p.continuous)
     };
     let reached = Reached {
@@ -194,7 +194,7 @@ pub fn analyse_placed(
     };
     let a = m
         .analyse(&q, &locked, settings)
-        .map_err(|e| CliError::Input(e.to_string()))?;
+        .map_err(|e| Error::Input(e.to_string()))?;
     Ok(Analyzed {
         analysis: a,
         reached,
@@ -211,11 +211,11 @@ fn study_configuration(
     start: &[f64],
     study_lines: &mut String,
     study_json: &mut Vec<serde_json::Value>,
-) -> Result<Vec<f64>, CliError> {
+) -> Result<Vec<f64>, Error> {
     let sets = placement
         .study
         .iter()
-        .map(|t| Manipulator::parse_study(t).map_err(|e| CliError::Input(format!("--study: {e}"))))
+        .map(|t| Manipulator::parse_study(t).map_err(|e| Error::Input(format!("--study: {e}"))))
         .collect::<Result<Vec<_>, _>>()?;
     for (body, s) in m.bodies().iter().zip(&sets) {
         let residual = kinsyn::spatial::study::relative_quadric_residual(s);
@@ -236,9 +236,9 @@ fn study_configuration(
     } else {
         let frames = m
             .frames_from_study(&sets, PRINTED_STUDY_TOLERANCE)
-            .map_err(|e| CliError::Input(format!("--study: {e}")))?;
+            .map_err(|e| Error::Input(format!("--study: {e}")))?;
         let q = m.solve_poses(start, &frames).map_err(|e| {
-            CliError::Input(format!(
+            Error::Input(format!(
                 "--study: {e} (--nearest takes the nearest assembly of rounded values)"
             ))
         })?;
@@ -256,9 +256,9 @@ fn nearest_study(
     rounding: f64,
     lines: &mut String,
     entries: &mut [serde_json::Value],
-) -> Result<Vec<f64>, CliError> {
+) -> Result<Vec<f64>, Error> {
     if !(rounding.is_finite() && rounding > 0.0) {
-        return Err(CliError::Input(format!(
+        return Err(Error::Input(format!(
             "--rounding {rounding}: give a positive half unit of the last printed place, e.g. 0.005"
         )));
     }
@@ -279,13 +279,13 @@ fn nearest_study(
             rotation_bound,
             rounding,
         })) => {
-            return Err(CliError::Input(format!(
+            return Err(Error::Input(format!(
                 "--study --nearest: the nearest assembly moves {body:?} by {translation:.4} {length} and {:.4} {angle_name}, more than rounding each parameter by {rounding} explains ({translation_bound:.4} {length}, {:.4} {angle_name}): no rounded configuration of this mechanism (--rounding to allow more)",
                 angle.from_radians(rotation),
                 angle.from_radians(rotation_bound),
             )));
         }
-        Err(e) => return Err(CliError::Input(format!("--study --nearest: {e}"))),
+        Err(e) => return Err(Error::Input(format!("--study --nearest: {e}"))),
     };
     let mut moved = Vec::new();
     for c in &nearest.changes {

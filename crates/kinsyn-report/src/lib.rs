@@ -1,0 +1,78 @@
+//! kinsyn's commands as functions, shared by its two front ends (the command line,
+//! `kinsyn-cli`, and the Python package, `kinsyn-py`): a request checked, the work run by the
+//! library (`kinsyn`, `kinsyn-papers`), and the result as a report (the `--json` value, or the
+//! text a terminal shows), with failures as one [`Error`] whose message is one line. The front
+//! ends only turn arguments into requests and reports into output (text and JSON on stdout,
+//! Python objects and exceptions), so that both read the same files, compute the same reports
+//! and refuse bad input with the same words.
+//!
+//! - files: [`files::read_text`] (and [`files::read_text_within`],
+//!   [`files::read_bytes_within`], [`files::check_file`] with a [`files::SizeLimit`]),
+//!   [`manipulator::parse_description`];
+//! - errors: [`Error`], [`terminal::one_line`];
+//! - `kinsyn build`: [`manipulator::build_checked`], [`manipulator::build_flag`];
+//! - `kinsyn analyze`: [`manipulator::analyse_placed`] and [`manipulator::Analyzed::json`];
+//! - `kinsyn modes`: [`manipulator::sample_modes`] and [`manipulator::modes_json`];
+//! - `kinsyn analyze --all-assemblies`: [`manipulator::all_assemblies_of`] and
+//!   [`manipulator::AllAssemblies::json`];
+//! - `--body`, `--relative-to`, `--legs`: [`manipulator::select_body`],
+//!   [`manipulator::parse_description_legs`];
+//! - `kinsyn solve`: [`solve::solve_system`] and [`solve::Solved::json`];
+//! - `kinsyn configurable inverse|forward|velocity`: [`configurable`];
+//! - `kinsyn components`: [`components::components`] with [`components::ComponentsOptions`];
+//! - `kinsyn sweep` and `kinsyn sweep merge`: [`sweep`] (the run, the merge, the files'
+//!   readers and writers; `designs.parquet` is encoded by the front end, [`sweep::Table`]).
+//!
+//! This crate depends on no command-line parser, plotting or file-format crate: what only
+//! the command needs (argument grammar, figures, the Parquet encoder) is in `kinsyn-cli`.
+
+pub mod components;
+pub mod configurable;
+pub mod files;
+pub mod manipulator;
+pub mod output;
+pub mod solve;
+pub mod sweep;
+pub mod terminal;
+
+/// A failure the user sees, as one message (printed after `kinsyn: error: ` by the command,
+/// raised as an exception by Python; made one line by [`terminal::one_line`]): bad input
+/// (exit 2) or an environment problem (exit 1).
+#[derive(Debug, thiserror::Error)]
+pub enum Error {
+    /// Bad input: arguments, chains, patterns, poses, input values, files that are missing or
+    /// not what they should be, faulty fields, limits (exit 2).
+    #[error("{0}")]
+    Input(String),
+    /// An output that cannot be written (exit 1).
+    #[error("{0}")]
+    Io(#[from] std::io::Error),
+    /// A fault of the build, not of the input or the environment (exit 1).
+    #[error("{0}")]
+    Internal(String),
+}
+
+/// `value` as the pretty JSON a command prints, one trailing newline, with every control or
+/// bidirectional-formatting character in its strings as a `\uXXXX` escape
+/// ([`kinsyn::markup::json_visible`]): valid JSON of the same value that cannot drive a terminal.
+///
+/// # Panics
+/// Never for the reports of this crate: each serialises (string keys, finite or `null` numbers).
+#[must_use]
+pub fn json<T: serde::Serialize>(value: &T) -> String {
+    let mut s =
+        kinsyn::markup::json_visible(&serde_json::to_string_pretty(value).expect("serialisable"))
+            .into_owned();
+    s.push('\n');
+    s
+}
+
+/// The items joined by commas, or "none".
+#[must_use]
+pub fn list_or_none(items: &[String]) -> String {
+    if items.is_empty() {
+        "none".to_string()
+    } else {
+        items.join(", ")
+    }
+}
