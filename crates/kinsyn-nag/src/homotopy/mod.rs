@@ -29,6 +29,7 @@
 
 mod nearby;
 mod parameter;
+mod real_branch;
 mod regeneration;
 mod start;
 mod tracker;
@@ -39,6 +40,10 @@ pub use parameter::{
     track_parameters,
 };
 
+pub use real_branch::{
+    BranchEnd, BranchPoint, RealBranch, TURNING_INVERSE_CONDITION, follow_real, real_newton,
+    real_rates,
+};
 pub use regeneration::{
     RegenerationProgress, regenerate, regenerate_with_progress, regeneration_paths,
 };

@@ -9,5 +9,6 @@ mod certify;
 mod homotopy;
 mod homotopy_known_roots;
 mod poly;
+mod real_branch;
 mod system_files;
 mod witness;

@@ -1,16 +1,18 @@
 //! The trajectory of paper 003 §5: the inputs `q_i(t)` move periodically and the assembly of
-//! Table 2 is followed by a **parameter homotopy** (the position equations of method 2 with the
-//! elbows `B_i` as parameters, [`elbow_family`]), with the corner velocities by implicit
-//! differentiation of the same equations. Where the followed assembly stops being real (a
-//! turning point: the Jacobian of the position equations singular, two real assemblies meeting
-//! and leaving as a complex pair), the trajectory says so and where — it never continues on
-//! another branch silently.
+//! Table 2 is followed as a real branch of the position equations of method 2 with the elbows
+//! `B_i` as parameters ([`elbow_family`]), by the engine's general follower
+//! ([`kinsyn::homotopy::follow_real`]: parameter homotopy between instants, rates by implicit
+//! differentiation), the corner velocities from the unknowns' rates. Where the followed
+//! assembly stops being real (a turning point: the Jacobian of the position equations
+//! singular, two real assemblies meeting and leaving as a complex pair), the trajectory says so
+//! and where — it never continues on another branch silently. What is the paper's here: the
+//! equations, the inputs of §5 and the corners.
 
 use super::{Configurable, CornerPose};
 use kinsyn::geometry::sin_cos;
-use kinsyn::homotopy::{ParametrizedSystem, TrackerSettings, track_parameters};
-use kinsyn::poly::{C64, Poly, System};
-use nalgebra::{DMatrix, DVector, Vector2};
+use kinsyn::homotopy::{BranchEnd, BranchPoint, ParametrizedSystem, follow_real, real_newton};
+use kinsyn::poly::{Poly, System};
+use nalgebra::Vector2;
 
 /// The unknowns of method 2 (§3.2): `x4, y4, sin θ, cos θ, sin φ, cos φ`.
 pub const UNKNOWNS: [&str; 6] = ["x4", "y4", "st", "ct", "sp", "cp"];
@@ -96,17 +98,26 @@ pub fn elbow_family(m: &Configurable) -> ParametrizedSystem {
     ParametrizedSystem::new(system, 8).expect("six equations in six unknowns")
 }
 
-fn elbow_parameters(m: &Configurable, q: &[f64; 4]) -> Vec<C64> {
+/// The elbows `B_i(q_i)` as the family's parameters `bx1, by1, …, bx4, by4`.
+fn elbow_parameters(m: &Configurable, q: &[f64; 4]) -> Vec<f64> {
     (0..4)
         .flat_map(|i| {
             let b = m.elbow(i, q[i]);
-            [C64::from(b.x), C64::from(b.y)]
+            [b.x, b.y]
         })
         .collect()
 }
 
-fn pose_unknowns(p: &CornerPose) -> Vec<C64> {
-    [
+/// The elbows' rates `Ḃ_i = a q̇_i (−sin q_i, cos q_i)` in the order of [`elbow_parameters`].
+fn elbow_rates(m: &Configurable, q: &[f64; 4], dq: &[f64; 4]) -> Vec<f64> {
+    (0..4)
+        .flat_map(|i| [-m.a * q[i].sin() * dq[i], m.a * q[i].cos() * dq[i]])
+        .collect()
+}
+
+/// The pose as the family's unknowns [`UNKNOWNS`].
+fn pose_unknowns(p: &CornerPose) -> Vec<f64> {
+    vec![
         p.c4.x,
         p.c4.y,
         p.theta.sin(),
@@ -114,43 +125,24 @@ fn pose_unknowns(p: &CornerPose) -> Vec<C64> {
         p.phi.sin(),
         p.phi.cos(),
     ]
-    .map(C64::from)
-    .to_vec()
+}
+
+/// The pose of the unknowns [`UNKNOWNS`].
+fn pose_of(x: &[f64]) -> CornerPose {
+    CornerPose {
+        c4: Vector2::new(x[0], x[1]),
+        theta: x[2].atan2(x[3]),
+        phi: x[4].atan2(x[5]),
+    }
 }
 
 /// The assembly at inputs `q` nearest `guess` by Newton's method on the position equations
-/// (method 2): `None` unless it converges (update below 1e-12 of the size) in 50 steps.
+/// (method 2, [`kinsyn::homotopy::real_newton`]): `None` unless it converges (update below
+/// 1e-12 of the size) in 50 steps.
 #[must_use]
 pub fn assemble(m: &Configurable, q: &[f64; 4], guess: &CornerPose) -> Option<CornerPose> {
     let family = elbow_family(m);
-    let program = family.program();
-    let mut ws = program.workspace::<C64>();
-    let p = elbow_parameters(m, q);
-    let mut x: Vec<f64> = pose_unknowns(guess).iter().map(|c| c.re).collect();
-    let mut values = vec![C64::from(0.0); 6];
-    let mut jac = vec![C64::from(0.0); 6 * 14];
-    for _ in 0..50 {
-        let point: Vec<C64> = x
-            .iter()
-            .map(|v| C64::from(*v))
-            .chain(p.iter().copied())
-            .collect();
-        program.evaluate_with_jacobian(&point, &mut values, &mut jac, &mut ws);
-        let fx = DMatrix::from_fn(6, 6, |i, j| jac[i * 14 + j].re);
-        let f = DVector::from_fn(6, |i, _| -values[i].re);
-        let dx = fx.lu().solve(&f)?;
-        for (xi, d) in x.iter_mut().zip(dx.iter()) {
-            *xi += d;
-        }
-        if dx.norm() <= 1e-12 * (1.0 + x.iter().map(|v| v.abs()).fold(0.0, f64::max)) {
-            return Some(CornerPose {
-                c4: Vector2::new(x[0], x[1]),
-                theta: x[2].atan2(x[3]),
-                phi: x[4].atan2(x[5]),
-            });
-        }
-    }
-    None
+    real_newton(&family, &pose_unknowns(guess), &elbow_parameters(m, q)).map(|x| pose_of(&x))
 }
 
 /// One instant of the followed trajectory.
@@ -198,113 +190,31 @@ pub struct TrajectoryReport {
     pub least_inverse_condition: f64,
 }
 
-/// The unknowns' rates `ẋ = −F_x⁻¹ F_p ṗ` and the Jacobian's inverse condition at `(x, p)`.
-fn rates(family: &ParametrizedSystem, x: &[f64], p: &[f64], dp: &[f64]) -> Option<(Vec<f64>, f64)> {
-    let point: Vec<C64> = x.iter().chain(p).map(|v| C64::from(*v)).collect();
-    let program = family.program();
-    let mut ws = program.workspace::<C64>();
-    let mut values = vec![C64::from(0.0); 6];
-    let mut jac = vec![C64::from(0.0); 6 * 14];
-    program.evaluate_with_jacobian(&point, &mut values, &mut jac, &mut ws);
-    let fx = DMatrix::from_fn(6, 6, |i, j| jac[i * 14 + j].re);
-    let fp = DMatrix::from_fn(6, 8, |i, j| jac[i * 14 + 6 + j].re);
-    let sv = fx.clone().singular_values();
-    let inverse_condition = sv.min() / sv.max();
-    let rhs = -(fp * DVector::from_column_slice(dp));
-    let dx = fx.lu().solve(&rhs)?;
-    Some((dx.iter().copied().collect(), inverse_condition))
-}
-
-fn sample(
-    m: &Configurable,
-    family: &ParametrizedSystem,
-    t: f64,
-    q: [f64; 4],
-    dq: [f64; 4],
-    x: &[f64],
-) -> Option<Sample> {
-    let p: Vec<f64> = elbow_parameters(m, &q).iter().map(|c| c.re).collect();
-    let dp: Vec<f64> = (0..4)
-        .flat_map(|i| [-m.a * q[i].sin() * dq[i], m.a * q[i].cos() * dq[i]])
-        .collect();
-    let (dx, inverse_condition) = rates(family, x, &p, &dp)?;
-    let pose = CornerPose {
-        c4: Vector2::new(x[0], x[1]),
-        theta: x[2].atan2(x[3]),
-        phi: x[4].atan2(x[5]),
-    };
+/// The instant `point` of the followed branch as a sample of the trajectory: the pose, the
+/// corners and their velocities (`Ċ_4 = ẋ4`, `Ċ_1 = Ċ_4 + c (ċos θ, ṡin θ)`, `Ċ_3` likewise with
+/// `φ`, `Ċ_2 = Ċ_1 + Ċ_3 − Ċ_4`).
+fn sample(m: &Configurable, q: [f64; 4], point: &BranchPoint) -> Sample {
+    let (x, dx) = (&point.x, &point.rates);
+    let pose = pose_of(x);
     let c = m.c;
     let d4 = Vector2::new(dx[0], dx[1]);
     let d1 = d4 + c * Vector2::new(dx[3], dx[2]);
     let d3 = d4 + c * Vector2::new(dx[5], dx[4]);
-    Some(Sample {
-        t,
+    Sample {
+        t: point.t,
         q,
         pose,
         corners: pose.corners(c),
         corner_velocities: [d1, d1 + d3 - d4, d3, d4],
-        inverse_condition,
-    })
-}
-
-/// Whether the real assembly `x` at `inputs(t0)` is followed to a real one at `inputs(t1)`.
-fn step(
-    family: &ParametrizedSystem,
-    m: &Configurable,
-    inputs: &impl Fn(f64) -> [f64; 4],
-    x: &[C64],
-    t0: f64,
-    t1: f64,
-) -> Option<Vec<C64>> {
-    let (p0, p1) = (
-        elbow_parameters(m, &inputs(t0)),
-        elbow_parameters(m, &inputs(t1)),
-    );
-    let y = track_parameters(family, &p0, &p1, &[x.to_vec()], TrackerSettings::default())
-        .ok()?
-        .pop()?
-        .ok()?;
-    let size = 1.0 + y.iter().map(|c| c.norm()).fold(0.0, f64::max);
-    y.iter().all(|c| c.im.abs() <= 1e-8 * size).then_some(y)
-}
-
-/// Narrows `[t0, t1]` (the assembly `x` real at `t0`, lost at `t1`; `t1 < t0` when followed
-/// back in time) by bisection to the last instant reached and the first not, 1e-9 apart in `t`
-/// (or 40 halvings).
-fn bracket(
-    family: &ParametrizedSystem,
-    m: &Configurable,
-    inputs: &impl Fn(f64) -> [f64; 4],
-    x: &[C64],
-    t0: f64,
-    t1: f64,
-) -> (f64, f64) {
-    let (mut lo, mut hi, mut at) = (t0, t1, x.to_vec());
-    for _ in 0..40 {
-        if (hi - lo).abs() < 1e-9 {
-            break;
-        }
-        let mid = 0.5 * (lo + hi);
-        match step(family, m, inputs, &at, lo, mid) {
-            Some(y) => {
-                lo = mid;
-                at = y;
-            }
-            None => hi = mid,
-        }
+        inverse_condition: point.inverse_condition,
     }
-    (lo, hi)
 }
 
 /// Follows the assembly `start` (at the inputs `inputs(times[0])`) along the inputs
 /// `inputs(t)`, `t` over `times` in order (increasing, or decreasing to follow it back in time),
-/// by parameter homotopy between successive instants.
-/// A step that fails, leaves the reals (imaginary parts above 1e-8 of the size) or ends on a
-/// Jacobian with inverse condition below 1e-10 ends the trajectory with
+/// as a real branch of [`elbow_family`] ([`follow_real`]). A step that fails, leaves the reals
+/// or ends on a Jacobian with inverse condition below 1e-10 ends the trajectory with
 /// [`TrajectoryEnd::Ceased`].
-///
-/// # Panics
-/// If `times` is empty.
 #[must_use]
 pub fn follow(
     m: &Configurable,
@@ -314,58 +224,27 @@ pub fn follow(
     times: &[f64],
 ) -> TrajectoryReport {
     let family = elbow_family(m);
-    let mut x: Vec<C64> = pose_unknowns(start);
-    let mut samples = Vec::with_capacity(times.len());
-    let mut least = f64::INFINITY;
-    let mut previous: Option<(f64, Vec<C64>)> = None;
-    for &t in times {
-        let q = inputs(t);
-        let p = elbow_parameters(m, &q);
-        if let Some((t0, _)) = &previous {
-            let Some(moved) = step(&family, m, &inputs, &x, *t0, t) else {
-                let (last, next) = bracket(&family, m, &inputs, &x, *t0, t);
-                let reason = "the assembly could not be followed as a real one: a turning point, where the position Jacobian is singular and two real assemblies meet and leave as a complex pair".to_string();
-                return TrajectoryReport {
-                    samples,
-                    end: TrajectoryEnd::Ceased { last, next, reason },
-                    least_inverse_condition: least,
-                };
-            };
-            x = moved;
-        }
-        let real: Vec<f64> = x.iter().map(|c| c.re).collect();
-        let Some(s) = sample(m, &family, t, q, input_rates(t), &real) else {
-            return TrajectoryReport {
-                samples,
-                end: TrajectoryEnd::Ceased {
-                    last: previous.map_or(t, |p| p.0),
-                    next: t,
-                    reason: "singular position Jacobian".into(),
-                },
-                least_inverse_condition: least,
-            };
-        };
-        least = least.min(s.inverse_condition);
-        if s.inverse_condition < 1e-10 {
-            return TrajectoryReport {
-                samples,
-                end: TrajectoryEnd::Ceased {
-                    last: previous.map_or(t, |p| p.0),
-                    next: t,
-                    reason: format!(
-                        "a turning point: inverse condition {:.1e}",
-                        s.inverse_condition
-                    ),
-                },
-                least_inverse_condition: least,
-            };
-        }
-        samples.push(s);
-        previous = Some((t, p));
-    }
+    let branch = follow_real(
+        &family,
+        &pose_unknowns(start),
+        |t| elbow_parameters(m, &inputs(t)),
+        |t| elbow_rates(m, &inputs(t), &input_rates(t)),
+        times,
+    );
     TrajectoryReport {
-        samples,
-        end: TrajectoryEnd::Completed,
-        least_inverse_condition: least,
+        samples: branch
+            .points
+            .iter()
+            .map(|p| sample(m, inputs(p.t), p))
+            .collect(),
+        end: match branch.end {
+            BranchEnd::Completed => TrajectoryEnd::Completed,
+            BranchEnd::Ceased { last, next, reason } => TrajectoryEnd::Ceased {
+                last,
+                next,
+                reason: reason.replace("solution", "assembly"),
+            },
+        },
+        least_inverse_condition: branch.least_inverse_condition,
     }
 }
