@@ -49,7 +49,7 @@ fn the_branch_of_a_square_root_is_followed_to_its_turning_point_and_no_further()
         "the bracket is ordered in the direction of travel"
     );
     assert!(
-        last >= 0.9 && last <= 1.0 + 1e-9,
+        (0.9..=1.0 + 1e-9).contains(&last),
         "last real instant {last}"
     );
     assert!(
