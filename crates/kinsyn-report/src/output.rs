@@ -17,6 +17,7 @@ use std::path::{Path, PathBuf};
 
 /// `error` met on the output `given` with `option` (e.g. `--out figures`) as the command's
 /// error: one line naming the option, the path and, for an existing file, `--force`.
+#[must_use]
 pub fn error(option: &str, given: &Path, error: OutputError) -> Error {
     let shown = given.display();
     let this = error.path() == given;
@@ -64,6 +65,9 @@ pub struct OutputFile<'a> {
 impl<'a> OutputFile<'a> {
     /// `path` as the file `option` names: its folder exists, and nothing is there unless
     /// `force` (a folder never is accepted).
+    ///
+    /// # Errors
+    /// [`Error::Input`] for a path that exists (without `force`), is a folder or has no parent folder.
     pub fn check(option: &'static str, path: &'a Path, force: bool) -> Result<Self, Error> {
         let overwrite = Overwrite::from_force(force);
         output::check_target(path, overwrite).map_err(|e| error(option, path, e))?;
@@ -75,11 +79,15 @@ impl<'a> OutputFile<'a> {
     }
 
     /// The file's path.
+    #[must_use]
     pub fn path(&self) -> &Path {
         self.path
     }
 
     /// Writes `bytes` to the file, whole or not at all.
+    ///
+    /// # Errors
+    /// [`Error::Io`] when the file cannot be written (nothing is left behind).
     pub fn write(&self, bytes: &[u8]) -> Result<(), Error> {
         output::write(self.path, bytes, self.overwrite)
             .map_err(|e| error(self.option, self.path, e))
@@ -99,6 +107,9 @@ impl OutputFolder {
     /// subfolder allowed: `entry/T1-001.html`): a folder, or absent with a parent folder that
     /// exists; every one of the files absent unless `force` (counted in the refusal). Nothing
     /// is created or written.
+    ///
+    /// # Errors
+    /// [`Error::Input`] for a path that is not a folder, has no parent folder, or holds one of the files (without `force`).
     pub fn check<I, S>(
         option: &'static str,
         dir: &Path,
@@ -150,6 +161,9 @@ impl OutputFolder {
     }
 
     /// Creates the folder if missing (only it), and its subfolders `subfolders`.
+    ///
+    /// # Errors
+    /// [`Error::Io`] when a folder cannot be created.
     pub fn create(&self, subfolders: &[&str]) -> Result<(), Error> {
         output::create_folder(&self.dir).map_err(|e| self.error(e))?;
         for sub in subfolders {
@@ -159,6 +173,9 @@ impl OutputFolder {
     }
 
     /// Writes `bytes` to the file `name` in the folder, whole or not at all; its path.
+    ///
+    /// # Errors
+    /// [`Error::Io`] when the file cannot be written (nothing is left behind).
     pub fn write(&self, name: impl AsRef<Path>, bytes: &[u8]) -> Result<PathBuf, Error> {
         let path = self.dir.join(name);
         output::write(&path, bytes, self.overwrite).map_err(|e| self.error(e))?;

@@ -50,6 +50,9 @@ pub const MAX_THREADS: usize = 256;
 const NOT_BERTINI: &str = "not a Bertini input file";
 
 /// Reads a Bertini input file; errors name the file and the line.
+///
+/// # Errors
+/// [`Error::Input`] for a file that is not a readable Bertini input within the limits.
 pub fn read_input(path: &Path) -> Result<bertini::BertiniInput, Error> {
     let text = crate::files::read_text(path, NOT_BERTINI)?;
     parse_input(&text, &path.display().to_string())
@@ -128,6 +131,11 @@ pub enum PathOption {
 /// ([`homotopy::check_solvable`]: unknowns, constant equations, the start system's paths against
 /// `settings.max_paths`) as one line that names `source`, the number and the limit, and the
 /// option that raises it. The paths of one run if it may go ahead.
+///
+/// # Errors
+/// [`Error::Input`] for a system the library refuses (too many unknowns, a constant equation,
+/// coefficients beyond double precision) or whose paths exceed the limit, naming the estimate
+/// and the limit.
 pub fn check_cost(
     source: &str,
     system: &System,
@@ -237,6 +245,9 @@ fn check_solvable(file: &str, input: &bertini::BertiniInput) -> Result<(), Error
 }
 
 /// Runs `work` on a pool of `threads` workers (all cores when `None`).
+///
+/// # Errors
+/// [`Error::Input`] for a thread count of 0 or above [`MAX_THREADS`]; [`Error::Internal`] when the pool cannot start.
 pub fn with_threads<T: Send>(
     threads: Option<usize>,
     work: impl FnOnce() -> T + Send,
@@ -256,6 +267,9 @@ pub fn with_threads<T: Send>(
 
 /// Solves with a progress bar over the paths (shown only on a terminal), after the cost is
 /// checked ([`check_cost`], the refusal naming `source` and `option`).
+///
+/// # Errors
+/// [`Error::Input`] when the system cannot be solved as asked (its refusal in words).
 pub fn solve_with_bar(
     source: &str,
     system: &System,
@@ -281,6 +295,9 @@ pub fn solve_with_bar(
 }
 
 /// `kinsyn solve FILE`.
+///
+/// # Errors
+/// As [`read_input`], [`check_cost`] and [`solve_with_bar`].
 pub fn solve(path: &Path, options: &SolveOptions, as_json: bool) -> Result<String, Error> {
     let text = crate::files::read_text(path, NOT_BERTINI)?;
     let solved = solve_system(&text, &path.display().to_string(), options)?;
@@ -383,6 +400,7 @@ fn text_report(solved: &Solved) -> String {
 }
 
 /// A complex number as text: `1.2345678901` or `1.2345678901 - 0.5000000000i`.
+#[must_use]
 pub fn complex_text(c: C64) -> String {
     if c.im == 0.0 {
         format!("{:.10}", c.re)
@@ -406,6 +424,7 @@ fn reality(s: &Solution) -> &'static str {
 }
 
 /// The certificate counts in one line.
+#[must_use]
 pub fn certificate_line(report: &SolveReport) -> String {
     let regular = report.nonsingular();
     let non_real = report

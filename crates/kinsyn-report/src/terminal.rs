@@ -19,6 +19,9 @@ pub fn one_line(message: &str) -> String {
 /// ([`kinsyn::markup::json_visible`]) and passes unchanged. A reader that has gone away
 /// (`kinsyn … | head`) is not an error: the command ends quietly, as the conventional SIGPIPE
 /// behaviour would.
+///
+/// # Errors
+/// The write's error when stdout is closed other than by the reader going away.
 pub fn print(text: &str) -> io::Result<()> {
     let shown = kinsyn::markup::visible_lines(text);
     let mut out = io::stdout().lock();
@@ -41,6 +44,7 @@ pub fn working<T>(message: &str, work: impl FnOnce() -> T) -> T {
 /// A progress bar over `count` items (`unit`: "paths", "lock subsets") on stderr, labelled
 /// `message`. indicatif hides it (draws nothing) when stderr is not a terminal, so pipes, files
 /// and tests see only the output and the errors.
+#[must_use]
 pub fn progress(count: usize, unit: &str, message: &str) -> indicatif::ProgressBar {
     let bar = indicatif::ProgressBar::new(count as u64);
     if let Ok(style) = indicatif::ProgressStyle::with_template(&format!(

@@ -79,6 +79,9 @@ struct Reached {
 }
 
 /// `kinsyn analyze`.
+///
+/// # Errors
+/// [`Error::Input`] for a file that is not a description, a pose or inputs that do not read or do not assemble, or options out of range.
 pub fn analyze(
     path: &Path,
     placement: &Placement<'_>,

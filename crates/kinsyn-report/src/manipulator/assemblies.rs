@@ -24,6 +24,7 @@ struct Assembly {
 /// vector in its angle unit, each number in full (the shortest text that reads back to the same
 /// double): a platform of fewer than six dof meets its constraints only at the exact pose, and
 /// six rounded decimals leave it off them by more than the assembly tolerance.
+#[must_use]
 pub fn pose_text(m: &Manipulator, g: &Displacement) -> String {
     let t = g.translation.vector;
     let r = rotation_log(&g.rotation).map(|a| m.units().angle.from_radians(a));
@@ -35,6 +36,9 @@ pub fn pose_text(m: &Manipulator, g: &Displacement) -> String {
 }
 
 /// `kinsyn analyze FILE [--inputs …] --all-assemblies`.
+///
+/// # Errors
+/// [`Error::Input`] for a file that is not a description, inputs that do not read, a system past the path limit, or a mechanism whose assemblies cannot be posed as a system.
 pub fn all_assemblies(
     path: &Path,
     inputs_text: Option<&str>,

@@ -23,6 +23,9 @@ use std::path::Path;
 /// Reads and builds a manipulator file; errors name the file and the field. A path that is
 /// not a regular file, a file over [`crate::files::MAX_FILE_BYTES`], or text that is not UTF-8 or not a
 /// description is refused as "not a kinsyn manipulator file" before it is parsed further.
+///
+/// # Errors
+/// [`Error::Input`] for a path that is not a readable regular file within the size limit, or text that is not a description (naming the field).
 pub fn load(path: &Path) -> Result<Manipulator, Error> {
     let text = crate::files::read_text(path, file::NOT_A_DESCRIPTION)?;
     parse_description(&text, &path.display().to_string())
@@ -46,6 +49,9 @@ pub fn parse_description(text: &str, source: &str) -> Result<Manipulator, Error>
 
 /// The description a file holds, as the description of several bodies (a `/1` file as its `/2`
 /// form), without building the mechanism.
+///
+/// # Errors
+/// As [`load`].
 pub fn load_description(path: &Path) -> Result<file::MultibodyDescription, Error> {
     let text = crate::files::read_text(path, file::NOT_A_DESCRIPTION)?;
     parse_multibody(&text, &path.display().to_string())
@@ -187,6 +193,9 @@ pub fn build_checked(spec: &BuildSpec) -> Result<(Description, Manipulator), Err
 
 /// `kinsyn build`: writes a description (to `output`, replacing an existing file only when
 /// `force`, or returns it for stdout).
+///
+/// # Errors
+/// [`Error::Input`] for a faulty specification or an output that exists (without `force`); [`Error::Io`] when the output cannot be written.
 pub fn build_command(
     spec: &BuildSpec,
     output: Option<&Path>,
@@ -218,6 +227,9 @@ pub fn build_command(
 
 /// The inputs of `--inputs` (none: `None`), every input not named held at its reference value
 /// (0); errors quote the text.
+///
+/// # Errors
+/// [`Error::Input`] for inputs that do not read (unknown labels, values that are not numbers, an input given twice).
 pub fn inputs_or_reference(
     m: &Manipulator,
     text: Option<&str>,
@@ -237,6 +249,7 @@ pub fn inputs_or_reference(
 }
 
 /// `LABEL = value` for each input, angles in the file's unit, rounded to 1e-9.
+#[must_use]
 pub fn input_texts(m: &Manipulator, inputs: &[(usize, f64)]) -> Vec<String> {
     inputs
         .iter()
@@ -280,6 +293,9 @@ fn body_names(m: &Manipulator) -> String {
 /// `kinsyn stack`: a series-parallel stack of three-legged modules as a description, checked
 /// by reading it back (to `output`, replacing an existing file only when `force`, or returned
 /// for stdout).
+///
+/// # Errors
+/// [`Error::Input`] for module names, radii or heights that do not make a stack, or an output that exists (without `force`); [`Error::Io`] when the output cannot be written.
 pub fn stack_command(
     modules: &[String],
     radii: Vec<f64>,

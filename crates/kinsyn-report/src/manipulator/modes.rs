@@ -101,6 +101,9 @@ fn selected_subsets(
 
 /// `kinsyn modes`: the platform's motion for the selected lock subsets, with the locked inputs
 /// held at their values at the start configuration (the reference, or `--pose`).
+///
+/// # Errors
+/// [`Error::Input`] for a file that is not a description, a pose or lock that does not read, or a sampling past its limits.
 pub fn modes(
     path: &Path,
     (pose, body, relative): (Option<&str>, Option<&str>, Option<&str>),
