@@ -26,6 +26,8 @@
 //! This crate depends on no command-line parser, plotting or file-format crate: what only
 //! the command needs (argument grammar, figures, the Parquet encoder) is in `kinsyn-cli`.
 
+#![deny(missing_docs)]
+
 pub mod components;
 pub mod configurable;
 pub mod files;
