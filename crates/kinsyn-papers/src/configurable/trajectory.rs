@@ -242,7 +242,9 @@ pub fn follow(
             BranchEnd::Ceased { last, next, reason } => TrajectoryEnd::Ceased {
                 last,
                 next,
-                reason: reason.replace("solution", "assembly"),
+                reason: reason
+                    .replace("solutions", "assemblies")
+                    .replace("solution", "assembly"),
             },
         },
         least_inverse_condition: branch.least_inverse_condition,
