@@ -13,7 +13,9 @@
 //! (loops, mobility, assembly, finite motion) and [`manipulator`] builds parallel manipulators on
 //! them from description files: Jacobians in the form of paper 000 §4–5, singularities, and the
 //! motion patterns reached by locking inputs; [`geometry`] writes their legs as constraint
-//! polynomials in Study parameters. The polynomial systems are solved and their roots
+//! polynomials in Study parameters. [`workspace`] holds the grids of end-effector positions on
+//! which workspaces are searched: sets of cells, their volumes and the largest regular cylinder
+//! inside them. The polynomial systems are solved and their roots
 //! certified by the crate `kinsyn-nag`, re-exported here as [`poly`], [`homotopy`] and
 //! [`certify`]. Every file the crate and the command write goes through [`output`]: whole or
 //! not at all, never through a symbolic link.
@@ -43,5 +45,6 @@ pub mod spatial;
 pub mod sweep;
 pub mod synthesis;
 pub mod verification;
+pub mod workspace;
 
 pub use kinsyn_nag::{certify, homotopy, poly};

@@ -13,9 +13,10 @@
 //! gaps in the curve there.
 //!
 //! # The grid
-//! Cell centres at `(i s, j s, −k s)` for the step `s`, `k = 0 … ⌊(b + l)/s⌋` (every platform
-//! joint is at the height `z` and must be within `b + l` of its base joint, at height 0; the
-//! robot hangs below its base, so `z ≤ 0`), and `|i s|, |j s| ≤ H`:
+//! A [`kinsyn::workspace::Grid`]: cell centres at `(i s, j s, −k s)` for the step `s`,
+//! `k = 0 … ⌊(b + l)/s⌋` (every platform joint is at the height `z` and must be within `b + l`
+//! of its base joint, at height 0; the robot hangs below its base, so `z ≤ 0`), and
+//! `|i s|, |j s| ≤ H` with a cell to spare ([`kinsyn::workspace::Grid::covering`]):
 //! every platform joint is within `r1 + r2` of `P1`, each base joint within `a` of its pair's
 //! centre `m_μ = R_z(μ)(0, R, 0)`, so a reachable `P1` is within `D = b + l + r1 + r2 + a` of the
 //! three `m_μ` (limbs 1, 3 and 6 have the three directions `μ`); one of them is at least 120°
@@ -25,120 +26,27 @@
 //! # The regular common workspace
 //! The vertical cylinder centred on the `z` axis, radius `ρ`, `z ∈ [z_lo, z_hi]`, of largest
 //! volume `π ρ² (z_hi − z_lo)` whose grid cells (centres within `ρ` of the axis, layers from
-//! `z_lo` to `z_hi`) are all in both reachable sets. In each layer `ρ` is the largest cell-centre
-//! radius such that every cell centre at most that far from the axis is in both sets; a run of
-//! consecutive layers takes the smallest; the run of largest volume wins (the highest first on
-//! ties). Heights and radii are those of cell centres, so the cylinder is conservative by up to
-//! a step.
+//! `z_lo` to `z_hi`) are all in both reachable sets
+//! ([`kinsyn::workspace::Grid::regular_cylinder`]). In each layer `ρ` is the largest
+//! cell-centre radius such that every cell centre at most that far from the axis is in both
+//! sets; a run of consecutive layers takes the smallest; the run of largest volume wins (the
+//! highest first on ties). Heights and radii are those of cell centres, so the cylinder is
+//! conservative by up to a step.
 //!
 //! # Index maps (Fig. 4)
 //! Over a square `x–y` grid of `P1` positions at a height `z`, end-effector 2 at the four-bar's
 //! **nominal** (symmetric) assembly relative to `P1` ([`Hexa::nominal_four_bar`]): each cell's
 //! [`Indices`], or `None` where that pose is not assemblable.
 //!
-//! The searches run in parallel (rayon); their results do not depend on the number of threads.
+//! The searches run in parallel (rayon, [`kinsyn::workspace::map_in_parallel`]); their results
+//! do not depend on the number of threads. The grid, its cell-count limit and errors, the sets'
+//! volumes and the cylinder are the engine's `kinsyn::workspace`, re-exported here.
 
 use super::{Hexa, Indices, Pose};
+pub use kinsyn::workspace::{Cylinder, Grid, MAX_CELLS, Progress, WorkspaceError};
+use kinsyn::workspace::{check_step, count, finite, map_in_parallel};
 use nalgebra::{Vector2, Vector3};
-use rayon::prelude::*;
 use std::f64::consts::PI;
-use std::sync::atomic::{AtomicUsize, Ordering};
-
-/// The most grid cells a search takes.
-pub const MAX_CELLS: usize = 20_000_000;
-
-/// A progress report: `(done, total)` units of work.
-pub type Progress<'a> = &'a (dyn Fn(usize, usize) + Sync);
-
-/// Why a workspace search or index map cannot be made.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-pub enum WorkspaceError {
-    /// The grid step is not a positive finite length.
-    #[error("grid step {0}: give a positive length")]
-    Step(f64),
-    /// The grid would have too many cells.
-    #[error("grid step {step} makes {cells} cells, more than {max}: give a larger step")]
-    TooManyCells {
-        /// The step asked for.
-        step: f64,
-        /// The cells it makes.
-        cells: usize,
-        /// [`MAX_CELLS`].
-        max: usize,
-    },
-    /// A value (orientation, height, size, geometry) is not finite or out of its range.
-    #[error("{0}")]
-    Value(String),
-}
-
-/// The search grid of [`Hexa::workspace`]: cell centres `(i s, j s, −k s)`, `|i|, |j| ≤ n`,
-/// `k = 0 … layers − 1` (module documentation).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Grid {
-    /// The step `s` (mm).
-    pub step: f64,
-    /// `n`: cells on each side of the axis in `x` and `y`.
-    pub n: usize,
-    /// The number of layers in `z`, from `z = 0` down.
-    pub layers: usize,
-}
-
-impl Grid {
-    /// Cells along `x` (and `y`): `2n + 1`.
-    #[must_use]
-    pub fn side(&self) -> usize {
-        2 * self.n + 1
-    }
-
-    /// Every cell.
-    #[must_use]
-    pub fn cells(&self) -> usize {
-        self.side() * self.side() * self.layers
-    }
-
-    /// The centre of cell `(i, j, k)` (`i, j` from 0 at `x, y = −n s`).
-    #[must_use]
-    pub fn centre(&self, i: usize, j: usize, k: usize) -> Vector3<f64> {
-        let n = self.n as f64;
-        Vector3::new(
-            (i as f64 - n) * self.step,
-            (j as f64 - n) * self.step,
-            -(k as f64) * self.step,
-        )
-    }
-
-    /// The flat index of cell `(i, j, k)`: layers, then rows `j`, then `i`.
-    #[must_use]
-    pub fn index(&self, i: usize, j: usize, k: usize) -> usize {
-        (k * self.side() + j) * self.side() + i
-    }
-
-    /// The cell `(i, j, k)` of flat index `index`.
-    #[must_use]
-    pub fn cell(&self, index: usize) -> (usize, usize, usize) {
-        let side = self.side();
-        (index % side, (index / side) % side, index / (side * side))
-    }
-
-    /// The cell whose centre is nearest `p`, if inside the grid.
-    #[must_use]
-    pub fn nearest(&self, p: &Vector3<f64>) -> Option<(usize, usize, usize)> {
-        let n = self.n as f64;
-        let i = (p.x / self.step).round() + n;
-        let j = (p.y / self.step).round() + n;
-        let k = (-p.z / self.step).round();
-        let side = self.side() as f64;
-        let inside = (0.0..side).contains(&i)
-            && (0.0..side).contains(&j)
-            && (0.0..self.layers as f64).contains(&k);
-        #[allow(
-            clippy::cast_possible_truncation,
-            clippy::cast_sign_loss,
-            reason = "non-negative whole numbers below the grid's size"
-        )]
-        inside.then_some((i as usize, j as usize, k as usize))
-    }
-}
 
 /// The settings of [`Hexa::workspace`].
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -165,31 +73,6 @@ impl Default for WorkspaceSettings {
     }
 }
 
-/// A regular common workspace: a vertical cylinder on the `z` axis.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Cylinder {
-    /// `ρ` (mm).
-    pub radius: f64,
-    /// The bottom `z_lo` (mm).
-    pub z_lo: f64,
-    /// The top `z_hi` (mm).
-    pub z_hi: f64,
-}
-
-impl Cylinder {
-    /// `π ρ² (z_hi − z_lo)` (mm³).
-    #[must_use]
-    pub fn volume(&self) -> f64 {
-        PI * self.radius * self.radius * (self.z_hi - self.z_lo)
-    }
-
-    /// The middle height `(z_lo + z_hi)/2`.
-    #[must_use]
-    pub fn middle(&self) -> f64 {
-        0.5 * (self.z_lo + self.z_hi)
-    }
-}
-
 /// The reachable workspaces of both end-effectors on a grid (module documentation).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Workspace {
@@ -204,85 +87,41 @@ pub struct Workspace {
 }
 
 impl Workspace {
-    /// The centres of the reachable cells of end-effector 1 (`which = 0`) or 2 (`which = 1`).
-    #[must_use]
-    pub fn points(&self, which: usize) -> Vec<Vector3<f64>> {
-        let set = if which == 0 {
+    /// The reachable cells of end-effector 1 (`which = 0`) or 2 (`which = 1`).
+    fn set(&self, which: usize) -> &[bool] {
+        if which == 0 {
             &self.end_effector1
         } else {
             &self.end_effector2
-        };
-        set.iter()
-            .enumerate()
-            .filter(|(_, in_set)| **in_set)
-            .map(|(index, _)| {
-                let (i, j, k) = self.grid.cell(index);
-                self.grid.centre(i, j, k)
-            })
-            .collect()
+        }
+    }
+
+    /// The centres of the reachable cells of end-effector 1 (`which = 0`) or 2 (`which = 1`).
+    #[must_use]
+    pub fn points(&self, which: usize) -> Vec<Vector3<f64>> {
+        self.grid.points(self.set(which))
     }
 
     /// The volume of the reachable cells of end-effector 1 (`which = 0`) or 2 (mm³: cells × s³).
     #[must_use]
     pub fn volume(&self, which: usize) -> f64 {
-        let set = if which == 0 {
-            &self.end_effector1
-        } else {
-            &self.end_effector2
-        };
-        set.iter().filter(|b| **b).count() as f64 * self.grid.step.powi(3)
+        self.grid.volume(self.set(which))
     }
 
     /// The radius of the largest disc on the axis, in layer `k`, whose cell centres are all in
     /// both sets (the largest such cell-centre radius), or `None` when the axis cell is not.
     #[must_use]
     pub fn layer_radius(&self, k: usize) -> Option<f64> {
-        let side = self.grid.side();
-        let mut bad = f64::INFINITY;
-        let mut radii = Vec::new();
-        for j in 0..side {
-            for i in 0..side {
-                let c = self.grid.centre(i, j, k);
-                let r = c.x.hypot(c.y);
-                let index = self.grid.index(i, j, k);
-                if self.end_effector1[index] && self.end_effector2[index] {
-                    radii.push(r);
-                } else {
-                    bad = bad.min(r);
-                }
-            }
-        }
-        radii
-            .into_iter()
-            .filter(|r| *r < bad)
-            .fold(None, |m: Option<f64>, r| Some(m.map_or(r, |m| m.max(r))))
+        self.grid
+            .layer_radius(&[&self.end_effector1, &self.end_effector2], k)
     }
 
     /// The regular common workspace (module documentation), or `None` when no layer has its
     /// axis cell in both sets or the largest cylinder has no volume.
     #[must_use]
     pub fn regular_cylinder(&self) -> Option<Cylinder> {
-        let radii: Vec<Option<f64>> = (0..self.grid.layers)
-            .map(|k| self.layer_radius(k))
-            .collect();
-        let s = self.grid.step;
-        let mut best: Option<Cylinder> = None;
-        for top in 0..radii.len() {
-            let mut radius = f64::INFINITY;
-            for (bottom, r) in radii.iter().enumerate().skip(top) {
-                let Some(r) = r else { break };
-                radius = radius.min(*r);
-                let c = Cylinder {
-                    radius,
-                    z_hi: -(top as f64) * s,
-                    z_lo: -(bottom as f64) * s,
-                };
-                if c.volume() > best.map_or(0.0, |b| b.volume()) {
-                    best = Some(c);
-                }
-            }
-        }
-        best
+        self.grid
+            .regular_cylinder(&[&self.end_effector1, &self.end_effector2])
     }
 }
 
@@ -328,40 +167,6 @@ pub struct IndexMapSettings {
     pub phi1: f64,
     /// `φ2` (rad).
     pub phi2: f64,
-}
-
-fn finite(name: &str, value: f64) -> Result<f64, WorkspaceError> {
-    if value.is_finite() {
-        Ok(value)
-    } else {
-        Err(WorkspaceError::Value(format!("{name} {value}: not finite")))
-    }
-}
-
-fn check_step(step: f64) -> Result<f64, WorkspaceError> {
-    if step.is_finite() && step > 0.0 {
-        Ok(step)
-    } else {
-        Err(WorkspaceError::Step(step))
-    }
-}
-
-/// `⌊x/s⌋` as a count, refusing more than [`MAX_CELLS`].
-fn count(x: f64, step: f64) -> Result<usize, WorkspaceError> {
-    let n = (x / step).floor();
-    if n > MAX_CELLS as f64 {
-        return Err(WorkspaceError::TooManyCells {
-            step,
-            cells: usize::MAX,
-            max: MAX_CELLS,
-        });
-    }
-    #[allow(
-        clippy::cast_possible_truncation,
-        clippy::cast_sign_loss,
-        reason = "a non-negative whole number at most MAX_CELLS"
-    )]
-    Ok(n.max(0.0) as usize)
 }
 
 /// Eq. 5's reach test with everything that does not depend on the platform's position worked
@@ -420,24 +225,7 @@ impl Hexa {
     /// [`WorkspaceError::Step`] for a step that is not a positive length,
     /// [`WorkspaceError::TooManyCells`] beyond [`MAX_CELLS`].
     pub fn workspace_grid(&self, step: f64) -> Result<Grid, WorkspaceError> {
-        let step = check_step(step)?;
-        let n = count(self.workspace_half_width(), step)? + 1;
-        let layers = count(self.b + self.l, step)? + 1;
-        let grid = Grid { step, n, layers };
-        let cells = (grid.side() as f64).powi(2) * layers as f64;
-        if cells > MAX_CELLS as f64 {
-            #[allow(
-                clippy::cast_possible_truncation,
-                clippy::cast_sign_loss,
-                reason = "a count, saturating"
-            )]
-            return Err(WorkspaceError::TooManyCells {
-                step,
-                cells: cells as usize,
-                max: MAX_CELLS,
-            });
-        }
-        Ok(grid)
+        Grid::covering(step, self.workspace_half_width(), self.b + self.l)
     }
 
     /// Whether limbs 4 and 5 reach end-effector 2 at `(p2, φ2)` (eq. 5 has real roots).
@@ -513,50 +301,43 @@ impl Hexa {
         }
         let grid = self.workspace_grid(settings.step)?;
         let side = grid.side();
-        let rows = side * grid.layers;
-        let done = AtomicUsize::new(0);
         // Each row (j, k): its reachable P1 cells and the P2 cells they reach.
         let reach = Reach::new(self, settings.phi1, settings.phi2);
         // The coupler curve relative to P1 depends on φ1 only (the sub-platforms translate).
         let curve = self.coupler_points(&Vector3::zeros(), settings.phi1, settings.curve_samples);
-        let found: Vec<(Vec<usize>, Vec<usize>)> = (0..rows)
-            .into_par_iter()
-            .map(|row| {
-                let (j, k) = (row % side, row / side);
-                let mut ones = Vec::new();
-                let mut twos = Vec::new();
-                for i in 0..side {
-                    let p1 = grid.centre(i, j, k);
-                    if !reach.end_effector1(&p1) {
-                        continue;
-                    }
-                    let before = twos.len();
-                    for offset in &curve {
-                        let p2 = p1 + offset;
-                        if reach.end_effector2(&p2)
-                            && let Some((a, b, c)) = grid.nearest(&p2)
-                        {
-                            twos.push(grid.index(a, b, c));
-                        }
-                    }
-                    if twos.len() > before {
-                        ones.push(grid.index(i, j, k));
-                        // One P1's curve falls in a few cells: keep each once.
-                        twos[before..].sort_unstable();
-                        let mut kept = before;
-                        for n in before..twos.len() {
-                            if n == before || twos[n] != twos[kept - 1] {
-                                twos[kept] = twos[n];
-                                kept += 1;
-                            }
-                        }
-                        twos.truncate(kept);
+        let found: Vec<(Vec<usize>, Vec<usize>)> = grid.map_rows(progress, |j, k| {
+            let mut ones = Vec::new();
+            let mut twos = Vec::new();
+            for i in 0..side {
+                let p1 = grid.centre(i, j, k);
+                if !reach.end_effector1(&p1) {
+                    continue;
+                }
+                let before = twos.len();
+                for offset in &curve {
+                    let p2 = p1 + offset;
+                    if reach.end_effector2(&p2)
+                        && let Some((a, b, c)) = grid.nearest(&p2)
+                    {
+                        twos.push(grid.index(a, b, c));
                     }
                 }
-                progress(done.fetch_add(1, Ordering::Relaxed) + 1, rows);
-                (ones, twos)
-            })
-            .collect();
+                if twos.len() > before {
+                    ones.push(grid.index(i, j, k));
+                    // One P1's curve falls in a few cells: keep each once.
+                    twos[before..].sort_unstable();
+                    let mut kept = before;
+                    for n in before..twos.len() {
+                        if n == before || twos[n] != twos[kept - 1] {
+                            twos[kept] = twos[n];
+                            kept += 1;
+                        }
+                    }
+                    twos.truncate(kept);
+                }
+            }
+            (ones, twos)
+        });
         let mut end_effector1 = vec![false; grid.cells()];
         let mut end_effector2 = vec![false; grid.cells()];
         for (ones, twos) in found {
@@ -617,18 +398,11 @@ impl Hexa {
             });
         }
         let axis: Vec<f64> = (0..side).map(|i| (i as f64 - n as f64) * step).collect();
-        let done = AtomicUsize::new(0);
-        let rows: Vec<Vec<Option<Indices>>> = axis
-            .par_iter()
-            .map(|&y| {
-                let row = axis
-                    .iter()
-                    .map(|&x| self.nominal_indices(&Vector3::new(x, y, z), phi1, phi2))
-                    .collect();
-                progress(done.fetch_add(1, Ordering::Relaxed) + 1, side);
-                row
-            })
-            .collect();
+        let rows: Vec<Vec<Option<Indices>>> = map_in_parallel(side, progress, |j| {
+            axis.iter()
+                .map(|&x| self.nominal_indices(&Vector3::new(x, axis[j], z), phi1, phi2))
+                .collect()
+        });
         Ok(IndexMap {
             z,
             phi: [phi1, phi2],

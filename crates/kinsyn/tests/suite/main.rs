@@ -31,3 +31,4 @@ mod sweep_ranking;
 mod sweep_stability;
 mod synthesis;
 mod verification;
+mod workspace;
