@@ -110,7 +110,7 @@ pub(crate) fn catalogue() -> Result<Catalogue, Error> {
 /// # Errors
 /// [`Error::Input`] naming the option that is out of range or malformed (as
 /// [`sweep_settings`], [`Shard::parse`], [`SweepSelection::new`]; `--threads` 0 or above
-/// [`MAX_THREADS`](crate::MAX_THREADS)).
+/// [`MAX_THREADS`](crate::solve::MAX_THREADS)).
 pub fn options(catalogue: &Catalogue, request: &Request) -> Result<SweepOptions, Error> {
     let settings = sweep_settings(request.legs, request.actuated, request.seed)?;
     let shard = request.shard.map(Shard::parse).transpose()?;
