@@ -275,3 +275,16 @@ def test_read_checks_rows_and_files_as_the_report_does(tmp_path, cli_run):
     os.mkfifo(fifo)
     with pytest.raises(kinsyn.InputError, match="not a regular file"):
         ks.read(fifo)
+
+
+def test_without_pyarrow_run_and_merge_refuse_before_any_work(tmp_path, monkeypatch):
+    """designs.parquet is written with pyarrow: without it, run and merge raise InputError
+    naming it and leave no file behind (no design evaluated, no directory created)."""
+    monkeypatch.setattr(ks, "_has_pyarrow", lambda: False)
+    with pytest.raises(kinsyn.InputError, match="pip install pyarrow"):
+        ks.run(None, tmp_path / "run", **SMALL)
+    assert not (tmp_path / "run").exists()
+    with pytest.raises(kinsyn.InputError, match="pip install pyarrow"):
+        ks.merge([tmp_path / "a", tmp_path / "b"], tmp_path / "merged")
+    assert not (tmp_path / "merged").exists()
+

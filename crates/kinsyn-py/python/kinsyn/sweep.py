@@ -205,6 +205,7 @@ def run(
     another sweep's files, or files of none, is refused unless ``force`` (``--force``), which
     starts this sweep afresh there. ``stop_after`` stops once that many rows are done, as an
     interruption would. The GIL is released while the designs are evaluated."""
+    _require_pyarrow()
     selection = (legs, actuated, seed, chains, family)
     if partition is not None:
         if any(v is not None for v in selection):
@@ -255,6 +256,7 @@ def merge(dirs: Sequence[PathType], out: PathType, *, force: bool = False) -> Di
     and ``sweep.json`` byte for byte, ``designs.parquet`` the same table encoded by pyarrow.
     A sweep's file already in ``out`` is refused unless ``force`` (``--force``), which
     replaces it. Returns the merged manifest (``sweep.json``)."""
+    _require_pyarrow()
     return json.loads(
         _native.sweep_merge_json([fspath(d) for d in dirs], fspath(out), force)
     )
@@ -289,13 +291,11 @@ def _parquet_bytes(rows_jsonl: str, metadata: Sequence[Tuple[str, str]]) -> byte
     """The bytes of ``designs.parquet`` for the rows ``rows_jsonl`` (JSON lines sorted by
     design, ``groups`` and ``non_groups`` already compact JSON text) with the key-value
     ``metadata`` (the manifest's fields): the command's columns, types, snappy pages and row
-    groups, encoded by pyarrow. The native sweep and merge call it when they write the table;
-    it needs pyarrow."""
-    try:
-        import pyarrow as pa
-        import pyarrow.parquet as pq
-    except ImportError as e:
-        raise InputError("writing designs.parquet needs pyarrow (pip install pyarrow)") from e
+    groups, encoded by pyarrow. The native sweep and merge call it when they write the table
+    (:func:`run` and :func:`merge` check first that pyarrow imports)."""
+    import pyarrow as pa
+    import pyarrow.parquet as pq
+
     types = {
         "uint32": pa.uint32(),
         "string": pa.string(),
@@ -312,6 +312,13 @@ def _parquet_bytes(rows_jsonl: str, metadata: Sequence[Tuple[str, str]]) -> byte
     sink = pa.BufferOutputStream()
     pq.write_table(table, sink, compression="snappy", row_group_size=_ROW_GROUP)
     return sink.getvalue().to_pybytes()
+
+
+def _require_pyarrow() -> None:
+    """Refuses a run or merge before any work when pyarrow, which writes ``designs.parquet``,
+    does not import (rather than after every design is evaluated)."""
+    if not _has_pyarrow():
+        raise InputError("kinsyn.sweep writes designs.parquet with pyarrow: pip install pyarrow")
 
 
 def _has_pyarrow() -> bool:
