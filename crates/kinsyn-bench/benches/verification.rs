@@ -3,6 +3,7 @@
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use kinsyn::catalogue::{Catalogue, VERIFICATION_SEED};
+use kinsyn::published::PrintedTables;
 use kinsyn::screw;
 use kinsyn::synthesis::Options;
 use kinsyn::verification::{self, Settings};
@@ -11,7 +12,7 @@ use rand::SeedableRng;
 use std::hint::black_box;
 
 fn numerics(c: &mut Criterion) {
-    let cat = Catalogue::synthesise(&Options::default());
+    let cat = Catalogue::synthesise(&Options::default(), &PrintedTables::default());
     let entry = cat.find("PPPS").expect("PPPS is in Table 1");
     let chain = entry.serial_chain(VERIFICATION_SEED).unwrap();
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(1);

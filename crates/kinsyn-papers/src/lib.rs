@@ -2,6 +2,9 @@
 //! second method beside the general engine (`kinsyn`), through which the papers' mechanisms
 //! themselves go as description files (`mechanisms/`).
 //!
+//! - [`appendix`]: paper 000's printed Appendix (Tables 1–4, 7, 8), transcribed, as the printed
+//!   table the catalogue of the engine is marked against and compared with row by row; the
+//!   committed catalogue is [`appendix::generate`] with the default options.
 //! - [`hexa`]: paper 001's 6-RUU HEXA with reconfigurable platforms: the closed-form inverse
 //!   geometry, the four-bar of the platforms, the transmission indices, the workspaces and the
 //!   description file it writes.
@@ -17,6 +20,7 @@
 //! the engine's.
 #![deny(missing_docs)]
 
+pub mod appendix;
 pub mod configurable;
 pub mod hexa;
 pub mod ruu;

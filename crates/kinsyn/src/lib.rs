@@ -6,8 +6,9 @@
 //! holds the checked SVD, ranks, span and null-space bases and least squares, re-exported from
 //! [`screw`]. [`notation`] reads and prints chains
 //! in paper 000's letters with their parallel-axis marks; [`synthesis`] enumerates the 6-dof
-//! P/R chains of paper 000 §2 with their provenance; [`paper`] holds the printed Appendix and
-//! compares it row by row with the enumeration; [`catalogue`] deduplicates the candidates into
+//! P/R chains of paper 000 §2 with their provenance; [`published`] compares the enumeration row
+//! by row with a printed table given as data (paper 000's Appendix is in `kinsyn-papers`);
+//! [`catalogue`] deduplicates the candidates into
 //! catalogue entries and writes the `catalogue/` files; [`screw`], [`chain`], [`motion`] and
 //! [`verification`] check each entry numerically. [`mechanism`] holds general body–joint graphs
 //! (loops, mobility, assembly, finite motion) and [`manipulator`] builds parallel manipulators on
@@ -21,7 +22,8 @@
 //! not at all, never through a symbolic link.
 //!
 //! The case studies of single papers (the HEXA of paper 001, the series-parallel Jacobian of
-//! paper 002, the configurable 4-RRR of paper 003, the 4-RUU of paper 004) are the crate
+//! paper 002, the configurable 4-RRR of paper 003, the 4-RUU of paper 004, and the printed
+//! Appendix of paper 000 that the catalogue is compared with) are the crate
 //! `kinsyn-papers`, on this one: second methods and the papers' data, which this crate never
 //! imports.
 #![deny(missing_docs)]
@@ -38,7 +40,7 @@ pub mod mjcf;
 pub mod motion;
 pub mod notation;
 pub mod output;
-pub mod paper;
+pub mod published;
 pub mod schematic;
 pub mod screw;
 pub mod spatial;

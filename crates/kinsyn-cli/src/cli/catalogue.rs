@@ -7,8 +7,10 @@ use kinsyn::catalogue::{Catalogue, Entry, VERIFICATION_SEED};
 use kinsyn::lockset::LockSet;
 use kinsyn::motion::{PatternName, PatternQuery};
 use kinsyn::notation::Chain;
+use kinsyn::published::Comparison;
 use kinsyn::synthesis::{Options, PrismaticReading, tables};
 use kinsyn::verification::{self, Settings};
+use kinsyn_papers::appendix;
 use std::fmt::Write as _;
 use std::path::Path;
 
@@ -19,7 +21,7 @@ impl Reading {
     pub(super) fn catalogue(&self) -> Result<Catalogue, CliError> {
         let options = self.options();
         if options != Options::default() {
-            return Ok(self.generated());
+            return Ok(self.generated().0);
         }
         Catalogue::committed().map_err(|e| {
             CliError::Internal(format!(
@@ -28,12 +30,24 @@ impl Reading {
         })
     }
 
-    /// The catalogue in this reading, enumerated and verified (about a second: a spinner
-    /// shows on a terminal).
-    pub(super) fn generated(&self) -> Catalogue {
+    /// The catalogue in this reading, enumerated, marked against paper 000's Appendix and
+    /// verified (about a second: a spinner shows on a terminal), with its comparison with the
+    /// Appendix.
+    pub(super) fn generated(&self) -> (Catalogue, Comparison) {
         terminal::working("enumerating and verifying the catalogue", || {
-            Catalogue::generate(&self.options())
+            appendix::generate(&self.options())
         })
+    }
+
+    /// The catalogue in this reading ([`Reading::catalogue`]) and its row-by-row comparison
+    /// with paper 000's Appendix (the enumeration in its options compared: about 15 ms).
+    pub(super) fn compared(&self) -> Result<(Catalogue, Comparison), CliError> {
+        if self.options() != Options::default() {
+            return Ok(self.generated());
+        }
+        let cat = self.catalogue()?;
+        let comparison = appendix::comparison(&cat.options);
+        Ok((cat, comparison))
     }
 
     pub(super) fn options(&self) -> Options {
@@ -179,9 +193,13 @@ fn rejected(reading: &Reading) -> Result<String, CliError> {
 /// when `force`).
 fn generate(out: &Path, force: bool, reading: &Reading) -> Result<String, CliError> {
     super::output::OutputFolder::check("--out", out, Catalogue::FILES, force)?;
-    let cat = reading.generated();
-    cat.write(out, kinsyn::output::Overwrite::from_force(force))
-        .map_err(|e| super::output::error("--out", out, e))?;
+    let (cat, comparison) = reading.generated();
+    cat.write(
+        out,
+        &comparison,
+        kinsyn::output::Overwrite::from_force(force),
+    )
+    .map_err(|e| super::output::error("--out", out, e))?;
     let (letters, marks) = cat.totals();
     Ok(format!(
         "wrote {} entries ({letters} distinct by letters) to {}\n",
@@ -192,10 +210,10 @@ fn generate(out: &Path, force: bool, reading: &Reading) -> Result<String, CliErr
 
 /// `catalogue summary`: the counts per Appendix table against the paper's.
 fn summary(reading: &Reading, as_json: bool) -> Result<String, CliError> {
-    let cat = reading.catalogue()?;
+    let (cat, comparison) = reading.compared()?;
     if as_json {
-        let diffs: Vec<serde_json::Value> = cat
-            .difference_counts()
+        let diffs: Vec<serde_json::Value> = comparison
+            .counts()
             .iter()
             .map(|((t, k), n)| serde_json::json!({"table": t, "kind": k.name(), "count": n}))
             .collect();
@@ -210,7 +228,7 @@ fn summary(reading: &Reading, as_json: bool) -> Result<String, CliError> {
             "differences": diffs,
         })));
     }
-    let readme = cat.readme();
+    let readme = cat.readme(&comparison);
     let body = readme
         .split_once("## Counts per table")
         .map_or(readme.as_str(), |(_, b)| b);
@@ -379,11 +397,11 @@ fn not_found(cat: &Catalogue, query: &str) -> String {
 
 /// `catalogue compare`: every difference from the printed Appendix.
 fn compare(reading: &Reading, as_json: bool) -> Result<String, CliError> {
-    let cat = reading.catalogue()?;
+    let (_, comparison) = reading.compared()?;
     if as_json {
-        return Ok(json(&cat.differences));
+        return Ok(json(&comparison.differences));
     }
-    Ok(cat.differences_markdown())
+    Ok(comparison.markdown())
 }
 
 /// The motion of an entry's chain with the joints of `text` locked (its verification's

@@ -15,6 +15,7 @@ mod common {
     pub use super::singular;
 }
 
+mod appendix;
 mod configurable;
 mod configurable_mechanism;
 mod configurable_methods;

@@ -3,39 +3,9 @@
 //! table counts what is new to it.
 
 use super::{Catalogue, Composition, Entry, Provenance, Reading, TableCount};
-use crate::paper;
+use crate::published::PrintedTables;
 use crate::synthesis::{Candidate, Options, TABLES, Table};
 use std::collections::{BTreeMap, BTreeSet};
-
-/// The chains the printed Appendix names, by letters (misprints included).
-struct Printed {
-    /// (table, row, letters) of every printed chain.
-    in_row: BTreeSet<(u8, usize, String)>,
-}
-
-impl Printed {
-    fn read() -> Self {
-        Printed {
-            in_row: paper::appendix()
-                .into_iter()
-                .flat_map(|p| p.chains.into_iter().map(move |c| (p.table, p.row, c)))
-                .collect(),
-        }
-    }
-
-    /// Whether the candidate's letters are printed in its own row (anywhere in Tables 5–8,
-    /// whose rows the paper does not keep apart).
-    fn in_its_row(&self, c: &Candidate, letters: &str) -> bool {
-        self.in_row
-            .iter()
-            .any(|(t, r, l)| *t == c.table && (*r == c.row || c.table >= 5) && l == letters)
-    }
-
-    /// Whether the letters are printed anywhere in the Appendix.
-    fn anywhere(&self, letters: &str) -> bool {
-        self.in_row.iter().any(|(_, _, l)| l == letters)
-    }
-}
 
 /// What earlier tables already hold: the first occurrence wins.
 #[derive(Default)]
@@ -54,7 +24,7 @@ impl Seen {
         &mut self,
         table: &Table,
         candidates: &[Candidate],
-        printed: &Printed,
+        printed: &PrintedTables,
     ) -> (TableCount, Vec<Entry>) {
         let mut count = TableCount {
             table: table.number,
@@ -84,8 +54,8 @@ impl Seen {
                 parallel_groups: c.parallel_groups.clone(),
                 composition: Composition::of(&c.chain),
                 first_with_letters,
-                printed_in_row: printed.in_its_row(c, &letters),
-                printed_in_appendix: printed.anywhere(&letters),
+                printed_in_row: printed.printed_in(c.table, c.row, &letters),
+                printed_in_appendix: printed.printed_anywhere(&letters),
                 letters,
                 family: table.family.to_string(),
                 word: c.word.clone(),
@@ -101,9 +71,11 @@ impl Seen {
                 verification: None,
             });
         }
-        for (t, _, l) in &printed.in_row {
-            if *t == table.number && self.printed.insert(l.clone()) {
-                count.printed_letters += 1;
+        for p in printed.rows().iter().filter(|p| p.table == table.number) {
+            for l in &p.chains {
+                if self.printed.insert(l.clone()) {
+                    count.printed_letters += 1;
+                }
             }
         }
         (count, entries)
@@ -134,17 +106,21 @@ fn attach_readings(entries: &mut [Entry], candidates: &[Candidate]) {
 }
 
 impl Catalogue {
-    /// Builds the catalogue from enumerated candidates (first occurrence wins, in table order)
-    /// and compares them with the printed Appendix; no numerical check.
+    /// Builds the catalogue from enumerated candidates (first occurrence wins, in table order),
+    /// each entry marked as printed in its row of `printed`, or elsewhere in it, or not; no
+    /// numerical check. The row-by-row comparison with `printed` is
+    /// [`crate::published::Comparison::new`] on the same candidates.
     #[must_use]
-    pub fn from_candidates(options: Options, candidates: &[Candidate]) -> Self {
-        let (rows, differences) = paper::compare(candidates);
-        let printed = Printed::read();
+    pub fn from_candidates(
+        options: Options,
+        candidates: &[Candidate],
+        printed: &PrintedTables,
+    ) -> Self {
         let mut seen = Seen::default();
         let mut entries = Vec::new();
         let mut counts = Vec::new();
         for table in &TABLES {
-            let (count, new) = seen.table(table, candidates, &printed);
+            let (count, new) = seen.table(table, candidates, printed);
             counts.push(count);
             entries.extend(new);
         }
@@ -153,8 +129,6 @@ impl Catalogue {
             options,
             entries,
             counts,
-            rows,
-            differences,
             verification: None,
         }
     }

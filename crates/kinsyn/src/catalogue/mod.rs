@@ -1,16 +1,22 @@
-//! The catalogue of 6-dof leg chains: candidates deduplicated, counted per table, compared with
-//! the paper, and written as `catalogue/chains.json`, `chains.csv` and `README.md`.
+//! The catalogue of 6-dof leg chains: candidates deduplicated, counted per table, marked as
+//! printed or not in a published table ([`crate::published`]), and written as
+//! `catalogue/chains.json`, `chains.csv` and `README.md`.
 //!
 //! Identity is "letters + parallel marks" (the canonical [`Chain`] text): two chains with the
 //! same letters but different parallel groups move differently (§2.2: UU and UU). The first
 //! occurrence in table order wins and keeps its provenance. "Letters only" counts are reported
-//! beside it because they are what the plain-text Appendix can be checked against.
+//! beside it because they are what a plain-text printed table can be checked against.
 //!
 //! The module's files follow its jobs: this one holds the model (entries, counts, the
 //! catalogue and its reading of the committed file); `build.rs` deduplicates the enumerated
 //! candidates into entries and counts; `query.rs` searches the verified entries for a motion
 //! pattern; `formats.rs` writes and reads `chains.json`, and writes `chains.csv` and the
 //! Markdown tables of `README.md` and `docs/deviations.md`.
+//!
+//! The printed table the entries are marked against is an input ([`PrintedTables`]): paper
+//! 000's Appendix is `kinsyn_papers::appendix`, which this crate never imports. The row-by-row
+//! comparison with it ([`crate::published::Comparison`]) is a value of its own, not part of the catalogue or its
+//! files: `README.md`'s table of differences takes it as an argument.
 
 mod build;
 mod formats;
@@ -20,14 +26,13 @@ pub use query::QueryHit;
 
 use crate::chain::{ChainError, SerialChain};
 use crate::notation::{Axis, AxisWord, Chain, JointKind, Primitive};
-use crate::paper::{Difference, DifferenceKind, RowComparison};
+use crate::published::PrintedTables;
 use crate::synthesis::{self, Options};
 use crate::verification::{self, RankCheck, Settings, Verification};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
-use std::collections::BTreeMap;
 
 /// How many joints of each letter a chain has.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
@@ -165,8 +170,9 @@ pub const FORMAT: &str = "kinsyn-catalogue/3";
 /// The committed `catalogue/chains.json`, compiled in.
 ///
 /// The committed catalogue is part of the source: it is what [`Catalogue::generate`] gives with
-/// the default reading (`tests/suite/catalogue.rs` checks it entry by entry, and byte for byte against
-/// a fresh `kinsyn catalogue generate`). Compiling it in lets the binary read it from any
+/// the default reading and paper 000's Appendix (`kinsyn_papers::appendix::generate`; the
+/// papers' `tests/suite/appendix.rs` checks it entry by entry, and byte for byte against a
+/// fresh `kinsyn catalogue generate`). Compiling it in lets the binary read it from any
 /// working directory, installed or not, with no path to find and no file that can go missing
 /// or be swapped for another version after the build; its cost is 1.3 MB of read-only data.
 pub const COMMITTED_JSON: &str = include_str!("../../../../catalogue/chains.json");
@@ -386,32 +392,27 @@ pub struct Catalogue {
     pub entries: Vec<Entry>,
     /// Per-table counts.
     pub counts: Vec<TableCount>,
-    /// The row-by-row comparison with the printed Appendix.
-    #[serde(skip)]
-    pub rows: Vec<RowComparison>,
-    /// Every difference from the printed Appendix.
-    #[serde(skip)]
-    pub differences: Vec<Difference>,
     /// The settings and seed of the numerical check, once it ran.
     #[serde(skip)]
     pub verification: Option<(Settings, u64)>,
 }
 
 impl Catalogue {
-    /// Enumerates, deduplicates, compares with the paper and verifies every entry
-    /// numerically (default settings, [`VERIFICATION_SEED`]): the committed catalogue.
+    /// Enumerates, deduplicates, marks what `printed` prints and verifies every entry
+    /// numerically (default settings, [`VERIFICATION_SEED`]). With paper 000's Appendix and
+    /// the default options this is the committed catalogue (`kinsyn_papers::appendix::generate`).
     #[must_use]
-    pub fn generate(options: &Options) -> Self {
-        let mut cat = Self::synthesise(options);
+    pub fn generate(options: &Options, printed: &PrintedTables) -> Self {
+        let mut cat = Self::synthesise(options, printed);
         cat.verify(&Settings::default(), VERIFICATION_SEED);
         cat
     }
 
-    /// Enumerates, deduplicates and compares with the paper, without the numerical check.
+    /// Enumerates, deduplicates and marks what `printed` prints, without the numerical check.
     #[must_use]
-    pub fn synthesise(options: &Options) -> Self {
+    pub fn synthesise(options: &Options, printed: &PrintedTables) -> Self {
         let candidates = synthesis::enumerate(options);
-        Self::from_candidates(*options, &candidates)
+        Self::from_candidates(*options, &candidates, printed)
     }
 
     /// The committed catalogue ([`COMMITTED_JSON`]): the entries, counts and verification
@@ -522,15 +523,5 @@ impl Catalogue {
             self.counts.iter().map(|c| c.letters_only).sum(),
             self.counts.iter().map(|c| c.with_marks).sum(),
         )
-    }
-
-    /// How many differences of each kind each table has.
-    #[must_use]
-    pub fn difference_counts(&self) -> BTreeMap<(u8, DifferenceKind), usize> {
-        let mut m = BTreeMap::new();
-        for d in &self.differences {
-            *m.entry((d.key.table, d.kind)).or_insert(0) += 1;
-        }
-        m
     }
 }

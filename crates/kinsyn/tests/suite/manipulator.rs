@@ -576,7 +576,10 @@ fn every_verified_catalogue_chain_builds_a_six_dof_manipulator() {
     // special. Checked for all 446 verified chains at the reference configuration.
     use kinsyn::catalogue::Catalogue;
     use kinsyn::manipulator::build::{BuildSpec, build};
-    let cat = Catalogue::generate(&kinsyn::synthesis::Options::default());
+    let cat = Catalogue::generate(
+        &kinsyn::synthesis::Options::default(),
+        &kinsyn::published::PrintedTables::default(),
+    );
 
     for e in cat.verified() {
         let d = build(&BuildSpec {
@@ -1204,8 +1207,9 @@ fn the_committed_lookup_gives_every_synthesised_entry() {
     // first one enumerated).
     use kinsyn::catalogue::Catalogue;
     use kinsyn::manipulator::{ChainLookup, CommittedChains};
+    use kinsyn::published::PrintedTables;
     use kinsyn::synthesis::Options;
-    let synthesised = Catalogue::generate(&Options::default());
+    let synthesised = Catalogue::generate(&Options::default(), &PrintedTables::default());
     let committed = CommittedChains::get();
     assert!(!synthesised.entries.is_empty());
     for e in &synthesised.entries {
@@ -1230,6 +1234,7 @@ fn a_catalogue_id_builds_the_same_manipulator_as_the_synthesised_catalogue() {
     // (kind, axis, point, bodies) and inputs.
     use kinsyn::catalogue::Catalogue;
     use kinsyn::manipulator::file::Description;
+    use kinsyn::published::PrintedTables;
     use kinsyn::synthesis::Options;
     let text = r#"{
       "format": "kinsyn-manipulator/1",
@@ -1244,7 +1249,7 @@ fn a_catalogue_id_builds_the_same_manipulator_as_the_synthesised_catalogue() {
     }"#;
     let d = Description::from_json(text).unwrap();
     let by_default = Manipulator::new(&d).unwrap();
-    let synthesised = Catalogue::synthesise(&Options::default());
+    let synthesised = Catalogue::synthesise(&Options::default(), &PrintedTables::default());
     let by_synthesis = Manipulator::new_with(&d, &synthesised).unwrap();
     assert_eq!(by_default.legs(), by_synthesis.legs());
     assert_eq!(by_default.actuators(), by_synthesis.actuators());

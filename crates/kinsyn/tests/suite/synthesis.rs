@@ -1,9 +1,10 @@
 //! The structural synthesis (src/synthesis) against paper 000 §2, its Appendix and hand
 //! derivations from the rules.
 
+use itertools::Itertools;
 use kinsyn::notation::{Primitive, letters_fit_word};
 use kinsyn::synthesis::rules::{self, Grouping};
-use kinsyn::synthesis::{Candidate, Options, PrismaticReading, enumerate, parse_word};
+use kinsyn::synthesis::{Candidate, Options, PrismaticReading, TABLES, enumerate, parse_word};
 use std::collections::BTreeSet;
 use std::sync::OnceLock;
 
@@ -248,4 +249,84 @@ fn any_grouping_contains_the_fewest() {
             .collect();
         assert!(fewest.is_subset(&any));
     }
+}
+
+#[test]
+fn the_families_are_all_permutations() {
+    // §2.1: 20 permutations of PPPRRR; §2.2: 15 of PPRRRR; §2.3: 6 of PRRRRR; §2.4: one 6R.
+    // Checked against an independent enumeration of distinct permutations.
+    for table in &TABLES {
+        let mut expected: Vec<String> = table
+            .family
+            .chars()
+            .permutations(6)
+            .map(|p| p.into_iter().collect::<String>())
+            .collect();
+        expected.sort();
+        expected.dedup();
+        let mut words: Vec<String> = table.words.iter().map(|w| (*w).to_string()).collect();
+        words.sort();
+        assert_eq!(words, expected, "table {}", table.number);
+    }
+    let sizes: Vec<usize> = TABLES.iter().map(|t| t.words.len()).collect();
+    assert_eq!(sizes, vec![20, 15, 6, 6, 1, 1]);
+}
+
+/// The parallel groups kept by each arrangement of a multiset of revolute directions (runs of
+/// two or more equal neighbours), counted by brute force over all arrangements: a second
+/// algorithm beside `synthesis::rules`.
+fn kept_group_structures(directions: &str) -> usize {
+    let structures: BTreeSet<Vec<(usize, usize)>> = directions
+        .chars()
+        .permutations(directions.len())
+        .map(|p| {
+            let mut runs = Vec::new();
+            let mut start = 0;
+            for i in 1..=p.len() {
+                if i == p.len() || p[i] != p[start] {
+                    if i - start >= 2 {
+                        runs.push((start, i));
+                    }
+                    start = i;
+                }
+            }
+            runs
+        })
+        .collect();
+    structures.len()
+}
+
+#[test]
+fn variant_counts_against_the_paper() {
+    // §2.4: "... a total of 16 different combinations are derived" (Table 6).
+    const PAPER_TABLE_6: usize = 16;
+    let candidates: Vec<Candidate> = enumerate(&Options::default());
+    let variants = |t: u8, row: usize| {
+        candidates
+            .iter()
+            .filter(|c| c.table == t && c.row == row)
+            .map(|c| c.variant)
+            .collect::<BTreeSet<_>>()
+            .len()
+    };
+    // Appendix: Table 2 prints 4 sub-rows per row, Tables 3 and 4 print 8 (Table 3 row 2: 7).
+    assert_eq!(kept_group_structures("aabc"), 4);
+    assert_eq!(kept_group_structures("aaabc"), 8);
+    assert_eq!(kept_group_structures("aabbc"), 8);
+    for row in 1..=15 {
+        assert_eq!(variants(2, row), 4);
+    }
+    for row in 1..=6 {
+        assert_eq!(variants(3, row), 8);
+        assert_eq!(variants(4, row), 8);
+    }
+    // §2.4: "In Table 5 all the variants ... A total of 10 variants are obtained."
+    assert_eq!(kept_group_structures("aabbcc"), 10);
+    assert_eq!(variants(7, 1), 10);
+    // §2.4: Table 6 has PAPER_TABLE_6 combinations. Expected deviation (docs/deviations.md,
+    // "Variant sub-rows"): the pattern 3+2+1 keeps 22 distinct structures of parallel groups,
+    // and the enumeration has all of them.
+    assert_eq!(kept_group_structures("aaabbc"), 22);
+    assert_ne!(variants(8, 1), PAPER_TABLE_6);
+    assert_eq!(variants(8, 1), kept_group_structures("aaabbc"));
 }
