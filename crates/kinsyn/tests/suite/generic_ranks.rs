@@ -57,13 +57,15 @@ fn report(m: &Manipulator, seed: u64) -> (Vec<String>, String) {
     )
 }
 
+/// Each (description, seed) pair is independent: they run on every core.
 fn check(seeds: &[u64]) {
-    for (path, m) in descriptions() {
-        let first = report(&m, SampleSettings::default().seed);
-        for &seed in seeds {
-            assert_eq!(report(&m, seed), first, "{path}, seed {seed}");
-        }
-    }
+    use rayon::prelude::*;
+    descriptions().par_iter().for_each(|(path, m)| {
+        let first = report(m, SampleSettings::default().seed);
+        seeds.par_iter().for_each(|&seed| {
+            assert_eq!(report(m, seed), first, "{path}, seed {seed}");
+        });
+    });
 }
 
 #[test]

@@ -390,22 +390,33 @@ fn singular_gives_hilbert_dimension_six_for_each_component() {
     // x4..x7) and y (coupler → end-effector: y0..y3, dual part z0..z3, the paper's y4..y7).
     let polys = singular_ideal();
     assert_eq!(polys.len(), 16);
-    for (name, extra) in [
+    let cases = [
         ("K1", "x0,y0"),
         ("K2", "x3,y0"),
         ("K3", "x0,y3"),
         ("K4", "x3,y3"),
         ("x0 = x3 = 0", "x0,x3"),
-    ] {
-        let script = format!(
-            "ring R=(0,s),(x0,x1,x2,x3,y0,y1,y2,y3,u0,u1,u2,u3,z0,z1,z2,z3,r1,r2,r3,r4,r5,r6),dp;\nminpoly=s^2-3;\nideal I={};\nideal J=I+ideal({extra});\nprint(dim(std(J)));\nquit;\n",
-            polys.join(",\n")
-        );
-        let Some(text) = singular::run(&script, "the exact check of paper 002 eq. 11") else {
+    ];
+    // The five bases are independent: one Singular process each, run side by side.
+    let answers: Vec<Option<String>> = std::thread::scope(|scope| {
+        let runs: Vec<_> = cases
+            .iter()
+            .map(|(_, extra)| {
+                let script = format!(
+                    "ring R=(0,s),(x0,x1,x2,x3,y0,y1,y2,y3,u0,u1,u2,u3,z0,z1,z2,z3,r1,r2,r3,r4,r5,r6),dp;\nminpoly=s^2-3;\nideal I={};\nideal J=I+ideal({extra});\nprint(dim(std(J)));\nquit;\n",
+                    polys.join(",\n")
+                );
+                scope.spawn(move || singular::run(&script, "the exact check of paper 002 eq. 11"))
+            })
+            .collect();
+        runs.into_iter().map(|run| run.join().expect("a Singular run")).collect()
+    });
+    for ((name, _), text) in cases.iter().zip(answers) {
+        let Some(text) = text else {
             return;
         };
         let dim: usize = text.trim().parse().expect("a dimension");
-        if name == "x0 = x3 = 0" {
+        if *name == "x0 = x3 = 0" {
             // Both operation modes of the 3-RPS at once: their intersection, a proper subset of
             // two irreducible 6-dimensional sets, so of lower dimension — the control that
             // shows the computation can answer something else than 6.
