@@ -20,8 +20,10 @@
 //! - `--body`, `--relative-to`, `--legs`: [`manipulator::select_body`],
 //!   [`manipulator::parse_description_legs`];
 //! - `kinsyn solve`: [`solve::solve_system`] and [`solve::Solved::json`];
-//! - `kinsyn configurable inverse|forward|velocity`: [`configurable`];
-//! - `kinsyn components`: [`components::components`] with [`components::ComponentsOptions`];
+//! - `kinsyn configurable inverse|forward|velocity`: [`configurable::inverse_report`],
+//!   [`configurable::forward_report`], [`configurable::velocity_report`];
+//! - `kinsyn components`: [`components::components_of`] with [`components::ComponentsOptions`]
+//!   and [`components::Components::report`] (a [`components::ComponentsReport`]);
 //!
 //! The reports are typed values (`#[derive(Serialize)]` structs, each field documented with
 //! its meaning and unit): the front ends print them as JSON with [`sorted_json`] (the command)
