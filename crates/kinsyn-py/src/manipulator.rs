@@ -8,12 +8,14 @@ use kinsyn::manipulator::{self as m, file};
 use kinsyn::mechanism::SampleSettings;
 use kinsyn_report::files::read_text;
 use kinsyn_report::manipulator::{
-    DEFAULT_MAX_SUBSETS, MAX_SAMPLES, MAX_SUBSETS_CEILING, Placement, Selection, all_assemblies_of,
-    analyse_placed, build_checked, modes_json, parse_description, parse_description_legs,
-    sample_modes, select_body,
+    AnalyzeReport, DEFAULT_MAX_SUBSETS, MAX_SAMPLES, MAX_SUBSETS_CEILING, Placement, Selection,
+    all_assemblies_of, analyse_placed, build_checked, modes_report, parse_description,
+    parse_description_legs, sample_modes, select_body,
 };
+use kinsyn_report::sorted_value;
 use nalgebra::DMatrix;
 use pyo3::prelude::*;
+use serde::Serialize;
 use std::borrow::Cow;
 use std::path::PathBuf;
 
@@ -30,6 +32,20 @@ pub struct Manipulator {
 /// A matrix as a list of its rows.
 fn matrix_rows(m: &DMatrix<f64>) -> Vec<Vec<f64>> {
     m.row_iter().map(|r| r.iter().copied().collect()).collect()
+}
+
+/// `analyze --json`'s report with the matrices `J_D` and `J_I` themselves, row by row: what
+/// Python's `Manipulator.analyze` returns. Handed over as the text of
+/// [`kinsyn_report::sorted_value`], its keys in alphabetical order.
+#[derive(Serialize)]
+struct AnalysisWithMatrices {
+    /// The command's report, its fields at the top level.
+    #[serde(flatten)]
+    report: AnalyzeReport,
+    /// `J_D`, row by row (the rows' wrenches `(f; m_P)`).
+    jd_matrix: Vec<Vec<f64>>,
+    /// `J_I`, row by row (one column per free input).
+    ji_matrix: Vec<Vec<f64>>,
 }
 
 /// Which bodies and legs a computation takes: the command's `--body`, `--relative-to` and
@@ -90,11 +106,13 @@ impl Manipulator {
             ..SampleSettings::default()
         };
         let analyzed = analyse_placed(m, placement, lock, &settings)?;
-        let mut v = analyzed.json(m, &self.leg_warnings(m));
         let j = &analyzed.analysis.jacobians;
-        v["jd_matrix"] = serde_json::json!(matrix_rows(&j.jd));
-        v["ji_matrix"] = serde_json::json!(matrix_rows(&j.ji));
-        Ok(v.to_string())
+        let report = AnalysisWithMatrices {
+            report: analyzed.report(m, &self.leg_warnings(m)),
+            jd_matrix: matrix_rows(&j.jd),
+            ji_matrix: matrix_rows(&j.ji),
+        };
+        Ok(sorted_value(&report).to_string())
     }
 
     /// `modes --json` for the lock subsets asked for, of the bodies and legs of `bodies`.
@@ -127,16 +145,16 @@ impl Manipulator {
         let selected = self.selected(bodies)?;
         let m = selected.as_ref();
         let modes = sample_modes(m, &self.source, pose, &selection, max_subsets, settings)?;
-        Ok(modes_json(m, &modes, pose, &selection, &self.leg_warnings(m)).to_string())
+        let report = modes_report(m, &modes, pose, &selection, &self.leg_warnings(m));
+        Ok(sorted_value(&report).to_string())
     }
 
     /// `analyze --all-assemblies --json`: every assembly at the inputs, by homotopy
     /// continuation on the constraint polynomials in the Study parameters of the platform.
     fn assemblies_report(&self, inputs: Option<&str>, seed: u64) -> Result<String, Error> {
         let all = all_assemblies_of(&self.inner, inputs, seed)?;
-        Ok(all
-            .json(&self.inner, &self.leg_warnings(&self.inner))
-            .to_string())
+        let report = all.report(&self.inner, &self.leg_warnings(&self.inner));
+        Ok(sorted_value(&report).to_string())
     }
 }
 

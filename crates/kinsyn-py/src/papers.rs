@@ -5,11 +5,9 @@
 
 use crate::error::{Error, py_err};
 use kinsyn::manipulator::DecompositionMethod;
-use kinsyn_report::components::{ComponentsOptions, components};
-use kinsyn_report::configurable::{
-    forward as configurable_forward, inverse as configurable_inverse,
-    velocity as configurable_velocity,
-};
+use kinsyn_report::components::{ComponentsOptions, components_of};
+use kinsyn_report::configurable::{forward_report, inverse_report, velocity_report};
+use kinsyn_report::sorted_json;
 use pyo3::prelude::*;
 use std::path::PathBuf;
 
@@ -25,7 +23,8 @@ pub fn configurable_inverse_json(
     centre: Option<&str>,
     c4: Option<&str>,
 ) -> PyResult<String> {
-    py.detach(|| configurable_inverse(centre, c4, theta, phi, true))
+    py.detach(|| inverse_report(centre, c4, theta, phi))
+        .map(|r| sorted_json(&r))
         .map_err(py_err)
 }
 
@@ -34,7 +33,8 @@ pub fn configurable_inverse_json(
 #[pyfunction]
 #[pyo3(signature = (q, method = 2))]
 pub fn configurable_forward_json(py: Python<'_>, q: &str, method: u8) -> PyResult<String> {
-    py.detach(|| configurable_forward(q, method, true))
+    py.detach(|| forward_report(q, method))
+        .map(|r| sorted_json(&r))
         .map_err(py_err)
 }
 
@@ -49,7 +49,8 @@ pub fn configurable_velocity_json(
     qdot: &str,
     near: Option<&str>,
 ) -> PyResult<String> {
-    py.detach(|| configurable_velocity(q, qdot, near, true))
+    py.detach(|| velocity_report(q, qdot, near))
+        .map(|r| sorted_json(&r))
         .map_err(py_err)
 }
 
@@ -91,6 +92,7 @@ pub fn components_json(
         free_inputs,
         max_paths: max_paths.unwrap_or(kinsyn::homotopy::DEFAULT_DECOMPOSE_PATHS),
     };
-    py.detach(|| components(&path, &options, true))
+    py.detach(|| components_of(&path, &options))
+        .map(|c| sorted_json(&c.report()))
         .map_err(py_err)
 }

@@ -4,16 +4,17 @@
 
 use crate::manipulator::{input_texts, inputs_or_reference, load, pose_text};
 use crate::solve::{paths_text, read_input, weighted_paths};
-use crate::{Error, json, terminal};
+use crate::{Error, sorted_json, terminal};
 use kinsyn::homotopy::{
-    Component, DecomposeError, DecomposeSettings, Decomposition, MAX_DECOMPOSE_PATHS,
-    RegenerationProgress, decompose, decompose_paths, regenerate_with_progress, regeneration_paths,
+    DecomposeError, DecomposeSettings, Decomposition, MAX_DECOMPOSE_PATHS, RegenerationProgress,
+    decompose, decompose_paths, regenerate_with_progress, regeneration_paths,
 };
 use kinsyn::manipulator::{
     DecompositionMethod, InputValues, LocalMotion, Manipulator, ModeComponent, OperationModeError,
     OperationModeSettings, OperationModes,
 };
 use kinsyn::poly::{C64, System};
+use serde::Serialize;
 use std::fmt::Write as _;
 use std::path::Path;
 
@@ -112,15 +113,61 @@ fn refusal(
 /// `--json` report.
 ///
 /// # Errors
-///
-/// [`Error::Input`]: a file that cannot be read or is neither kind, `--inputs` or
-/// `--free-inputs` for a polynomial system, malformed input values, a manipulator whose legs
-/// have no polynomial form, or a decomposition that fails.
+/// As [`components_of`].
 pub fn components(
     path: &Path,
     options: &ComponentsOptions,
     as_json: bool,
 ) -> Result<String, Error> {
+    let c = components_of(path, options)?;
+    Ok(if as_json {
+        sorted_json(&c.report())
+    } else {
+        c.text()
+    })
+}
+
+/// A decomposition as `kinsyn components` runs it: of a polynomial system, or of a
+/// manipulator's constraint variety.
+pub struct Components {
+    /// The options it ran with.
+    options: ComponentsOptions,
+    /// What was decomposed, and the result.
+    decomposed: Decomposed,
+}
+
+/// What `kinsyn components` decomposed, and the result.
+enum Decomposed {
+    /// A Bertini input file's system.
+    System {
+        /// The file, as messages name it.
+        source: String,
+        /// The system.
+        system: System,
+        /// Its components.
+        decomposition: Decomposition,
+    },
+    /// A manipulator's constraint variety.
+    Manipulator {
+        /// The manipulator.
+        m: Box<Manipulator>,
+        /// Its operation modes (or assemblies and self-motions at given inputs).
+        modes: Box<OperationModes>,
+        /// Its inputs as `LABEL = value` ([`input_texts`]).
+        inputs: Vec<String>,
+    },
+}
+
+/// The irreducible components of the file at `path`: of its system (a Bertini input file) or
+/// of its manipulator's constraint variety (a description), decomposed as `options` say, with
+/// feedback on stderr when it is a terminal.
+///
+/// # Errors
+///
+/// [`Error::Input`]: a file that cannot be read or is neither kind, `--inputs` or
+/// `--free-inputs` for a polynomial system, malformed input values, a manipulator whose legs
+/// have no polynomial form, or a decomposition that fails.
+pub fn components_of(path: &Path, options: &ComponentsOptions) -> Result<Components, Error> {
     let text = crate::files::read_text(
         path,
         "not a Bertini input file or a kinsyn manipulator file",
@@ -131,7 +178,7 @@ pub fn components(
         ..DecomposeSettings::default()
     };
     if text.trim_start().starts_with('{') {
-        return manipulator_components(path, options, settings, as_json);
+        return manipulator_components(path, options, settings);
     }
     if options.inputs.is_some() || options.free_inputs {
         return Err(Error::Input(format!(
@@ -140,53 +187,129 @@ pub fn components(
         )));
     }
     let input = read_input(path)?;
-    let system = &input.system;
+    let system = input.system;
     let estimate = match options.method {
-        DecompositionMethod::Regeneration => regeneration_paths(system),
-        DecompositionMethod::ByDimension => decompose_paths(system),
+        DecompositionMethod::Regeneration => regeneration_paths(&system),
+        DecompositionMethod::ByDimension => decompose_paths(&system),
     };
-    let d = with_feedback(options.method, Some(estimate), |progress| {
+    let decomposition = with_feedback(options.method, Some(estimate), |progress| {
         match options.method {
             DecompositionMethod::Regeneration => {
-                regenerate_with_progress(system, &settings, progress)
+                regenerate_with_progress(&system, &settings, progress)
             }
-            DecompositionMethod::ByDimension => decompose(system, &settings),
+            DecompositionMethod::ByDimension => decompose(&system, &settings),
         }
     })
     .map_err(|e| {
         refusal(
             &path.display().to_string(),
             options.method,
-            Some(system),
+            Some(&system),
             &e,
         )
     })?;
-    if as_json {
-        return Ok(json(&serde_json::json!({
-            "file": path.display().to_string(),
-            "variables": system.variables(),
-            "equations": system.len(),
-            "method": method_name(options.method),
-            "seed": options.seed,
-            "components": d.components.iter().map(component_json).collect::<Vec<_>>(),
-            "unresolved": d.unresolved.iter().map(|(dim, x)| serde_json::json!({
-                "dimension": dim, "point": complex(x)})).collect::<Vec<_>>(),
-            "junk": d.junk,
-            "paths": d.paths,
-            "estimated_paths": d.estimated_paths.to_string(),
-            "seconds": d.seconds,
-        })));
+    Ok(Components {
+        options: options.clone(),
+        decomposed: Decomposed::System {
+            source: path.display().to_string(),
+            system,
+            decomposition,
+        },
+    })
+}
+
+impl Components {
+    /// The report of `kinsyn components --json`.
+    #[must_use]
+    pub fn report(&self) -> ComponentsReport {
+        let options = &self.options;
+        match &self.decomposed {
+            Decomposed::System {
+                source,
+                system,
+                decomposition,
+            } => ComponentsReport::System(SystemComponentsReport {
+                file: source.clone(),
+                decomposition: DecompositionReport::new(system, decomposition, options),
+                components: decomposition
+                    .components
+                    .iter()
+                    .map(|c| SystemComponent {
+                        component: ComponentSummary {
+                            dimension: c.dimension,
+                            degree: c.degree,
+                            trace_test_passed: c.trace_test_passed,
+                            sample_point: complex(&c.sample_point),
+                        },
+                        witness_points: c.witness_points.iter().map(|x| complex(x)).collect(),
+                    })
+                    .collect(),
+            }),
+            Decomposed::Manipulator { m, modes, inputs } => {
+                ComponentsReport::Manipulator(ManipulatorComponentsReport {
+                    manipulator: m.name().to_string(),
+                    inputs: if modes.free_inputs {
+                        ComponentInputs::Free
+                    } else {
+                        ComponentInputs::Given(inputs.clone())
+                    },
+                    decomposition: DecompositionReport::new(
+                        modes.system.system(),
+                        &modes.decomposition,
+                        options,
+                    ),
+                    components: modes
+                        .components
+                        .iter()
+                        .map(|c| ModeComponentReport {
+                            component: ComponentSummary {
+                                dimension: c.dimension,
+                                degree: c.degree,
+                                trace_test_passed: c.trace_test_passed,
+                                sample_point: complex(&c.sample),
+                            },
+                            real_points: c.real_points.len(),
+                            motion: c.real.as_ref().map(|l| LocalMotionReport::new(m, l)),
+                            released: c.released.as_ref().map(|l| LocalMotionReport::new(m, l)),
+                        })
+                        .collect(),
+                })
+            }
+        }
     }
+
+    /// The text report of `kinsyn components`.
+    #[must_use]
+    pub fn text(&self) -> String {
+        match &self.decomposed {
+            Decomposed::System {
+                source,
+                system,
+                decomposition,
+            } => system_text(source, system, decomposition, self.options.method),
+            Decomposed::Manipulator { m, modes, inputs } => {
+                manipulator_text(m, modes, inputs, &self.options)
+            }
+        }
+    }
+}
+
+/// The text report of the components `d` of the Bertini file `source`'s `system`.
+fn system_text(
+    source: &str,
+    system: &System,
+    d: &Decomposition,
+    method: DecompositionMethod,
+) -> String {
     let mut out = String::new();
     let _ = writeln!(
         out,
-        "{}: {} equations in {} unknowns ({})",
-        path.display(),
+        "{source}: {} equations in {} unknowns ({})",
         system.len(),
         system.nvars(),
         system.variables().join(", ")
     );
-    let _ = writeln!(out, "{}", summary(&d, options.method));
+    let _ = writeln!(out, "{}", summary(d, method));
     for (k, c) in d.components.iter().enumerate() {
         let _ = writeln!(
             out,
@@ -202,8 +325,8 @@ pub fn components(
             point_text(system.variables(), &c.sample_point)
         );
     }
-    unresolved_text(&mut out, &d);
-    Ok(out)
+    unresolved_text(&mut out, d);
+    out
 }
 
 /// Runs a decomposition with feedback on a terminal: a bar over the equations for
@@ -276,16 +399,6 @@ fn complex(x: &[C64]) -> Vec<[f64; 2]> {
     x.iter().map(|c| [c.re, c.im]).collect()
 }
 
-fn component_json(c: &Component) -> serde_json::Value {
-    serde_json::json!({
-        "dimension": c.dimension,
-        "degree": c.degree,
-        "trace_test_passed": c.trace_test_passed,
-        "sample_point": complex(&c.sample_point),
-        "witness_points": c.witness_points.iter().map(|x| complex(x)).collect::<Vec<_>>(),
-    })
-}
-
 /// `name = value` for each variable, complex values as `a+bi`, six significant digits.
 fn point_text(names: &[String], x: &[C64]) -> String {
     names
@@ -326,12 +439,12 @@ fn study_label(x: &[C64]) -> &'static str {
     }
 }
 
+/// [`components_of`] for the description at `path`.
 fn manipulator_components(
     path: &Path,
     options: &ComponentsOptions,
     decompose: DecomposeSettings,
-    as_json: bool,
-) -> Result<String, Error> {
+) -> Result<Components, Error> {
     let m: Manipulator = load(path)?;
     if options.free_inputs && options.inputs.is_some() {
         return Err(Error::Input(
@@ -360,57 +473,18 @@ fn manipulator_components(
             Error::Input(format!("{}: {other}", path.display()))
         }
     })?;
-    let input_text = input_texts(&m, &all);
-    if as_json {
-        return Ok(json(&manipulator_json(&m, &modes, &input_text, options)));
-    }
-    Ok(manipulator_text(&m, &modes, &input_text, options))
-}
-
-fn local_json(m: &Manipulator, l: &LocalMotion) -> serde_json::Value {
-    serde_json::json!({
-        "pose": pose_text(m, &l.pose),
-        "dof": l.dof,
-        "pattern": l.motion.pattern.name().to_string(),
-        "group": l.motion.pattern.is_group(),
-        "same_span": l.motion.same_span,
-        "min_separation": l.motion.min_separation,
-        "point": l.point,
+    let inputs = input_texts(&m, &all);
+    Ok(Components {
+        options: options.clone(),
+        decomposed: Decomposed::Manipulator {
+            m: Box::new(m),
+            modes: Box::new(modes),
+            inputs,
+        },
     })
 }
 
-fn manipulator_json(
-    m: &Manipulator,
-    modes: &OperationModes,
-    inputs: &[String],
-    options: &ComponentsOptions,
-) -> serde_json::Value {
-    let d = &modes.decomposition;
-    serde_json::json!({
-        "manipulator": m.name(),
-        "inputs": if modes.free_inputs { serde_json::Value::String("free".into()) } else { serde_json::json!(inputs) },
-        "variables": modes.system.system().variables(),
-        "equations": modes.system.system().len(),
-        "method": method_name(options.method),
-        "seed": options.seed,
-        "components": modes.components.iter().map(|c: &ModeComponent| serde_json::json!({
-            "dimension": c.dimension,
-            "degree": c.degree,
-            "trace_test_passed": c.trace_test_passed,
-            "sample_point": complex(&c.sample),
-            "real_points": c.real_points.len(),
-            "motion": c.real.as_ref().map(|l| local_json(m, l)),
-            "released": c.released.as_ref().map(|l| local_json(m, l)),
-        })).collect::<Vec<_>>(),
-        "unresolved": d.unresolved.iter().map(|(dim, x)| serde_json::json!({
-            "dimension": dim, "point": complex(x)})).collect::<Vec<_>>(),
-        "junk": d.junk,
-        "paths": d.paths,
-        "estimated_paths": d.estimated_paths.to_string(),
-        "seconds": d.seconds,
-    })
-}
-
+/// The text report of the operation modes (or assemblies and self-motions) of `m`.
 fn manipulator_text(
     m: &Manipulator,
     modes: &OperationModes,
@@ -511,4 +585,191 @@ fn manipulator_text(
     }
     unresolved_text(&mut out, d);
     out
+}
+
+/// The report of `kinsyn components --json` (and of Python's `components`): a polynomial
+/// system's irreducible components, or a manipulator's.
+///
+/// Printed through [`crate::sorted_value`]: its keys come in alphabetical order, as they did
+/// when the report was built with `serde_json::json!`, not in the order of the fields.
+#[derive(Debug, Clone, Serialize)]
+#[serde(untagged)]
+pub enum ComponentsReport {
+    /// The components of a Bertini input file's system.
+    System(SystemComponentsReport),
+    /// The components of a manipulator's constraint variety.
+    Manipulator(ManipulatorComponentsReport),
+}
+
+/// The irreducible components of a Bertini input file's system.
+#[derive(Debug, Clone, Serialize)]
+pub struct SystemComponentsReport {
+    /// The file, as given.
+    pub file: String,
+    /// The system and the decomposition's counts, at the top level of the report.
+    #[serde(flatten)]
+    pub decomposition: DecompositionReport,
+    /// The components found, each with its witness set.
+    pub components: Vec<SystemComponent>,
+}
+
+/// The irreducible components of a manipulator's constraint variety (paper 004): in the Study
+/// parameters of the platform (`x0² + x1² + x2² + x3² = 1`, so each pose is two points
+/// `±(x, y)`) and, with free inputs, the tangents of the inputs' half angles.
+#[derive(Debug, Clone, Serialize)]
+pub struct ManipulatorComponentsReport {
+    /// The manipulator's name (the description's `name`).
+    pub manipulator: String,
+    /// The inputs: given, or free (unknowns).
+    pub inputs: ComponentInputs,
+    /// The constraint system and the decomposition's counts, at the top level of the report.
+    #[serde(flatten)]
+    pub decomposition: DecompositionReport,
+    /// The components found: assemblies (dimension 0) and self-motions, or operation modes
+    /// with free inputs.
+    pub components: Vec<ModeComponentReport>,
+}
+
+/// The inputs of a manipulator's decomposition.
+#[derive(Debug, Clone, Serialize)]
+pub enum ComponentInputs {
+    /// `--free-inputs`: every input an unknown; `"free"` in JSON.
+    #[serde(rename = "free")]
+    Free,
+    /// Every input's value, `LABEL = value` (angles in the description's angle unit); a list
+    /// in JSON.
+    #[serde(untagged)]
+    Given(Vec<String>),
+}
+
+/// The system decomposed and the decomposition's counts, the same for a Bertini file and for
+/// a manipulator.
+#[derive(Debug, Clone, Serialize)]
+pub struct DecompositionReport {
+    /// The unknowns' names.
+    pub variables: Vec<String>,
+    /// How many equations.
+    pub equations: usize,
+    /// The algorithm: `by-dimension` or `regeneration`.
+    pub method: &'static str,
+    /// The seed of every random choice.
+    pub seed: u64,
+    /// Singular witness points on no component found, by dimension: points of non-reduced
+    /// components (multiplicity > 1), not decomposed.
+    pub unresolved: Vec<UnresolvedPoint>,
+    /// The junk points removed (witness points of higher-dimensional components).
+    pub junk: usize,
+    /// The paths tracked in all.
+    pub paths: usize,
+    /// The paths the start systems were estimated at before any was tracked, as decimal text.
+    pub estimated_paths: String,
+    /// The decomposition's wall-clock time (seconds).
+    pub seconds: f64,
+}
+
+/// A singular witness point on no component found.
+#[derive(Debug, Clone, Serialize)]
+pub struct UnresolvedPoint {
+    /// The dimension it was found at.
+    pub dimension: usize,
+    /// The point: each variable as `[re, im]`.
+    pub point: Vec<[f64; 2]>,
+}
+
+/// What every irreducible component reports.
+#[derive(Debug, Clone, Serialize)]
+pub struct ComponentSummary {
+    /// Its dimension (for a manipulator: its dof).
+    pub dimension: usize,
+    /// Its degree: the points it meets a generic linear space of complementary dimension in.
+    pub degree: usize,
+    /// Whether the trace test confirmed its witness set is one irreducible component (false:
+    /// perhaps a union of components).
+    pub trace_test_passed: bool,
+    /// A point on it: each variable as `[re, im]`.
+    pub sample_point: Vec<[f64; 2]>,
+}
+
+/// An irreducible component of a polynomial system.
+#[derive(Debug, Clone, Serialize)]
+pub struct SystemComponent {
+    /// Its dimension, degree, trace test and a point, at the top level of the entry.
+    #[serde(flatten)]
+    pub component: ComponentSummary,
+    /// Its witness points (as many as its degree): each variable as `[re, im]`.
+    pub witness_points: Vec<Vec<[f64; 2]>>,
+}
+
+/// An irreducible component of a manipulator's constraint variety.
+#[derive(Debug, Clone, Serialize)]
+pub struct ModeComponentReport {
+    /// Its dimension, degree, trace test and a point, at the top level of the entry.
+    #[serde(flatten)]
+    pub component: ComponentSummary,
+    /// How many real points were found on it (on 8 real slices for a positive dimension).
+    pub real_points: usize,
+    /// The platform's motion at its first real point; `null` for a complex component.
+    pub motion: Option<LocalMotionReport>,
+    /// At an assembly (dimension 0, given inputs): the platform's motion on the operation mode
+    /// with the inputs released; `null` otherwise, or where it was not found.
+    pub released: Option<LocalMotionReport>,
+}
+
+/// The platform's motion at a real point of a component.
+#[derive(Debug, Clone, Serialize)]
+pub struct LocalMotionReport {
+    /// The platform's pose there as `--pose` takes it: `x,y,z,rx,ry,rz` (length unit, the
+    /// rotation vector in the description's angle unit).
+    pub pose: String,
+    /// The component's dimension at the point: the platform's dof there.
+    pub dof: usize,
+    /// The pattern of the motion (`3T`, `X(z)`, `1T2R`, …).
+    pub pattern: String,
+    /// Whether the pattern is one of the 12 displacement groups.
+    pub group: bool,
+    /// Whether the twist spaces agreed at every sample of the motion.
+    pub same_span: bool,
+    /// The smallest distance between two samples (dimensionless), `null` with fewer than two.
+    pub min_separation: Option<f64>,
+    /// The real point: the system's variables.
+    pub point: Vec<f64>,
+}
+
+impl DecompositionReport {
+    /// The report of the decomposition `d` of `system`, run with `options`.
+    fn new(system: &System, d: &Decomposition, options: &ComponentsOptions) -> Self {
+        Self {
+            variables: system.variables().to_vec(),
+            equations: system.len(),
+            method: method_name(options.method),
+            seed: options.seed,
+            unresolved: d
+                .unresolved
+                .iter()
+                .map(|(dimension, x)| UnresolvedPoint {
+                    dimension: *dimension,
+                    point: complex(x),
+                })
+                .collect(),
+            junk: d.junk,
+            paths: d.paths,
+            estimated_paths: d.estimated_paths.to_string(),
+            seconds: d.seconds,
+        }
+    }
+}
+
+impl LocalMotionReport {
+    /// The report of the motion `l` of `m`'s platform.
+    fn new(m: &Manipulator, l: &LocalMotion) -> Self {
+        Self {
+            pose: pose_text(m, &l.pose),
+            dof: l.dof,
+            pattern: l.motion.pattern.name().to_string(),
+            group: l.motion.pattern.is_group(),
+            same_span: l.motion.same_span,
+            min_separation: l.motion.min_separation,
+            point: l.point.clone(),
+        }
+    }
 }

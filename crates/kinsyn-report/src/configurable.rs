@@ -2,13 +2,14 @@
 //! paper's own formulas (`kinsyn_papers::configurable`), with the geometry of §5 (a = 80, b = 120,
 //! c = 120 mm, `A_i` at (±200, 0), (0, ±200) mm). Angles are in degrees at this interface.
 
-use crate::{Error, json};
+use crate::{Error, sorted_json};
 use kinsyn_papers::configurable::trajectory::assemble;
 use kinsyn_papers::configurable::velocity::{Configuration, velocities};
 use kinsyn_papers::configurable::{
     CentrePose, Configurable, CornerPose, ForwardMethod, forward_position,
 };
 use nalgebra::{Vector2, Vector4};
+use serde::Serialize;
 use std::fmt::Write as _;
 
 /// Reads `n` comma-separated finite numbers for `option`.
@@ -46,17 +47,21 @@ fn inputs(text: &str) -> Result<[f64; 4], Error> {
     Ok(std::array::from_fn(|i| v[i].to_radians()))
 }
 
-fn point(v: Vector2<f64>) -> String {
-    format!("({:.3}, {:.3})", v.x, v.y)
+/// A point `[x, y]` as text: `(x, y)`, three decimals.
+fn point([x, y]: [f64; 2]) -> String {
+    format!("({x:.3}, {y:.3})")
+}
+
+/// A point of the plane as `[x, y]`.
+fn xy(v: Vector2<f64>) -> [f64; 2] {
+    [v.x, v.y]
 }
 
 /// `kinsyn configurable inverse`: the up to 16 input sets of a platform pose (§3.2), as text
 /// or as the `--json` report.
 ///
 /// # Errors
-///
-/// [`Error::Input`], naming the option: malformed numbers, neither or both of `--centre`
-/// and `--c4`, or a pose the legs cannot reach.
+/// As [`inverse_report`].
 pub fn inverse(
     centre: Option<&str>,
     corner: Option<&str>,
@@ -64,6 +69,45 @@ pub fn inverse(
     phi: f64,
     as_json: bool,
 ) -> Result<String, Error> {
+    let report = inverse_report(centre, corner, theta, phi)?;
+    Ok(if as_json {
+        sorted_json(&report)
+    } else {
+        report.text()
+    })
+}
+
+/// The report of `kinsyn configurable inverse (--centre X,Y | --c4 X,Y) --theta T --phi P`
+/// (and of Python's `configurable.inverse`): the platform pose's corners and its up to 16 input
+/// sets (§3.2). Lengths are in mm, angles in degrees.
+///
+/// Printed through [`crate::sorted_value`]: its keys come in alphabetical order, as they did
+/// when the report was built with `serde_json::json!`.
+#[derive(Debug, Clone, Serialize)]
+pub struct InverseReport {
+    /// The platform's corners `C1…C4` at the pose, each `[x, y]` (mm).
+    pub corners: Vec<[f64; 2]>,
+    /// The input sets that reach the pose (two elbows per leg), each `[q1, q2, q3, q4]`
+    /// (degrees).
+    pub q_deg: Vec<[f64; 4]>,
+    /// The text report's first line: the pose asked for.
+    #[serde(skip)]
+    heading: String,
+}
+
+/// The input sets of a platform pose given by its centre (`centre`, `--centre X,Y`) or its
+/// corner C4 (`corner`, `--c4 X,Y`), with the angles `theta` and `phi` (degrees).
+///
+/// # Errors
+///
+/// [`Error::Input`], naming the option: malformed numbers, neither or both of `--centre`
+/// and `--c4`, or a pose the legs cannot reach.
+pub fn inverse_report(
+    centre: Option<&str>,
+    corner: Option<&str>,
+    theta: f64,
+    phi: f64,
+) -> Result<InverseReport, Error> {
     let m = Configurable::paper003();
     let (theta, phi) = (theta.to_radians(), phi.to_radians());
     let (inverse, described) = match (centre, corner) {
@@ -101,54 +145,125 @@ pub fn inverse(
         }
     };
     let inverse = inverse.map_err(|e| Error::Input(e.to_string()))?;
-    let sets = inverse.sets();
-    if as_json {
-        return Ok(json(&serde_json::json!({
-            "corners": inverse.corners.iter().map(|c| [c.x, c.y]).collect::<Vec<_>>(),
-            "q_deg": sets.iter().map(|q| q.map(f64::to_degrees)).collect::<Vec<_>>(),
-        })));
-    }
-    let mut out = String::new();
-    let _ = writeln!(
-        out,
-        "paper 003 inverse position (§3.2): {described}, θ = {:.3}°, φ = {:.3}°",
-        theta.to_degrees(),
-        phi.to_degrees()
-    );
-    let corners: Vec<String> = inverse
-        .corners
-        .iter()
-        .enumerate()
-        .map(|(i, c)| format!("C{} = {}", i + 1, point(*c)))
-        .collect();
-    let _ = writeln!(out, "corners: {}", corners.join(", "));
-    let _ = writeln!(
-        out,
-        "{} input sets (two elbows per leg), q1, q2, q3, q4 in degrees:",
-        sets.len()
-    );
-    for (k, q) in sets.iter().enumerate() {
+    Ok(InverseReport {
+        corners: inverse.corners.iter().copied().map(xy).collect(),
+        q_deg: inverse
+            .sets()
+            .iter()
+            .map(|q| q.map(f64::to_degrees))
+            .collect(),
+        heading: format!(
+            "paper 003 inverse position (§3.2): {described}, θ = {:.3}°, φ = {:.3}°",
+            theta.to_degrees(),
+            phi.to_degrees()
+        ),
+    })
+}
+
+impl InverseReport {
+    /// The text report of `kinsyn configurable inverse`.
+    #[must_use]
+    pub fn text(&self) -> String {
+        let mut out = String::new();
+        let _ = writeln!(out, "{}", self.heading);
+        let corners: Vec<String> = self
+            .corners
+            .iter()
+            .enumerate()
+            .map(|(i, c)| format!("C{} = {}", i + 1, point(*c)))
+            .collect();
+        let _ = writeln!(out, "corners: {}", corners.join(", "));
         let _ = writeln!(
             out,
-            "  {:>2}  {:.3}, {:.3}, {:.3}, {:.3}",
-            k + 1,
-            q[0].to_degrees(),
-            q[1].to_degrees(),
-            q[2].to_degrees(),
-            q[3].to_degrees()
+            "{} input sets (two elbows per leg), q1, q2, q3, q4 in degrees:",
+            self.q_deg.len()
         );
+        for (k, q) in self.q_deg.iter().enumerate() {
+            let _ = writeln!(
+                out,
+                "  {:>2}  {:.3}, {:.3}, {:.3}, {:.3}",
+                k + 1,
+                q[0],
+                q[1],
+                q[2],
+                q[3]
+            );
+        }
+        out
     }
-    Ok(out)
 }
 
 /// `kinsyn configurable forward`: every assembly at the inputs `q_text` (degrees) by §3.2's
 /// method 1 or 2, as text or as the `--json` report.
 ///
 /// # Errors
+/// As [`forward_report`].
+pub fn forward(q_text: &str, method: u8, as_json: bool) -> Result<String, Error> {
+    let report = forward_report(q_text, method)?;
+    Ok(if as_json {
+        sorted_json(&report)
+    } else {
+        report.text()
+    })
+}
+
+/// The report of `kinsyn configurable forward --q Q --method M` (and of Python's
+/// `configurable.forward`): every assembly of paper 003's 4-RRR at given inputs, by homotopy
+/// continuation on §3.2's equations. Lengths are in mm, angles in degrees.
+///
+/// Printed through [`crate::sorted_value`]: its keys come in alphabetical order, as they did
+/// when the report was built with `serde_json::json!`.
+#[derive(Debug, Clone, Serialize)]
+pub struct ForwardReport {
+    /// §3.2's method: 1 (the formulation in the centre's pose) or 2 (in the corner C4's).
+    pub method: u8,
+    /// The distinct non-singular complex solutions of the method's system found by all runs.
+    pub complex_solutions: usize,
+    /// Of those, the real ones.
+    pub real_solutions: usize,
+    /// The distinct complex corner sets among the non-singular solutions.
+    pub complex_assemblies: usize,
+    /// Whether the last run had no failed path and (method 1) every solution's mirror was
+    /// found too (false: the counts may be short).
+    pub complete: bool,
+    /// The runs of the homotopy (seeds one apart).
+    pub runs: usize,
+    /// The real assemblies: distinct corner sets, sorted by θ then φ.
+    pub assemblies: Vec<ForwardAssembly>,
+    /// The text report's first line: the method and the inputs.
+    #[serde(skip)]
+    heading: String,
+    /// The paths tracked over every run.
+    #[serde(skip)]
+    paths: usize,
+}
+
+/// A real assembly of paper 003's 4-RRR.
+#[derive(Debug, Clone, Serialize)]
+pub struct ForwardAssembly {
+    /// The platform's corners `C1…C4`, each `[x, y]` (mm).
+    pub corners: Vec<[f64; 2]>,
+    /// The corner C4 `[x, y]` (mm).
+    pub c4: [f64; 2],
+    /// θ in eq. 13's sense: the direction of `C4 → C1`, in `[0, 360)` degrees.
+    pub theta_deg: f64,
+    /// φ in eq. 13's sense: the direction of `C4 → C3`, in `[0, 360)` degrees.
+    pub phi_deg: f64,
+    /// Whether every solution of the method's system giving these corners is a
+    /// Krawczyk-certified, distinct, real root.
+    pub certified: bool,
+    /// The largest loop-closure error `| |C_i − B_i| − b |` (mm).
+    pub closure_error: f64,
+}
+
+/// Every assembly of paper 003's 4-RRR at the inputs `q_text` (`--q`, degrees) by §3.2's
+/// method `method` (1 or 2), with a spinner on stderr when it is a terminal.
+///
+/// # Errors
 ///
 /// [`Error::Input`], naming the option: malformed numbers, a method other than 1 and 2,
 /// or a homotopy that fails.
-pub fn forward(q_text: &str, method: u8, as_json: bool) -> Result<String, Error> {
+pub fn forward_report(q_text: &str, method: u8) -> Result<ForwardReport, Error> {
     let m = Configurable::paper003();
     let q = inputs(q_text)?;
     let method = match method {
@@ -162,79 +277,135 @@ pub fn forward(q_text: &str, method: u8, as_json: bool) -> Result<String, Error>
     };
     let f = crate::terminal::working("forward position", || forward_position(&m, q, method))
         .map_err(|e| Error::Input(e.to_string()))?;
-    if as_json {
-        return Ok(json(&serde_json::json!({
-            "method": method.number(),
-            "complex_solutions": f.complex,
-            "real_solutions": f.real,
-            "complex_assemblies": f.complex_assemblies,
-            "complete": f.complete,
-            "runs": f.reports.len(),
-            "assemblies": f.assemblies.iter().map(|a| serde_json::json!({
-                "corners": a.corners.iter().map(|c| [c.x, c.y]).collect::<Vec<_>>(),
-                "c4": [a.pose.c4.x, a.pose.c4.y],
-                "theta_deg": a.pose.theta.to_degrees(),
-                "phi_deg": a.pose.phi.to_degrees(),
-                "certified": a.certified,
-                "closure_error": a.closure_error,
-            })).collect::<Vec<_>>(),
-        })));
-    }
-    let mut out = String::new();
-    let _ = writeln!(
-        out,
-        "paper 003 forward position (§3.2, method {}) at q = {q_text} deg",
-        method.number()
-    );
-    let paths: usize = f
-        .reports
-        .iter()
-        .map(kinsyn::homotopy::SolveReport::paths)
-        .sum();
-    let _ = writeln!(
-        out,
-        "{} complex solutions ({} real), {} distinct assemblies; {} run{} of the homotopy, {paths} paths{}",
-        f.complex,
-        f.real,
-        f.complex_assemblies,
-        f.reports.len(),
-        if f.reports.len() == 1 { "" } else { "s" },
-        if f.complete {
-            ""
-        } else {
-            " (some paths lost: the count may be short)"
-        }
-    );
-    let _ = writeln!(out, "real assemblies ({}):", f.assemblies.len());
-    for (k, a) in f.assemblies.iter().enumerate() {
-        let corners: Vec<String> = a.corners.iter().map(|c| point(*c)).collect();
+    Ok(ForwardReport {
+        method: method.number(),
+        complex_solutions: f.complex,
+        real_solutions: f.real,
+        complex_assemblies: f.complex_assemblies,
+        complete: f.complete,
+        runs: f.reports.len(),
+        assemblies: f
+            .assemblies
+            .iter()
+            .map(|a| ForwardAssembly {
+                corners: a.corners.iter().copied().map(xy).collect(),
+                c4: xy(a.pose.c4),
+                theta_deg: a.pose.theta.to_degrees(),
+                phi_deg: a.pose.phi.to_degrees(),
+                certified: a.certified,
+                closure_error: a.closure_error,
+            })
+            .collect(),
+        heading: format!(
+            "paper 003 forward position (§3.2, method {}) at q = {q_text} deg",
+            method.number()
+        ),
+        paths: f
+            .reports
+            .iter()
+            .map(kinsyn::homotopy::SolveReport::paths)
+            .sum(),
+    })
+}
+
+impl ForwardReport {
+    /// The text report of `kinsyn configurable forward`.
+    #[must_use]
+    pub fn text(&self) -> String {
+        let mut out = String::new();
+        let _ = writeln!(out, "{}", self.heading);
         let _ = writeln!(
             out,
-            "  {}  C4 = {}, θ = {:.3}°, φ = {:.3}°; corners {}{}",
-            k + 1,
-            point(a.pose.c4),
-            a.pose.theta.to_degrees(),
-            a.pose.phi.to_degrees(),
-            corners.join(" "),
-            if a.certified { " [certified]" } else { "" }
+            "{} complex solutions ({} real), {} distinct assemblies; {} run{} of the homotopy, {} paths{}",
+            self.complex_solutions,
+            self.real_solutions,
+            self.complex_assemblies,
+            self.runs,
+            if self.runs == 1 { "" } else { "s" },
+            self.paths,
+            if self.complete {
+                ""
+            } else {
+                " (some paths lost: the count may be short)"
+            }
         );
+        let _ = writeln!(out, "real assemblies ({}):", self.assemblies.len());
+        for (k, a) in self.assemblies.iter().enumerate() {
+            let corners: Vec<String> = a.corners.iter().map(|c| point(*c)).collect();
+            let _ = writeln!(
+                out,
+                "  {}  C4 = {}, θ = {:.3}°, φ = {:.3}°; corners {}{}",
+                k + 1,
+                point(a.c4),
+                a.theta_deg,
+                a.phi_deg,
+                corners.join(" "),
+                if a.certified { " [certified]" } else { "" }
+            );
+        }
+        out
     }
-    Ok(out)
 }
 
 /// `kinsyn configurable velocity`: the corner velocities by screw theory (§4) at the assembly
 /// nearest a given pose (default Table 1's), as text or as the `--json` report.
 ///
 /// # Errors
-///
-/// [`Error::Input`], naming the option: malformed numbers, no assembly near the pose, or
-/// a singular configuration.
+/// As [`velocity_report`].
 pub fn velocity(
     q_text: &str,
     qdot_text: &str,
     near: Option<&str>,
     as_json: bool,
 ) -> Result<String, Error> {
+    let report = velocity_report(q_text, qdot_text, near)?;
+    Ok(if as_json {
+        sorted_json(&report)
+    } else {
+        report.text()
+    })
+}
+
+/// The report of `kinsyn configurable velocity --q Q --qdot QDOT [--near N]` (and of Python's
+/// `configurable.velocity`): the assembly near a pose and its velocities by screw theory (§4,
+/// eqs. 16–29). Lengths are in mm, angles in degrees, rates per second.
+///
+/// Printed through [`crate::sorted_value`]: its keys come in alphabetical order, as they did
+/// when the report was built with `serde_json::json!`.
+#[derive(Debug, Clone, Serialize)]
+pub struct VelocityReport {
+    /// The assembly's corner C4 `[x, y]` (mm).
+    pub c4: [f64; 2],
+    /// The assembly's θ in eq. 13's sense: the direction of `C4 → C1` (degrees).
+    pub theta_deg: f64,
+    /// The assembly's φ in eq. 13's sense: the direction of `C4 → C3` (degrees).
+    pub phi_deg: f64,
+    /// The angular velocity of link m1 (`C1 C2`, eq. 26; rad/s).
+    pub omega_m1: f64,
+    /// The angular velocity of link m3 (`C3 C4`, eqs. 27–28; rad/s): that of m1.
+    pub omega_m3: f64,
+    /// The passive loop rate `m1ωm2 = θ̇ − φ̇` (eq. 24; rad/s).
+    pub loop_rate: f64,
+    /// The corners' velocities `Ċ1…Ċ4` (eq. 29), each `[ẋ, ẏ]` (mm/s).
+    pub corner_velocities: Vec<[f64; 2]>,
+    /// The text report's first line: the inputs and their rates.
+    #[serde(skip)]
+    heading: String,
+}
+
+/// The velocities of paper 003's 4-RRR at the inputs `q_text` (`--q`, degrees) with the input
+/// rates `qdot_text` (`--qdot`, rad/s), at the assembly nearest `near` (`--near C4x,C4y,θ,φ`;
+/// Table 1's pose by default).
+///
+/// # Errors
+///
+/// [`Error::Input`], naming the option: malformed numbers, no assembly near the pose, or
+/// a singular configuration.
+pub fn velocity_report(
+    q_text: &str,
+    qdot_text: &str,
+    near: Option<&str>,
+) -> Result<VelocityReport, Error> {
     let m = Configurable::paper003();
     let q = inputs(q_text)?;
     let rates = numbers("--qdot", qdot_text, 4)?;
@@ -263,32 +434,41 @@ pub fn velocity(
         &Vector4::new(rates[0], rates[1], rates[2], rates[3]),
     )
     .map_err(|e| Error::Input(e.to_string()))?;
-    if as_json {
-        return Ok(json(&serde_json::json!({
-            "c4": [pose.c4.x, pose.c4.y], "theta_deg": pose.theta.to_degrees(), "phi_deg": pose.phi.to_degrees(),
-            "omega_m1": v.m1.w.z, "omega_m3": v.m3.w.z, "loop_rate": v.loop_rate,
-            "corner_velocities": v.corners.iter().map(|c| [c.x, c.y]).collect::<Vec<_>>(),
-        })));
+    Ok(VelocityReport {
+        c4: xy(pose.c4),
+        theta_deg: pose.theta.to_degrees(),
+        phi_deg: pose.phi.to_degrees(),
+        omega_m1: v.m1.w.z,
+        omega_m3: v.m3.w.z,
+        loop_rate: v.loop_rate,
+        corner_velocities: v.corners.iter().map(|c| [c.x, c.y]).collect(),
+        heading: format!(
+            "paper 003 velocities by screw theory (§4, eqs. 16–29) at q = {q_text} deg, q̇ = {qdot_text} rad/s"
+        ),
+    })
+}
+
+impl VelocityReport {
+    /// The text report of `kinsyn configurable velocity`.
+    #[must_use]
+    pub fn text(&self) -> String {
+        let mut out = String::new();
+        let _ = writeln!(out, "{}", self.heading);
+        let _ = writeln!(
+            out,
+            "assembly: C4 = {}, θ = {:.5}°, φ = {:.5}°",
+            point(self.c4),
+            self.theta_deg,
+            self.phi_deg
+        );
+        let _ = writeln!(
+            out,
+            "ω(m1) = ω(m3) = {:.6} rad/s (eq. 27), loop rate m1ωm2 = {:.6} rad/s",
+            self.omega_m1, self.loop_rate
+        );
+        for (i, [x, y]) in self.corner_velocities.iter().enumerate() {
+            let _ = writeln!(out, "  Ċ{} = ({x:.4}, {y:.4}) mm/s", i + 1);
+        }
+        out
     }
-    let mut out = String::new();
-    let _ = writeln!(
-        out,
-        "paper 003 velocities by screw theory (§4, eqs. 16–29) at q = {q_text} deg, q̇ = {qdot_text} rad/s"
-    );
-    let _ = writeln!(
-        out,
-        "assembly: C4 = {}, θ = {:.5}°, φ = {:.5}°",
-        point(pose.c4),
-        pose.theta.to_degrees(),
-        pose.phi.to_degrees()
-    );
-    let _ = writeln!(
-        out,
-        "ω(m1) = ω(m3) = {:.6} rad/s (eq. 27), loop rate m1ωm2 = {:.6} rad/s",
-        v.m1.w.z, v.loop_rate
-    );
-    for (i, c) in v.corners.iter().enumerate() {
-        let _ = writeln!(out, "  Ċ{} = ({:.4}, {:.4}) mm/s", i + 1, c.x, c.y);
-    }
-    Ok(out)
 }

@@ -11,15 +11,24 @@
 //!   [`manipulator::parse_description`];
 //! - errors: [`Error`], [`terminal::one_line`];
 //! - `kinsyn build`: [`manipulator::build_checked`], [`manipulator::build_flag`];
-//! - `kinsyn analyze`: [`manipulator::analyse_placed`] and [`manipulator::Analyzed::json`];
-//! - `kinsyn modes`: [`manipulator::sample_modes`] and [`manipulator::modes_json`];
+//! - `kinsyn analyze`: [`manipulator::analyse_placed`] and [`manipulator::Analyzed::report`]
+//!   (a [`manipulator::AnalyzeReport`]);
+//! - `kinsyn modes`: [`manipulator::sample_modes`] and [`manipulator::modes_report`] (a
+//!   [`manipulator::ModesReport`]);
 //! - `kinsyn analyze --all-assemblies`: [`manipulator::all_assemblies_of`] and
-//!   [`manipulator::AllAssemblies::json`];
+//!   [`manipulator::AllAssemblies::report`] (a [`manipulator::AssembliesReport`]);
 //! - `--body`, `--relative-to`, `--legs`: [`manipulator::select_body`],
 //!   [`manipulator::parse_description_legs`];
 //! - `kinsyn solve`: [`solve::solve_system`] and [`solve::Solved::json`];
-//! - `kinsyn configurable inverse|forward|velocity`: [`configurable`];
-//! - `kinsyn components`: [`components::components`] with [`components::ComponentsOptions`];
+//! - `kinsyn configurable inverse|forward|velocity`: [`configurable::inverse_report`],
+//!   [`configurable::forward_report`], [`configurable::velocity_report`];
+//! - `kinsyn components`: [`components::components_of`] with [`components::ComponentsOptions`]
+//!   and [`components::Components::report`] (a [`components::ComponentsReport`]);
+//!
+//! The reports are typed values (`#[derive(Serialize)]` structs, each field documented with
+//! its meaning and unit): the front ends print them as JSON with [`sorted_json`] (the command)
+//! or hand them to Python as the text of [`sorted_value`], and the command's text output is
+//! written from the same values or the results behind them.
 //! - `kinsyn sweep` and `kinsyn sweep merge`: [`sweep`] (the run, the merge, the files'
 //!   readers and writers; `designs.parquet` is encoded by the front end, [`sweep::Table`]).
 //!
@@ -67,6 +76,27 @@ pub fn json<T: serde::Serialize>(value: &T) -> String {
             .into_owned();
     s.push('\n');
     s
+}
+
+/// A report as a JSON value whose objects have their keys in alphabetical order at every
+/// level, whatever the order of the report's fields: `serde_json` is built here without its
+/// `preserve_order` feature, so its [`serde_json::Map`] is sorted. The reports of `analyze`,
+/// `modes`, `analyze --all-assemblies`, `components` and `configurable` are printed through this
+/// value ([`sorted_json`]), and handed to Python as its text, so that their keys come in the
+/// order they always had.
+///
+/// # Panics
+/// Never for the reports of this crate: each serialises (string keys, finite or `null` numbers).
+#[must_use]
+pub fn sorted_value<T: serde::Serialize>(report: &T) -> serde_json::Value {
+    serde_json::to_value(report).expect("serialisable")
+}
+
+/// [`json`] of [`sorted_value`]: the pretty JSON of a report with its keys in alphabetical
+/// order at every level.
+#[must_use]
+pub fn sorted_json<T: serde::Serialize>(report: &T) -> String {
+    json(&sorted_value(report))
 }
 
 /// The items joined by commas, or "none".

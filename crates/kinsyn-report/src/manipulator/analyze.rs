@@ -2,15 +2,18 @@
 //! Jacobians, ranks and singularities as text or JSON.
 
 use super::{clean, leg_warnings, load_with_body, warn};
-use crate::{Error, json};
-use kinsyn::manipulator::file::AngleUnit;
+use crate::{Error, sorted_json};
+use kinsyn::manipulator::file::{AngleUnit, Units};
 use kinsyn::manipulator::{
     Analysis, ContinuationFailure, Manipulator, ManipulatorError, PRINTED_STUDY_TOLERANCE,
-    PositionError, PositionRequest, RowKind, rank_text,
+    PositionError, PositionRequest, RowKind, Singularity, rank_text,
 };
 use kinsyn::mechanism::SampleSettings;
 use kinsyn::screw::{self, DEFAULT_RANK_TOLERANCE};
+use kinsyn::spatial::study::StudyParameters;
 use nalgebra::DMatrix;
+use serde::Serialize;
+use std::collections::BTreeMap;
 use std::fmt::Write as _;
 use std::path::Path;
 
@@ -94,7 +97,7 @@ pub fn analyze(
     let warnings = leg_warnings(&m);
     warn(path, &warnings);
     if as_json {
-        return Ok(json(&analyzed.json(&m, &warnings)));
+        return Ok(sorted_json(&analyzed.report(&m, &warnings)));
     }
     Ok(analyzed.study_lines.clone() + &analysis_text(&m, &analyzed.analysis, &analyzed.reached))
 }
@@ -107,20 +110,22 @@ pub struct Analyzed {
     reached: Reached,
     /// The text report's lines on `--study`.
     study_lines: String,
-    /// The JSON report's `study` entries.
-    study_json: Vec<serde_json::Value>,
+    /// The report's `study` entries.
+    study: Vec<StudyReport>,
 }
 
 impl Analyzed {
     /// The report of `kinsyn analyze --json` for the manipulator `m` analysed, with the leg
     /// `warnings` listed in it.
     #[must_use]
-    pub fn json(&self, m: &Manipulator, warnings: &[String]) -> serde_json::Value {
-        let mut v = analysis_json(m, &self.analysis, &self.reached, warnings);
-        if !self.study_json.is_empty() {
-            v["study"] = serde_json::Value::Array(self.study_json.clone());
-        }
-        v
+    pub fn report(&self, m: &Manipulator, warnings: &[String]) -> AnalyzeReport {
+        AnalyzeReport::new(
+            m,
+            &self.analysis,
+            &self.reached,
+            warnings,
+            self.study.clone(),
+        )
     }
 }
 
@@ -173,9 +178,9 @@ pub fn analyse_placed(
         );
     }
     let mut study_lines = String::new();
-    let mut study_json = Vec::new();
+    let mut study = Vec::new();
     let (q, steps, continuous) = if !placement.study.is_empty() {
-        let q = study_configuration(m, placement, &start, &mut study_lines, &mut study_json)?;
+        let q = study_configuration(m, placement, &start, &mut study_lines, &mut study)?;
         (q, 0, true)
     } else if request.inputs.is_empty() && request.platform.is_none() {
         (start, 0, true)
@@ -202,18 +207,18 @@ pub fn analyse_placed(
         analysis: a,
         reached,
         study_lines,
-        study_json,
+        study,
     })
 }
 
 /// `--study` (with `--nearest`): the configuration of the Study poses reached from `start`,
-/// with the report's lines and JSON entries.
+/// with the report's lines and entries.
 fn study_configuration(
     m: &Manipulator,
     placement: &Placement<'_>,
     start: &[f64],
     study_lines: &mut String,
-    study_json: &mut Vec<serde_json::Value>,
+    study: &mut Vec<StudyReport>,
 ) -> Result<Vec<f64>, Error> {
     let sets = placement
         .study
@@ -227,15 +232,16 @@ fn study_configuration(
             "--study {:?}: relative Study quadric residual |x·y|/(|x| |y|) = {residual:.3e} (tolerance {:.0e}, values printed to two decimals)",
             body.name, PRINTED_STUDY_TOLERANCE
         );
-        study_json.push(serde_json::json!({
-            "body": body.name,
-            "parameters": s,
-            "relative_quadric_residual": residual,
-            "tolerance": PRINTED_STUDY_TOLERANCE,
-        }));
+        study.push(StudyReport {
+            body: body.name.clone(),
+            parameters: *s,
+            relative_quadric_residual: residual,
+            tolerance: PRINTED_STUDY_TOLERANCE,
+            nearest: None,
+        });
     }
     if let Some(rounding) = placement.nearest {
-        nearest_study(m, start, &sets, rounding, study_lines, study_json)
+        nearest_study(m, start, &sets, rounding, study_lines, study)
     } else {
         let frames = m
             .frames_from_study(&sets, PRINTED_STUDY_TOLERANCE)
@@ -249,7 +255,7 @@ fn study_configuration(
     }
 }
 
-/// `--study … --nearest`: the assembly nearest to the Study poses, with a line and a JSON
+/// `--study … --nearest`: the assembly nearest to the Study poses, with a line and a report
 /// entry per body on how far it moved (the file's units) and how far the rounding explains;
 /// refused in one line when a body moved further.
 fn nearest_study(
@@ -258,7 +264,7 @@ fn nearest_study(
     sets: &[kinsyn::spatial::study::StudyParameters],
     rounding: f64,
     lines: &mut String,
-    entries: &mut [serde_json::Value],
+    entries: &mut [StudyReport],
 ) -> Result<Vec<f64>, Error> {
     if !(rounding.is_finite() && rounding > 0.0) {
         return Err(Error::Input(format!(
@@ -301,39 +307,25 @@ fn nearest_study(
             c.translation_bound,
             angle.from_radians(c.rotation_bound),
         );
-        moved.push(serde_json::json!({
-            "body": name,
-            "translation": c.translation,
-            "rotation": angle.from_radians(c.rotation),
-            "translation_bound": c.translation_bound,
-            "rotation_bound": angle.from_radians(c.rotation_bound),
-            "length_unit": length,
-            "angle_unit": angle_name,
-            "rounding": rounding,
-        }));
+        moved.push(NearestReport {
+            body: name.clone(),
+            translation: c.translation,
+            rotation: angle.from_radians(c.rotation),
+            translation_bound: c.translation_bound,
+            rotation_bound: angle.from_radians(c.rotation_bound),
+            length_unit: length.clone(),
+            angle_unit: angle_name,
+            rounding,
+        });
     }
     for (entry, change) in entries.iter_mut().zip(moved) {
-        entry["nearest"] = change;
+        entry.nearest = Some(change);
     }
     Ok(nearest.q)
 }
 
-/// The analysed body's instantaneous motion relative to the body of `--relative-to`.
-struct RelativeMotion {
-    /// The name of the body it is seen from.
-    base: String,
-    /// Its relative degrees of freedom.
-    dof: usize,
-    /// How many independent relative angular velocities it has (0: every relative twist is a
-    /// translation).
-    rotations: usize,
-    /// A basis of its relative twists `(v; ω)`, `v` the velocity of the analysed body's point,
-    /// in the frame of the base body at its reference pose.
-    twists: Vec<[f64; 6]>,
-}
-
-/// [`RelativeMotion`] at the configuration analysed, when `--relative-to` was given.
-fn relative_motion(m: &Manipulator, a: &Analysis) -> Option<RelativeMotion> {
+/// [`RelativeMotionReport`] at the configuration analysed, when `--relative-to` was given.
+fn relative_motion(m: &Manipulator, a: &Analysis) -> Option<RelativeMotionReport> {
     let base = m.relative_body()?;
     let body = m.end_effector();
     let (twists, dof) = m.relative_twists(body, base, &a.q, &a.locked);
@@ -357,40 +349,31 @@ fn relative_motion(m: &Manipulator, a: &Analysis) -> Option<RelativeMotion> {
             [vp.x, vp.y, vp.z, w.x, w.y, w.z]
         })
         .collect();
-    Some(RelativeMotion {
-        base: m.bodies()[base].name.clone(),
+    Some(RelativeMotionReport {
+        body: m.bodies()[body].name.clone(),
+        relative_to: m.bodies()[base].name.clone(),
         dof,
         rotations,
-        twists,
+        twists_at_point: twists,
     })
 }
 
-fn relative_json(m: &Manipulator, r: &RelativeMotion) -> serde_json::Value {
-    serde_json::json!({
-        "body": m.bodies()[m.end_effector()].name,
-        "relative_to": r.base,
-        "dof": r.dof,
-        "rotations": r.rotations,
-        "twists_at_point": r.twists,
-    })
-}
-
-fn relative_text(m: &Manipulator, r: &RelativeMotion) -> String {
-    let body = &m.bodies()[m.end_effector()].name;
+/// The text report's line on the motion relative to the body of `--relative-to`.
+fn relative_text(r: &RelativeMotionReport) -> String {
+    let (body, base) = (&r.body, &r.relative_to);
     let what = match (r.dof, r.rotations) {
         (0, _) => "it does not move relative to it".to_string(),
         (_, 0) => format!(
-            "every relative twist is a translation ({body:?} and {:?} have the same angular velocity)",
-            r.base
+            "every relative twist is a translation ({body:?} and {base:?} have the same angular velocity)"
         ),
         (_, 1) => "1 independent relative angular velocity".to_string(),
         (_, k) => format!("{k} independent relative angular velocities"),
     };
     let mut s = format!(
-        "motion of {body:?} relative to {:?}: {} dof; {what}; twist basis (v of {body:?}'s point; ω), in the frame of {:?} at the reference:",
-        r.base, r.dof, r.base
+        "motion of {body:?} relative to {base:?}: {} dof; {what}; twist basis (v of {body:?}'s point; ω), in the frame of {base:?} at the reference:",
+        r.dof
     );
-    for t in &r.twists {
+    for t in &r.twists_at_point {
         let t: Vec<String> = t.iter().map(|x| format!("{:.6}", clean(*x))).collect();
         let _ = write!(s, " [{}]", t.join(", "));
     }
@@ -419,109 +402,6 @@ fn row_label(m: &Manipulator, kind: RowKind) -> String {
         RowKind::Actuation { actuator } => format!("input {}", m.actuators()[actuator].label()),
         RowKind::Locked { actuator } => format!("locked {}", m.actuators()[actuator].label()),
         RowKind::Constraint { leg } => format!("constraint leg {}", leg + 1),
-    }
-}
-
-fn analysis_json(
-    m: &Manipulator,
-    a: &Analysis,
-    reached: &Reached,
-    warnings: &[String],
-) -> serde_json::Value {
-    let frame = m.platform_frame(&a.q);
-    let rv = kinsyn::mechanism::rotation_log(&frame.rotation);
-    let rows: Vec<serde_json::Value> = a
-        .jacobians
-        .rows
-        .iter()
-        .map(|r| serde_json::json!({"row": row_label(m, r.kind), "jd": r.wrench, "ji": r.input}))
-        .collect();
-    let mut v = serde_json::json!({
-        "manipulator": m.name(),
-        "units": m.units(),
-        "locked": m.lock_text(&a.locked),
-        "point": [a.jacobians.point.x, a.jacobians.point.y, a.jacobians.point.z],
-        "platform_position": [frame.translation.x, frame.translation.y, frame.translation.z],
-        "platform_rotation_vector_rad": [rv.x, rv.y, rv.z],
-        "joint_values": a.q,
-        "input_values": input_values(m, &a.q).into_iter().map(|(k, v)| (k, serde_json::json!(v))).collect::<serde_json::Map<String, serde_json::Value>>(),
-        "reached_from": reached.start,
-        "continuation_steps": reached.steps,
-        "continuous_with_start": reached.continuous,
-        "mobility": a.mobility,
-        "closure_rank": rank_json(&a.closure_rank, None),
-        "platform_dof": a.platform_dof,
-        "inputs": a.jacobians.free.iter().map(|&i| m.actuators()[i].label()).collect::<Vec<_>>(),
-        "rows": rows,
-        "jd_rank": rank_json(&a.jd_rank, Some(a.generic.jd)),
-        "constraint_rank": rank_json(&a.constraint_rank, Some(a.generic.constraint)),
-        "leg_ranks": a.leg_ranks.iter().zip(&a.generic.legs).map(|(r, &g)| rank_json(r, Some(g))).collect::<Vec<_>>(),
-        "generic_assemblies": a.generic.assemblies,
-        "generic_assemblies_below": a.generic.assemblies_below,
-        "singularities": a.singularities,
-        "warnings": warnings,
-        "end_effector": m.bodies()[m.end_effector()].name,
-        "bodies": bodies_json(m, a),
-        "leg_wrench_jacobians": a.leg_wrench_jacobians,
-        "inputs_with_end_effector_held": {
-            "here": a.inputs_with_end_effector_held,
-            "generic": a.generic.inputs_with_end_effector_held,
-        },
-        "series_parallel": series_json(m, a),
-    });
-    if let Some(r) = relative_motion(m, a) {
-        v["relative_motion"] = relative_json(m, &r);
-    }
-    v
-}
-
-/// The stack of three-legged modules the manipulator is, when it has two or more (paper 002):
-/// `J_S-PM` (eqs. 7–8), its rank, the order of the twist system (eqs. 9–10) and each module's
-/// forward Jacobian `A` (eqs. 2–3) with its rank and its input twists `A⁻¹B` (`null` in a parallel
-/// singularity); `null` otherwise.
-fn series_json(m: &Manipulator, a: &Analysis) -> serde_json::Value {
-    let Some(spm) = kinsyn_papers::series::stack(m, &a.q).filter(|s| s.modules().len() > 1) else {
-        return serde_json::Value::Null;
-    };
-    let system = spm.twist_system(DEFAULT_RANK_TOLERANCE);
-    let order = system.order.clone();
-    let wrenches: Vec<[f64; 6]> = stack_wrenches(&spm, &system.constraint_wrenches)
-        .iter()
-        .map(|w| w.to_vector().into())
-        .collect();
-    let modules: Vec<serde_json::Value> = spm
-        .modules()
-        .iter()
-        .map(|module| {
-            let forward = DMatrix::from_column_slice(6, 6, module.forward_jacobian().as_slice());
-            let rows = |m: &DMatrix<f64>| -> Vec<Vec<f64>> {
-                m.row_iter().map(|r| r.iter().copied().collect()).collect()
-            };
-            let inputs = module.input_twists().ok().map(|t| {
-                rows(&DMatrix::from_column_slice(6, 3, t.as_slice()))
-            });
-            serde_json::json!({
-                "forward_jacobian": rows(&forward),
-                "forward_jacobian_rank": rank_json(&screw::rank(&forward, DEFAULT_RANK_TOLERANCE), None),
-                "input_twists": inputs,
-            })
-        })
-        .collect();
-    match spm.jacobian() {
-        Ok(j) => serde_json::json!({
-            "modules": modules,
-            "jacobian": j.row_iter().map(|r| r.iter().copied().collect::<Vec<f64>>()).collect::<Vec<_>>(),
-            "jacobian_rank": rank_json(&screw::rank(&j, DEFAULT_RANK_TOLERANCE), None),
-            "twist_system_order": rank_json(&order, None),
-            "constraint_wrenches_f_m_about_ground_origin": wrenches,
-        }),
-        Err(e) => serde_json::json!({
-            "modules": modules,
-            "jacobian": null,
-            "jacobian_error": e.to_string(),
-            "twist_system_order": rank_json(&order, None),
-            "constraint_wrenches_f_m_about_ground_origin": wrenches,
-        }),
     }
 }
 
@@ -576,7 +456,7 @@ fn wrench_text(w: &kinsyn::screw::Wrench, length: f64) -> String {
     }
 }
 
-/// The paper 002 lines of the text report (see [`series_json`]); empty unless the
+/// The paper 002 lines of the text report (see [`series_parallel`]); empty unless the
 /// manipulator is a stack of two or more three-legged modules.
 fn series_text(m: &Manipulator, a: &Analysis) -> String {
     let Some(spm) = kinsyn_papers::series::stack(m, &a.q).filter(|s| s.modules().len() > 1) else {
@@ -624,42 +504,6 @@ fn series_text(m: &Manipulator, a: &Analysis) -> String {
         );
     }
     s
-}
-
-/// Each moving body at the configuration analysed: its name, dof with the locked inputs held,
-/// frame origin, rotation vector (radians) and reference point.
-fn bodies_json(m: &Manipulator, a: &Analysis) -> serde_json::Value {
-    let bodies: Vec<serde_json::Value> = m
-        .bodies()
-        .iter()
-        .enumerate()
-        .map(|(k, b)| {
-            let frame = m.body_frame(k, &a.q);
-            let rv = kinsyn::mechanism::rotation_log(&frame.rotation);
-            let p = m.body_point(k, &a.q);
-            serde_json::json!({
-                "name": b.name,
-                "end_effector": k == m.end_effector(),
-                "dof": a.body_dof[k],
-                "position": [frame.translation.x, frame.translation.y, frame.translation.z],
-                "rotation_vector_rad": [rv.x, rv.y, rv.z],
-                "point": [p.x, p.y, p.z],
-            })
-        })
-        .collect();
-    serde_json::Value::Array(bodies)
-}
-
-/// A rank decision with its gap and the generic rank it is compared with.
-fn rank_json(r: &kinsyn::screw::Rank, generic: Option<usize>) -> serde_json::Value {
-    let (kept, dropped) = r.gap();
-    serde_json::json!({
-        "rank": r.rank,
-        "generic": generic,
-        "tolerance": r.tolerance,
-        "gap": {"smallest_kept": kept, "largest_dropped": dropped},
-        "singular_values": r.singular_values,
-    })
 }
 
 /// The labels of the inputs left free in an analysis.
@@ -876,7 +720,423 @@ fn analysis_text(m: &Manipulator, a: &Analysis, reached: &Reached) -> String {
         let _ = writeln!(s, "singularity ({:?}): {}", sing.kind, sing.detail());
     }
     if let Some(r) = relative_motion(m, a) {
-        s += &relative_text(m, &r);
+        s += &relative_text(&r);
     }
     s
+}
+
+/// The report of `kinsyn analyze --json` (and of Python's `Manipulator.analyze`): the
+/// configuration analysed, how it was reached, and its mobility, Jacobians, ranks and
+/// singularities (paper 000). Lengths are in the description's length unit, angles in radians
+/// unless a field's name says otherwise.
+///
+/// Printed through [`crate::sorted_value`]: its keys, and those of every value in it, come in
+/// alphabetical order, as they did when the report was built with `serde_json::json!`, not in
+/// the order of these fields.
+#[derive(Debug, Clone, Serialize)]
+pub struct AnalyzeReport {
+    /// The manipulator's name (the description's `name`).
+    pub manipulator: String,
+    /// The description's units: the name of its length unit and its angle unit (of inputs and
+    /// poses as given and printed).
+    pub units: Units,
+    /// The inputs locked (held at their values) in the analysis, by label, `-` for none.
+    pub locked: String,
+    /// The point P of the end-effector at which the rows' wrench moments and the velocity `v_P`
+    /// of `J_D [v_P; ω]` are taken, in the ground frame (length unit).
+    pub point: [f64; 3],
+    /// The end-effector frame's origin in the ground frame (length unit).
+    pub platform_position: [f64; 3],
+    /// The end-effector frame's orientation as a rotation vector (axis × angle, radians).
+    pub platform_rotation_vector_rad: [f64; 3],
+    /// Every joint's value at the configuration, in the mechanism's joint order: radians for
+    /// revolute joints, length unit for prismatic ones, measured from the reference.
+    pub joint_values: Vec<f64>,
+    /// Each input's value by label, from the reference: prismatic inputs in the length unit,
+    /// revolute ones in the description's angle unit.
+    pub input_values: BTreeMap<String, f64>,
+    /// The start the configuration was reached from: `the reference configuration` or
+    /// `--from POSE`.
+    pub reached_from: String,
+    /// The continuation steps from the start (0 when nothing was asked, or by `--study`).
+    pub continuation_steps: usize,
+    /// Whether the configuration is the assembly continuous with the start (false when damped
+    /// Newton steps reached it after the continuation path left the workspace).
+    pub continuous_with_start: bool,
+    /// The mobility: the dimension of the joint rates that keep every loop closed (the locked
+    /// inputs held), the platform's dof plus the legs' internal motions.
+    pub mobility: usize,
+    /// The rank decision of the (dimensionless) loop-closure Jacobian behind `mobility`.
+    pub closure_rank: RankReport,
+    /// The end-effector's local dof with the locked inputs held: six minus the rank of the
+    /// constraint wrenches.
+    pub platform_dof: usize,
+    /// The labels of the inputs left free: the columns of `J_I`.
+    pub inputs: Vec<String>,
+    /// The rows of `J_D [v_P; ω] = J_I q̇` (paper 000, eq. 11): actuation wrenches, locked
+    /// inputs' wrenches and constraint wrenches; none when `leg_wrench_jacobians` is false.
+    pub rows: Vec<JacobianRow>,
+    /// The rank of `J_D`, with its generic value (6 when the inputs fix the end-effector).
+    pub jd_rank: RankReport,
+    /// The rank of the constraint wrenches, with its generic value.
+    pub constraint_rank: RankReport,
+    /// Each leg's rank of its joint twists, with its generic value, in leg order.
+    pub leg_ranks: Vec<RankReport>,
+    /// The random assemblies that closed, over which the generic ranks were taken.
+    pub generic_assemblies: usize,
+    /// Of those, the assemblies at which some rank fell short of its generic value (near or on
+    /// a singular set): reported, not used.
+    pub generic_assemblies_below: usize,
+    /// The singularities found at the configuration: their kind and what dropped, in words.
+    pub singularities: Vec<Singularity>,
+    /// The leg warnings of the description (docs/mechanism-format.md, "Leg checks").
+    pub warnings: Vec<String>,
+    /// The name of the moving body analysed as the end-effector.
+    pub end_effector: String,
+    /// Each moving body at the configuration, in the description's order.
+    pub bodies: Vec<BodyReport>,
+    /// Whether `J_D` and `J_I` are paper 000's leg-wrench Jacobians: every leg runs from the
+    /// ground to the end-effector. When false, `rows` is empty and `jd_rank`,
+    /// `constraint_rank` and `platform_dof` come from the loop-closure Jacobian.
+    pub leg_wrench_jacobians: bool,
+    /// The independent rates the free inputs keep with the end-effector held still.
+    pub inputs_with_end_effector_held: HeldInputs,
+    /// The stack of three-legged modules the manipulator is, when it has two or more (paper
+    /// 002); `null` otherwise.
+    pub series_parallel: Option<SeriesParallelReport>,
+    /// The end-effector's motion relative to the body of `--relative-to`; absent without it.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub relative_motion: Option<RelativeMotionReport>,
+    /// One entry per `--study` pose, in series order from the ground; absent without
+    /// `--study`.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub study: Vec<StudyReport>,
+}
+
+/// A rank decision: the rank of a matrix from its singular values, with the gap around the
+/// cut-off and the generic rank it is compared with.
+#[derive(Debug, Clone, Serialize)]
+pub struct RankReport {
+    /// The rank: the singular values above `tolerance` times the scale (the largest singular
+    /// value, unless the decision was judged against another).
+    pub rank: usize,
+    /// The rank at generic configurations, where one is compared (`null` otherwise).
+    pub generic: Option<usize>,
+    /// The relative tolerance of the decision (dimensionless).
+    pub tolerance: f64,
+    /// The singular values on either side of the cut-off, relative to the scale.
+    pub gap: RankGap,
+    /// Every singular value, largest first (in the matrix's own units; dimensionless for the
+    /// loop closure).
+    pub singular_values: Vec<f64>,
+}
+
+/// The gap of a rank decision at its cut, each side relative to the scale the rank was judged
+/// against (dimensionless; both 0 for an empty matrix).
+#[derive(Debug, Clone, Serialize)]
+pub struct RankGap {
+    /// The smallest singular value kept over the scale: how far the rank is from dropping.
+    pub smallest_kept: f64,
+    /// The largest singular value dropped over the scale (0 when none is): how far the rank is
+    /// from rising.
+    pub largest_dropped: f64,
+}
+
+/// One row of `J_D [v_P; ω] = J_I q̇`: a wrench on the end-effector and its input coefficient.
+#[derive(Debug, Clone, Serialize)]
+pub struct JacobianRow {
+    /// What the row is: `input LABEL` (an actuation wrench), `locked LABEL` (the wrench of a
+    /// locked input) or `constraint leg N`.
+    pub row: String,
+    /// The row of `J_D`: the wrench `(f; m_P)`, its moment taken about the point P (the
+    /// moment in the length unit times the force's).
+    pub jd: [f64; 6],
+    /// The row's entry of `J_I`: `W·$_a`, the product of the row's wrench and its input's
+    /// joint screw, for an actuation row; 0 otherwise.
+    pub ji: f64,
+}
+
+/// One moving body at the configuration analysed.
+#[derive(Debug, Clone, Serialize)]
+pub struct BodyReport {
+    /// The body's name in the description.
+    pub name: String,
+    /// Whether it is the body analysed as the end-effector.
+    pub end_effector: bool,
+    /// Its local dof with the locked inputs held (the dimension of its twist space).
+    pub dof: usize,
+    /// Its frame's origin in the ground frame (length unit).
+    pub position: [f64; 3],
+    /// Its frame's orientation as a rotation vector (radians).
+    pub rotation_vector_rad: [f64; 3],
+    /// Its reference point in the ground frame (length unit).
+    pub point: [f64; 3],
+}
+
+/// The independent rates the free inputs can have with the end-effector held still: more
+/// here than at generic configurations is an inverse singularity.
+#[derive(Debug, Clone, Serialize)]
+pub struct HeldInputs {
+    /// At the configuration analysed.
+    pub here: usize,
+    /// At generic configurations.
+    pub generic: usize,
+}
+
+/// The manipulator as a stack of three-legged modules (paper 002).
+#[derive(Debug, Clone, Serialize)]
+pub struct SeriesParallelReport {
+    /// Each module, from the ground.
+    pub modules: Vec<ModuleReport>,
+    /// `J_S-PM` (eqs. 7–8), row by row: the end-effector twist `(ω; v)` of its origin per input
+    /// rate; `null` where it is not defined (`jacobian_error` says why).
+    pub jacobian: Option<Vec<Vec<f64>>>,
+    /// The rank of `J_S-PM`; absent where it is not defined.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub jacobian_rank: Option<RankReport>,
+    /// Why `J_S-PM` is not defined here; absent where it is.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub jacobian_error: Option<String>,
+    /// The order of the stack's twist system (eqs. 9–10): the end-effector's dof.
+    pub twist_system_order: RankReport,
+    /// A basis of the stack's constraint wrenches `(f; m)`, reciprocal to every end-effector
+    /// twist, moments about the ground origin (force dimensionless, moment in the length unit).
+    pub constraint_wrenches_f_m_about_ground_origin: Vec<[f64; 6]>,
+}
+
+/// One three-legged module of a stack (paper 002).
+#[derive(Debug, Clone, Serialize)]
+pub struct ModuleReport {
+    /// The module's forward Jacobian `A` (eqs. 2–3), row by row: its actuation and constraint
+    /// wrenches.
+    pub forward_jacobian: Vec<Vec<f64>>,
+    /// The rank of `A`.
+    pub forward_jacobian_rank: RankReport,
+    /// The module's input twists `A⁻¹B` (6 × 3), row by row; `null` in a parallel singularity
+    /// (`A` singular).
+    pub input_twists: Option<Vec<Vec<f64>>>,
+}
+
+/// The analysed body's instantaneous motion relative to the body of `--relative-to`.
+#[derive(Debug, Clone, Serialize)]
+pub struct RelativeMotionReport {
+    /// The name of the body analysed.
+    pub body: String,
+    /// The name of the body it is seen from.
+    pub relative_to: String,
+    /// Its relative dof.
+    pub dof: usize,
+    /// How many independent relative angular velocities it has (0: every relative twist is a
+    /// translation).
+    pub rotations: usize,
+    /// A basis of its relative twists `(v; ω)`, `v` the velocity of the analysed body's point
+    /// (length unit per unit time) and `ω` its angular velocity (radians per unit time), in
+    /// the frame of the base body at its reference pose.
+    pub twists_at_point: Vec<[f64; 6]>,
+}
+
+/// One `--study` pose: a moving body's Study parameters as given, and how nearly they lie on
+/// the Study quadric.
+#[derive(Debug, Clone, Serialize)]
+pub struct StudyReport {
+    /// The moving body they place.
+    pub body: String,
+    /// The Study parameters as given (`x0…x3`, `y0…y3`; the `y` in the length unit).
+    pub parameters: StudyParameters,
+    /// The relative Study quadric residual `|x·y| / (|x| |y|)` (dimensionless).
+    pub relative_quadric_residual: f64,
+    /// The residual accepted for parameters printed to two decimals (dimensionless).
+    pub tolerance: f64,
+    /// With `--nearest`: how far the nearest assembly moved the body; absent without it.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub nearest: Option<NearestReport>,
+}
+
+/// `--nearest`: how far the nearest assembly moved a body from its `--study` pose, and how far
+/// rounding each parameter explains.
+#[derive(Debug, Clone, Serialize)]
+pub struct NearestReport {
+    /// The moving body.
+    pub body: String,
+    /// How far its reference point moved (`length_unit`).
+    pub translation: f64,
+    /// How far it turned (`angle_unit`).
+    pub rotation: f64,
+    /// The translation rounding each parameter by `rounding` explains (`length_unit`).
+    pub translation_bound: f64,
+    /// The rotation rounding each parameter by `rounding` explains (`angle_unit`).
+    pub rotation_bound: f64,
+    /// The description's length unit.
+    pub length_unit: String,
+    /// The description's angle unit: `deg` or `rad`.
+    pub angle_unit: &'static str,
+    /// `--rounding`: half a unit of the last printed place of each parameter.
+    pub rounding: f64,
+}
+
+impl RankReport {
+    /// The report of the rank decision `r`, compared with the `generic` rank when given.
+    fn new(r: &kinsyn::screw::Rank, generic: Option<usize>) -> Self {
+        let (smallest_kept, largest_dropped) = r.gap();
+        Self {
+            rank: r.rank,
+            generic,
+            tolerance: r.tolerance,
+            gap: RankGap {
+                smallest_kept,
+                largest_dropped,
+            },
+            singular_values: r.singular_values.clone(),
+        }
+    }
+}
+
+impl AnalyzeReport {
+    /// The report of the analysis `a` of `m`, reached as `reached` says, with the leg
+    /// `warnings` and the `--study` entries.
+    fn new(
+        m: &Manipulator,
+        a: &Analysis,
+        reached: &Reached,
+        warnings: &[String],
+        study: Vec<StudyReport>,
+    ) -> Self {
+        let frame = m.platform_frame(&a.q);
+        let rv = kinsyn::mechanism::rotation_log(&frame.rotation);
+        let p = a.jacobians.point;
+        Self {
+            manipulator: m.name().to_string(),
+            units: m.units().clone(),
+            locked: m.lock_text(&a.locked),
+            point: [p.x, p.y, p.z],
+            platform_position: [
+                frame.translation.x,
+                frame.translation.y,
+                frame.translation.z,
+            ],
+            platform_rotation_vector_rad: [rv.x, rv.y, rv.z],
+            joint_values: a.q.clone(),
+            input_values: input_values(m, &a.q).into_iter().collect(),
+            reached_from: reached.start.clone(),
+            continuation_steps: reached.steps,
+            continuous_with_start: reached.continuous,
+            mobility: a.mobility,
+            closure_rank: RankReport::new(&a.closure_rank, None),
+            platform_dof: a.platform_dof,
+            inputs: free_labels(m, a),
+            rows: a
+                .jacobians
+                .rows
+                .iter()
+                .map(|r| JacobianRow {
+                    row: row_label(m, r.kind),
+                    jd: r.wrench,
+                    ji: r.input,
+                })
+                .collect(),
+            jd_rank: RankReport::new(&a.jd_rank, Some(a.generic.jd)),
+            constraint_rank: RankReport::new(&a.constraint_rank, Some(a.generic.constraint)),
+            leg_ranks: a
+                .leg_ranks
+                .iter()
+                .zip(&a.generic.legs)
+                .map(|(r, &g)| RankReport::new(r, Some(g)))
+                .collect(),
+            generic_assemblies: a.generic.assemblies,
+            generic_assemblies_below: a.generic.assemblies_below,
+            singularities: a.singularities.clone(),
+            warnings: warnings.to_vec(),
+            end_effector: m.bodies()[m.end_effector()].name.clone(),
+            bodies: bodies(m, a),
+            leg_wrench_jacobians: a.leg_wrench_jacobians,
+            inputs_with_end_effector_held: HeldInputs {
+                here: a.inputs_with_end_effector_held,
+                generic: a.generic.inputs_with_end_effector_held,
+            },
+            series_parallel: series_parallel(m, a),
+            relative_motion: relative_motion(m, a),
+            study,
+        }
+    }
+}
+
+/// The stack of three-legged modules the manipulator is, when it has two or more (paper 002):
+/// `J_S-PM` (eqs. 7–8), its rank, the order of the twist system (eqs. 9–10) and each module's
+/// forward Jacobian `A` (eqs. 2–3) with its rank and its input twists `A⁻¹B` (`None` in a
+/// parallel singularity); `None` otherwise.
+fn series_parallel(m: &Manipulator, a: &Analysis) -> Option<SeriesParallelReport> {
+    let spm = kinsyn_papers::series::stack(m, &a.q).filter(|s| s.modules().len() > 1)?;
+    let system = spm.twist_system(DEFAULT_RANK_TOLERANCE);
+    let rows = |m: &DMatrix<f64>| -> Vec<Vec<f64>> {
+        m.row_iter().map(|r| r.iter().copied().collect()).collect()
+    };
+    let modules = spm
+        .modules()
+        .iter()
+        .map(|module| {
+            let forward = DMatrix::from_column_slice(6, 6, module.forward_jacobian().as_slice());
+            ModuleReport {
+                forward_jacobian: rows(&forward),
+                forward_jacobian_rank: RankReport::new(
+                    &screw::rank(&forward, DEFAULT_RANK_TOLERANCE),
+                    None,
+                ),
+                input_twists: module
+                    .input_twists()
+                    .ok()
+                    .map(|t| rows(&DMatrix::from_column_slice(6, 3, t.as_slice()))),
+            }
+        })
+        .collect();
+    let (jacobian, jacobian_rank, jacobian_error) = match spm.jacobian() {
+        Ok(j) => (
+            Some(rows(&j)),
+            Some(RankReport::new(
+                &screw::rank(&j, DEFAULT_RANK_TOLERANCE),
+                None,
+            )),
+            None,
+        ),
+        Err(e) => (None, None, Some(e.to_string())),
+    };
+    Some(SeriesParallelReport {
+        modules,
+        jacobian,
+        jacobian_rank,
+        jacobian_error,
+        twist_system_order: RankReport::new(&system.order, None),
+        constraint_wrenches_f_m_about_ground_origin: stack_wrenches(
+            &spm,
+            &system.constraint_wrenches,
+        )
+        .iter()
+        .map(|w| w.to_vector().into())
+        .collect(),
+    })
+}
+
+/// Each moving body at the configuration analysed: its name, dof with the locked inputs held,
+/// frame origin, rotation vector (radians) and reference point.
+fn bodies(m: &Manipulator, a: &Analysis) -> Vec<BodyReport> {
+    m.bodies()
+        .iter()
+        .enumerate()
+        .map(|(k, b)| {
+            let frame = m.body_frame(k, &a.q);
+            let rv = kinsyn::mechanism::rotation_log(&frame.rotation);
+            let p = m.body_point(k, &a.q);
+            BodyReport {
+                name: b.name.clone(),
+                end_effector: k == m.end_effector(),
+                dof: a.body_dof[k],
+                position: [
+                    frame.translation.x,
+                    frame.translation.y,
+                    frame.translation.z,
+                ],
+                rotation_vector_rad: [rv.x, rv.y, rv.z],
+                point: [p.x, p.y, p.z],
+            }
+        })
+        .collect()
 }

@@ -3,12 +3,13 @@
 
 use super::{clean, input_texts, inputs_or_reference, leg_warnings, load_with_body, warn};
 use crate::solve::{PathOption, certificate_line, solve_with_bar};
-use crate::{Error, json};
+use crate::{Error, sorted_json};
 use kinsyn::geometry::Chart;
 use kinsyn::homotopy::{SolveReport, SolveSettings};
 use kinsyn::manipulator::{LegKind, Manipulator, PositionRequest};
 use kinsyn::mechanism::rotation_log;
 use kinsyn::spatial::Displacement;
+use serde::Serialize;
 use std::fmt::Write as _;
 use std::path::Path;
 
@@ -51,7 +52,7 @@ pub fn all_assemblies(
     let warnings = leg_warnings(&m);
     warn(path, &warnings);
     if as_json {
-        return Ok(json(&all.json(&m, &warnings)));
+        return Ok(sorted_json(&all.report(&m, &warnings)));
     }
     Ok(all.text(&m, path, seed))
 }
@@ -176,42 +177,53 @@ pub fn all_assemblies_of(
 impl AllAssemblies {
     /// The report of `kinsyn analyze --all-assemblies --json` for `m`, with the leg `warnings`.
     #[must_use]
-    pub fn json(&self, m: &Manipulator, warnings: &[String]) -> serde_json::Value {
+    pub fn report(&self, m: &Manipulator, warnings: &[String]) -> AssembliesReport {
         let (report, system) = (&self.report, &self.system);
-        serde_json::json!({
-            "manipulator": m.name(),
-            "inputs": input_texts(m, &self.inputs),
-            "formulation": {
-                "variables": system.variables(),
-                "equations": system.len(),
-                "degrees": system.degrees(),
-                "bezout_number": system.bezout_number().to_string(),
-                "legs": self.kinds,
+        AssembliesReport {
+            manipulator: m.name().to_string(),
+            inputs: input_texts(m, &self.inputs),
+            formulation: Formulation {
+                variables: system.variables().to_vec(),
+                equations: system.len(),
+                degrees: system.degrees(),
+                bezout_number: system.bezout_number().to_string(),
+                legs: self.kinds.clone(),
             },
-            "summary": report.summary(),
-            "paths": report.paths(),
-            "nonsingular": report.nonsingular(),
-            "real": report.real(),
-            "singular": report.singular(),
-            "singular_on_null_cone": self.null_cone,
-            "at_infinity": report.at_infinity(),
-            "certified": report.certified(),
-            "certified_real": report.certified_real(),
-            "seconds": report.seconds,
-            "seed": self.seed,
-            "real_assemblies": self.assemblies.iter().map(|a| serde_json::json!({
-                "pose": pose_text(m, &a.pose),
-                "position": a.pose.translation.vector.as_slice(),
-                "rotation_vector_rad": rotation_log(&a.pose.rotation).as_slice(),
-                "largest_leg_residual": a.residual,
-                "certified": a.certified,
-                "continued_from_reference": a.current,
-            })).collect::<Vec<_>>(),
-            "complex_assemblies": report.solutions.iter().filter(|s| s.regular && !s.real).map(|s| {
-                s.x.iter().map(|c| [c.re, c.im]).collect::<Vec<_>>()
-            }).collect::<Vec<_>>(),
-            "warnings": warnings,
-        })
+            summary: report.summary(),
+            paths: report.paths(),
+            nonsingular: report.nonsingular(),
+            real: report.real(),
+            singular: report.singular(),
+            singular_on_null_cone: self.null_cone,
+            at_infinity: report.at_infinity(),
+            certified: report.certified(),
+            certified_real: report.certified_real(),
+            seconds: report.seconds,
+            seed: self.seed,
+            real_assemblies: self
+                .assemblies
+                .iter()
+                .map(|a| {
+                    let t = a.pose.translation.vector;
+                    let r = rotation_log(&a.pose.rotation);
+                    RealAssembly {
+                        pose: pose_text(m, &a.pose),
+                        position: [t.x, t.y, t.z],
+                        rotation_vector_rad: [r.x, r.y, r.z],
+                        largest_leg_residual: a.residual,
+                        certified: a.certified,
+                        continued_from_reference: a.current,
+                    }
+                })
+                .collect(),
+            complex_assemblies: report
+                .solutions
+                .iter()
+                .filter(|s| s.regular && !s.real)
+                .map(|s| s.x.iter().map(|c| [c.re, c.im]).collect())
+                .collect(),
+            warnings: warnings.to_vec(),
+        }
     }
 
     /// The text report of `kinsyn analyze FILE --all-assemblies` (`path` the file's).
@@ -274,4 +286,89 @@ impl AllAssemblies {
         }
         out
     }
+}
+
+/// The report of `kinsyn analyze --all-assemblies --json` (and of Python's
+/// `Manipulator.all_assemblies`): the position system in the Study parameters of the platform,
+/// its solve by homotopy continuation, and the assemblies found. Lengths are in the
+/// description's length unit.
+///
+/// Printed through [`crate::sorted_value`]: its keys come in alphabetical order, as they did
+/// when the report was built with `serde_json::json!`, not in the order of these fields.
+#[derive(Debug, Clone, Serialize)]
+pub struct AssembliesReport {
+    /// The manipulator's name (the description's `name`).
+    pub manipulator: String,
+    /// Every input's value, `LABEL = value` (angles in the description's angle unit, rounded
+    /// to 1e-9): those of `--inputs`, the others at their reference values (0).
+    pub inputs: Vec<String>,
+    /// The position system solved.
+    pub formulation: Formulation,
+    /// The solve's counts in words.
+    pub summary: String,
+    /// The paths tracked.
+    pub paths: usize,
+    /// The non-singular endpoints: the isolated assemblies, real and complex.
+    pub nonsingular: usize,
+    /// Of those, the real ones.
+    pub real: usize,
+    /// The singular endpoints.
+    pub singular: usize,
+    /// Of those, the ones on the null cone `x0² + x1² + x2² + x3² = 0`, which solve the
+    /// constraints without being a displacement.
+    pub singular_on_null_cone: usize,
+    /// The paths that went to infinity.
+    pub at_infinity: usize,
+    /// The non-singular endpoints certified (each proved, by the Krawczyk operator in interval
+    /// arithmetic, to approximate exactly one root).
+    pub certified: usize,
+    /// Of those, the ones certified real.
+    pub certified_real: usize,
+    /// The solve's wall-clock time (seconds).
+    pub seconds: f64,
+    /// The seed of the random chart and of the solve.
+    pub seed: u64,
+    /// The real assemblies.
+    pub real_assemblies: Vec<RealAssembly>,
+    /// The complex (non-real) assemblies: each the position system's variables (the Study
+    /// parameters in the chart) as `[re, im]` pairs.
+    pub complex_assemblies: Vec<Vec<[f64; 2]>>,
+    /// The leg warnings of the description (docs/mechanism-format.md, "Leg checks").
+    pub warnings: Vec<String>,
+}
+
+/// The position system of `analyze --all-assemblies`: the legs' constraints on the Study
+/// parameters `x0…y3` of the platform frame, the Study quadric, and a random linear chart.
+#[derive(Debug, Clone, Serialize)]
+pub struct Formulation {
+    /// The unknowns' names.
+    pub variables: Vec<String>,
+    /// How many equations.
+    pub equations: usize,
+    /// Each equation's degree.
+    pub degrees: Vec<u32>,
+    /// The total-degree Bézout number (the product of the degrees), as decimal text.
+    pub bezout_number: String,
+    /// What each leg contributes (`distance`, `R–S: distance and plane`, …), in leg order.
+    pub legs: Vec<&'static str>,
+}
+
+/// One real assembly: the platform frame where every leg closes.
+#[derive(Debug, Clone, Serialize)]
+pub struct RealAssembly {
+    /// The pose as `--pose` takes it: `x,y,z,rx,ry,rz` (length unit, the rotation vector in
+    /// the description's angle unit), each number in full.
+    pub pose: String,
+    /// The platform frame's origin in the ground frame (length unit).
+    pub position: [f64; 3],
+    /// The platform frame's orientation as a rotation vector (radians).
+    pub rotation_vector_rad: [f64; 3],
+    /// The largest residual of the legs' constraints there (their distances and planes missed,
+    /// length unit).
+    pub largest_leg_residual: f64,
+    /// Whether the solution is certified (proved by the Krawczyk operator to approximate
+    /// exactly one root).
+    pub certified: bool,
+    /// Whether it is the assembly reached by continuation from the reference configuration.
+    pub continued_from_reference: bool,
 }

@@ -6,11 +6,18 @@ mod analyze;
 mod assemblies;
 mod modes;
 
-pub use analyze::{Analyzed, Placement, analyse_placed, analyze};
-pub use assemblies::{AllAssemblies, all_assemblies, all_assemblies_of, pose_text};
+pub use analyze::{
+    AnalyzeReport, Analyzed, BodyReport, HeldInputs, JacobianRow, ModuleReport, NearestReport,
+    Placement, RankGap, RankReport, RelativeMotionReport, SeriesParallelReport, StudyReport,
+    analyse_placed, analyze,
+};
+pub use assemblies::{
+    AllAssemblies, AssembliesReport, Formulation, RealAssembly, all_assemblies, all_assemblies_of,
+    pose_text,
+};
 pub use modes::{
-    DEFAULT_MAX_SUBSETS, MAX_SAMPLES, MAX_SUBSETS_CEILING, Selection, modes, modes_json,
-    sample_modes,
+    DEFAULT_MAX_SUBSETS, MAX_SAMPLES, MAX_SUBSETS_CEILING, ModesReport, Selection, modes,
+    modes_report, sample_modes,
 };
 
 use crate::Error;

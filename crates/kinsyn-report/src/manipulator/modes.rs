@@ -3,10 +3,11 @@
 
 use super::analyze::configuration_at_pose;
 use super::{body_names, clean, leg_warnings, load_with_body, warn};
-use crate::{Error, json};
+use crate::{Error, sorted_json};
 use kinsyn::manipulator::{Manipulator, Mode, Modes, ModesCost, PatternModes};
 use kinsyn::mechanism::{ASSEMBLY_STEPS, SampleSettings};
 use kinsyn::motion::MIN_SEPARATION;
+use serde::Serialize;
 use std::fmt::Write as _;
 use std::path::Path;
 
@@ -125,7 +126,9 @@ pub fn modes(
     let warnings = leg_warnings(&m);
     warn(path, &warnings);
     if as_json {
-        return Ok(json(&modes_json(&m, &modes, pose, selection, &warnings)));
+        return Ok(sorted_json(&modes_report(
+            &m, &modes, pose, selection, &warnings,
+        )));
     }
     let mut s = modes_header(&m, &modes, pose, selection);
     if let Selection::Lock(_) = selection {
@@ -167,41 +170,58 @@ pub fn sample_modes(
     })
 }
 
+/// The report of `kinsyn modes --json` (and of Python's `Manipulator.modes`): the sampled
+/// motions of [`Modes`] (the manipulator, its inputs, the sampling settings, the start
+/// configuration, every lock subset's motion and the patterns reached) with the request and
+/// the end-effector.
+///
+/// Printed through [`crate::sorted_value`]: its keys, those of [`Modes`] among them, come in
+/// alphabetical order, as they did when the report was built as a `serde_json` object, not in
+/// the order of these fields.
+#[derive(Debug, Clone, Serialize)]
+pub struct ModesReport<'a> {
+    /// The motions sampled, their fields at the top level of the report.
+    #[serde(flatten)]
+    pub modes: &'a Modes,
+    /// `--pose`: the start pose as given (`x,y,z,rx,ry,rz`, the description's length and
+    /// angle units), `null` for the reference configuration.
+    pub pose: Option<String>,
+    /// `--max-locks`: the most inputs locked in a subset sampled, `null` unless given.
+    pub max_locks: Option<usize>,
+    /// `--lock`: the one subset sampled, its labels space separated (`-` for none), `null`
+    /// unless given.
+    pub lock: Option<String>,
+    /// The leg warnings of the description (docs/mechanism-format.md, "Leg checks").
+    pub warnings: Vec<String>,
+    /// The name of the moving body whose motion the patterns describe.
+    pub end_effector: String,
+}
+
 /// The report of `kinsyn modes --json`: every sampled subset and pattern of `modes` (from
 /// [`sample_modes`]), with the request (start `pose`, `selection`), the leg `warnings` and the
 /// end-effector of `m`.
 #[must_use]
-pub fn modes_json(
+pub fn modes_report<'a>(
     m: &Manipulator,
-    modes: &Modes,
+    modes: &'a Modes,
     pose: Option<&str>,
     selection: &Selection,
     warnings: &[String],
-) -> serde_json::Value {
-    let mut value = serde_json::to_value(modes).unwrap_or_default();
-    if let Some(object) = value.as_object_mut() {
-        object.insert("pose".into(), serde_json::json!(pose));
-        object.insert(
-            "max_locks".into(),
-            serde_json::json!(match selection {
-                Selection::MaxLocks(k) => Some(k),
-                _ => None,
-            }),
-        );
-        object.insert(
-            "lock".into(),
-            serde_json::json!(match selection {
-                Selection::Lock(_) => modes.modes.first().map(|m| m.lock_text.clone()),
-                _ => None,
-            }),
-        );
-        object.insert("warnings".into(), serde_json::json!(warnings));
-        object.insert(
-            "end_effector".into(),
-            serde_json::json!(m.bodies()[m.end_effector()].name),
-        );
+) -> ModesReport<'a> {
+    ModesReport {
+        modes,
+        pose: pose.map(str::to_string),
+        max_locks: match selection {
+            Selection::MaxLocks(k) => Some(*k),
+            _ => None,
+        },
+        lock: match selection {
+            Selection::Lock(_) => modes.modes.first().map(|m| m.lock_text.clone()),
+            _ => None,
+        },
+        warnings: warnings.to_vec(),
+        end_effector: m.bodies()[m.end_effector()].name.clone(),
     }
-    value
 }
 
 /// The first lines of `modes`: the manipulator, its inputs, the subsets sampled and how, and
