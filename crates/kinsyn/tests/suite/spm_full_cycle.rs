@@ -409,7 +409,9 @@ fn singular_gives_hilbert_dimension_six_for_each_component() {
                 scope.spawn(move || singular::run(&script, "the exact check of paper 002 eq. 11"))
             })
             .collect();
-        runs.into_iter().map(|run| run.join().expect("a Singular run")).collect()
+        runs.into_iter()
+            .map(|run| run.join().expect("a Singular run"))
+            .collect()
     });
     for ((name, _), text) in cases.iter().zip(answers) {
         let Some(text) = text else {
