@@ -891,5 +891,29 @@ pub(super) enum SweepCommand {
     #[command(
         after_help = "Examples:\n  kinsyn sweep report results/\n  kinsyn sweep report results/designs.jsonl --top 10 --out ranking"
     )]
-    Report(super::sweep_report::ReportArgs),
+    Report(ReportArgs),
+}
+
+/// The most best designs `--top` keeps per number of inputs.
+pub const MAX_TOP: usize = 1000;
+
+/// `kinsyn sweep report`'s arguments.
+#[derive(Debug, clap::Args)]
+pub(super) struct ReportArgs {
+    /// A sweep's results: its folder (designs.jsonl is read there, and the settings from
+    /// sweep.json when present) or a .jsonl file of design rows.
+    pub(super) results: PathBuf,
+    /// The folder for report.md and the figures (created if missing, not its parent).
+    /// Default: report/ in the results folder (beside the .jsonl file when a file is given).
+    #[arg(long, value_name = "DIR")]
+    pub(super) out: Option<PathBuf>,
+    #[command(flatten)]
+    pub(super) force: Force,
+    /// The best designs kept per number of inputs.
+    #[arg(long, value_name = "K", default_value_t = 5,
+          value_parser = clap::value_parser!(u32).range(1..=MAX_TOP as i64))]
+    pub(super) top: u32,
+    /// Print the ranking as JSON instead of the text summary.
+    #[arg(long)]
+    pub(super) json: bool,
 }

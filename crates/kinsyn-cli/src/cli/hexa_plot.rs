@@ -3,7 +3,7 @@
 
 use super::args::HexaPlot;
 use super::output::OutputFolder;
-use super::plot::{draw_error, png, svg};
+use super::plot::{draw_error, png, register_font, svg};
 use super::{CliError, json, terminal};
 use kinsyn_papers::hexa::{
     Cylinder, Hexa, IndexMap, IndexMapSettings, Indices, Workspace, WorkspaceError,
@@ -21,20 +21,6 @@ use std::path::Path;
 fn hexa_geometry(file: &Path) -> Result<Hexa, CliError> {
     let d = super::manipulator::load_description(file)?;
     Hexa::from_description(&d).map_err(|e| CliError::Input(format!("{}: {e}", file.display())))
-}
-
-/// Registers `DejaVu` Sans as plotters' "sans-serif", once: the PNG figures' text needs no
-/// system font, and the SVG figures' text is measured with it.
-pub fn register_font() {
-    static ONCE: std::sync::Once = std::sync::Once::new();
-    ONCE.call_once(|| {
-        // The bytes are a valid font compiled in; a failure would only lose PNG text.
-        let _ = plotters::style::register_font(
-            "sans-serif",
-            FontStyle::Normal,
-            dejavu::sans::regular(),
-        );
-    });
 }
 
 /// A refusal of the workspace search as bad input.

@@ -133,7 +133,7 @@ fn usage_error(e: &clap::Error) -> String {
 )]
 fn execute(command: Command) -> Result<String, CliError> {
     if matches!(command, Command::Plot(_)) {
-        hexa_plot::register_font();
+        plot::register_font();
     }
     match command {
         Command::Notation { chain, json } => notation::notation(&chain, json),

@@ -31,6 +31,20 @@ fn table1() -> CornerPose {
     }
 }
 
+/// Registers `DejaVu` Sans as plotters' "sans-serif", once: the PNG figures' text needs no
+/// system font, and the SVG figures' text is measured with it.
+pub(super) fn register_font() {
+    static ONCE: std::sync::Once = std::sync::Once::new();
+    ONCE.call_once(|| {
+        // The bytes are a valid font compiled in; a failure would only lose PNG text.
+        let _ = plotters::style::register_font(
+            "sans-serif",
+            FontStyle::Normal,
+            dejavu::sans::regular(),
+        );
+    });
+}
+
 /// A figure that could not be drawn (in memory: a fault of the drawing, not of the input or
 /// of the files, which [`super::output`] reports).
 pub(super) fn draw_error(e: impl std::fmt::Display) -> CliError {

@@ -1,8 +1,9 @@
 //! `kinsyn sweep report`: the ranking of a sweep's designs ([`kinsyn::sweep::ranking`]) as a
 //! Markdown report with two figures (SVG and PNG), and a short summary on stdout.
 
+use super::args::ReportArgs;
 use super::output::OutputFolder;
-use super::plot::{draw_error, png, svg};
+use super::plot::{draw_error, png, register_font, svg};
 use super::{CliError, json, sweep};
 use kinsyn::markup;
 use kinsyn::sweep::DesignRow;
@@ -13,34 +14,10 @@ use std::fmt::Write as _;
 use std::path::PathBuf;
 use sweep::SweepRows;
 
-/// The most best designs `--top` keeps per number of inputs.
-pub const MAX_TOP: usize = 1000;
-
 /// The report's figures, each written as `NAME.svg` and `NAME.png`.
 const FIGURES: [&str; 2] = ["capacity-by-family", "capacity-vs-inputs"];
 /// The report's text.
 const MARKDOWN: &str = "report.md";
-
-/// `kinsyn sweep report`'s arguments.
-#[derive(Debug, clap::Args)]
-pub(super) struct ReportArgs {
-    /// A sweep's results: its folder (designs.jsonl is read there, and the settings from
-    /// sweep.json when present) or a .jsonl file of design rows.
-    results: PathBuf,
-    /// The folder for report.md and the figures (created if missing, not its parent).
-    /// Default: report/ in the results folder (beside the .jsonl file when a file is given).
-    #[arg(long, value_name = "DIR")]
-    out: Option<PathBuf>,
-    #[command(flatten)]
-    force: super::args::Force,
-    /// The best designs kept per number of inputs.
-    #[arg(long, value_name = "K", default_value_t = 5,
-          value_parser = clap::value_parser!(u32).range(1..=MAX_TOP as i64))]
-    top: u32,
-    /// Print the ranking as JSON instead of the text summary.
-    #[arg(long)]
-    json: bool,
-}
 
 /// `kinsyn sweep report RESULTS`: ranks the designs, writes the report and figures, and returns
 /// the summary (or the ranking as JSON).
@@ -62,7 +39,7 @@ pub(super) fn report(args: &ReportArgs) -> Result<String, CliError> {
         ),
         args.force.force,
     )?;
-    super::hexa_plot::register_font();
+    register_font();
     let mut figures = Vec::new();
     for (name, size) in FIGURES
         .into_iter()
