@@ -17,11 +17,12 @@ mod site;
 mod sweep_command;
 pub use sweep_command::parquet_bytes;
 mod sweep_report;
+mod terminal;
 
 /// The commands as functions (`kinsyn-report`), under the names the command's modules use.
 use kinsyn_report::{
     Error as CliError, components, configurable, json, list_or_none, manipulator, output, solve,
-    sorted_json, sweep, terminal,
+    sorted_json, sweep,
 };
 
 use args::{Cli, Command};

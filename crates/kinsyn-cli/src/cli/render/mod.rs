@@ -11,7 +11,7 @@ pub(super) mod modes;
 pub(super) mod solve;
 pub(super) mod sweep;
 
-use kinsyn_report::terminal;
+use super::terminal;
 use std::path::Path;
 
 /// Prints each warning on stderr as one line `warning: FILE: …`. Called once the command has
