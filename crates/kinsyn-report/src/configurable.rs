@@ -2,7 +2,7 @@
 //! paper's own formulas (`kinsyn_papers::configurable`), with the geometry of §5 (a = 80, b = 120,
 //! c = 120 mm, `A_i` at (±200, 0), (0, ±200) mm). Angles are in degrees at this interface.
 
-use crate::{Error, sorted_json};
+use crate::Error;
 use kinsyn_papers::configurable::trajectory::assemble;
 use kinsyn_papers::configurable::velocity::{Configuration, velocities};
 use kinsyn_papers::configurable::{
@@ -10,7 +10,6 @@ use kinsyn_papers::configurable::{
 };
 use nalgebra::{Vector2, Vector4};
 use serde::Serialize;
-use std::fmt::Write as _;
 
 /// Reads `n` comma-separated finite numbers for `option`.
 ///
@@ -47,34 +46,9 @@ fn inputs(text: &str) -> Result<[f64; 4], Error> {
     Ok(std::array::from_fn(|i| v[i].to_radians()))
 }
 
-/// A point `[x, y]` as text: `(x, y)`, three decimals.
-fn point([x, y]: [f64; 2]) -> String {
-    format!("({x:.3}, {y:.3})")
-}
-
 /// A point of the plane as `[x, y]`.
 fn xy(v: Vector2<f64>) -> [f64; 2] {
     [v.x, v.y]
-}
-
-/// `kinsyn configurable inverse`: the up to 16 input sets of a platform pose (§3.2), as text
-/// or as the `--json` report.
-///
-/// # Errors
-/// As [`inverse_report`].
-pub fn inverse(
-    centre: Option<&str>,
-    corner: Option<&str>,
-    theta: f64,
-    phi: f64,
-    as_json: bool,
-) -> Result<String, Error> {
-    let report = inverse_report(centre, corner, theta, phi)?;
-    Ok(if as_json {
-        sorted_json(&report)
-    } else {
-        report.text()
-    })
 }
 
 /// The report of `kinsyn configurable inverse (--centre X,Y | --c4 X,Y) --theta T --phi P`
@@ -90,9 +64,29 @@ pub struct InverseReport {
     /// The input sets that reach the pose (two elbows per leg), each `[q1, q2, q3, q4]`
     /// (degrees).
     pub q_deg: Vec<[f64; 4]>,
-    /// The text report's first line: the pose asked for.
+    /// The pose asked for, as given (not in the JSON).
     #[serde(skip)]
-    heading: String,
+    pub asked: InversePose,
+}
+
+/// The platform pose `kinsyn configurable inverse` was asked for.
+#[derive(Debug, Clone, Copy)]
+pub struct InversePose {
+    /// The point given: the centre or the corner C4 (mm).
+    pub given: GivenPoint,
+    /// θ (degrees; eq. 11's sense for the centre, eq. 13's for the corner).
+    pub theta_deg: f64,
+    /// φ (degrees, in the same sense as θ).
+    pub phi_deg: f64,
+}
+
+/// The point a platform pose is given by, `[x, y]` (mm).
+#[derive(Debug, Clone, Copy)]
+pub enum GivenPoint {
+    /// `--centre X,Y`: the platform's centre C.
+    Centre([f64; 2]),
+    /// `--c4 X,Y`: its corner C4.
+    Corner([f64; 2]),
 }
 
 /// The input sets of a platform pose given by its centre (`centre`, `--centre X,Y`) or its
@@ -110,7 +104,7 @@ pub fn inverse_report(
 ) -> Result<InverseReport, Error> {
     let m = Configurable::paper003();
     let (theta, phi) = (theta.to_radians(), phi.to_radians());
-    let (inverse, described) = match (centre, corner) {
+    let (inverse, given) = match (centre, corner) {
         (Some(text), None) => {
             let c = numbers("--centre", text, 2)?;
             let pose = CentrePose {
@@ -120,7 +114,7 @@ pub fn inverse_report(
             };
             (
                 m.inverse_centre_pose(&pose),
-                format!("centre C = ({}, {}) mm, θ, φ in eq. 11's sense", c[0], c[1]),
+                GivenPoint::Centre([c[0], c[1]]),
             )
         }
         (None, Some(text)) => {
@@ -132,10 +126,7 @@ pub fn inverse_report(
             };
             (
                 m.inverse_corner_pose(&pose),
-                format!(
-                    "corner C4 = ({}, {}) mm, θ, φ in eq. 13's sense",
-                    c[0], c[1]
-                ),
+                GivenPoint::Corner([c[0], c[1]]),
             )
         }
         _ => {
@@ -152,58 +143,11 @@ pub fn inverse_report(
             .iter()
             .map(|q| q.map(f64::to_degrees))
             .collect(),
-        heading: format!(
-            "paper 003 inverse position (§3.2): {described}, θ = {:.3}°, φ = {:.3}°",
-            theta.to_degrees(),
-            phi.to_degrees()
-        ),
-    })
-}
-
-impl InverseReport {
-    /// The text report of `kinsyn configurable inverse`.
-    #[must_use]
-    pub fn text(&self) -> String {
-        let mut out = String::new();
-        let _ = writeln!(out, "{}", self.heading);
-        let corners: Vec<String> = self
-            .corners
-            .iter()
-            .enumerate()
-            .map(|(i, c)| format!("C{} = {}", i + 1, point(*c)))
-            .collect();
-        let _ = writeln!(out, "corners: {}", corners.join(", "));
-        let _ = writeln!(
-            out,
-            "{} input sets (two elbows per leg), q1, q2, q3, q4 in degrees:",
-            self.q_deg.len()
-        );
-        for (k, q) in self.q_deg.iter().enumerate() {
-            let _ = writeln!(
-                out,
-                "  {:>2}  {:.3}, {:.3}, {:.3}, {:.3}",
-                k + 1,
-                q[0],
-                q[1],
-                q[2],
-                q[3]
-            );
-        }
-        out
-    }
-}
-
-/// `kinsyn configurable forward`: every assembly at the inputs `q_text` (degrees) by §3.2's
-/// method 1 or 2, as text or as the `--json` report.
-///
-/// # Errors
-/// As [`forward_report`].
-pub fn forward(q_text: &str, method: u8, as_json: bool) -> Result<String, Error> {
-    let report = forward_report(q_text, method)?;
-    Ok(if as_json {
-        sorted_json(&report)
-    } else {
-        report.text()
+        asked: InversePose {
+            given,
+            theta_deg: theta.to_degrees(),
+            phi_deg: phi.to_degrees(),
+        },
     })
 }
 
@@ -230,12 +174,12 @@ pub struct ForwardReport {
     pub runs: usize,
     /// The real assemblies: distinct corner sets, sorted by θ then φ.
     pub assemblies: Vec<ForwardAssembly>,
-    /// The text report's first line: the method and the inputs.
+    /// `--q` as given: the inputs (degrees; not in the JSON).
     #[serde(skip)]
-    heading: String,
-    /// The paths tracked over every run.
+    pub q_text: String,
+    /// The paths tracked over every run (not in the JSON).
     #[serde(skip)]
-    paths: usize,
+    pub paths: usize,
 }
 
 /// A real assembly of paper 003's 4-RRR.
@@ -296,73 +240,12 @@ pub fn forward_report(q_text: &str, method: u8) -> Result<ForwardReport, Error> 
                 closure_error: a.closure_error,
             })
             .collect(),
-        heading: format!(
-            "paper 003 forward position (§3.2, method {}) at q = {q_text} deg",
-            method.number()
-        ),
+        q_text: q_text.to_string(),
         paths: f
             .reports
             .iter()
             .map(kinsyn::homotopy::SolveReport::paths)
             .sum(),
-    })
-}
-
-impl ForwardReport {
-    /// The text report of `kinsyn configurable forward`.
-    #[must_use]
-    pub fn text(&self) -> String {
-        let mut out = String::new();
-        let _ = writeln!(out, "{}", self.heading);
-        let _ = writeln!(
-            out,
-            "{} complex solutions ({} real), {} distinct assemblies; {} run{} of the homotopy, {} paths{}",
-            self.complex_solutions,
-            self.real_solutions,
-            self.complex_assemblies,
-            self.runs,
-            if self.runs == 1 { "" } else { "s" },
-            self.paths,
-            if self.complete {
-                ""
-            } else {
-                " (some paths lost: the count may be short)"
-            }
-        );
-        let _ = writeln!(out, "real assemblies ({}):", self.assemblies.len());
-        for (k, a) in self.assemblies.iter().enumerate() {
-            let corners: Vec<String> = a.corners.iter().map(|c| point(*c)).collect();
-            let _ = writeln!(
-                out,
-                "  {}  C4 = {}, θ = {:.3}°, φ = {:.3}°; corners {}{}",
-                k + 1,
-                point(a.c4),
-                a.theta_deg,
-                a.phi_deg,
-                corners.join(" "),
-                if a.certified { " [certified]" } else { "" }
-            );
-        }
-        out
-    }
-}
-
-/// `kinsyn configurable velocity`: the corner velocities by screw theory (§4) at the assembly
-/// nearest a given pose (default Table 1's), as text or as the `--json` report.
-///
-/// # Errors
-/// As [`velocity_report`].
-pub fn velocity(
-    q_text: &str,
-    qdot_text: &str,
-    near: Option<&str>,
-    as_json: bool,
-) -> Result<String, Error> {
-    let report = velocity_report(q_text, qdot_text, near)?;
-    Ok(if as_json {
-        sorted_json(&report)
-    } else {
-        report.text()
     })
 }
 
@@ -388,9 +271,12 @@ pub struct VelocityReport {
     pub loop_rate: f64,
     /// The corners' velocities `Ċ1…Ċ4` (eq. 29), each `[ẋ, ẏ]` (mm/s).
     pub corner_velocities: Vec<[f64; 2]>,
-    /// The text report's first line: the inputs and their rates.
+    /// `--q` as given: the inputs (degrees; not in the JSON).
     #[serde(skip)]
-    heading: String,
+    pub q_text: String,
+    /// `--qdot` as given: the input rates (rad/s; not in the JSON).
+    #[serde(skip)]
+    pub qdot_text: String,
 }
 
 /// The velocities of paper 003's 4-RRR at the inputs `q_text` (`--q`, degrees) with the input
@@ -442,33 +328,7 @@ pub fn velocity_report(
         omega_m3: v.m3.w.z,
         loop_rate: v.loop_rate,
         corner_velocities: v.corners.iter().map(|c| [c.x, c.y]).collect(),
-        heading: format!(
-            "paper 003 velocities by screw theory (§4, eqs. 16–29) at q = {q_text} deg, q̇ = {qdot_text} rad/s"
-        ),
+        q_text: q_text.to_string(),
+        qdot_text: qdot_text.to_string(),
     })
-}
-
-impl VelocityReport {
-    /// The text report of `kinsyn configurable velocity`.
-    #[must_use]
-    pub fn text(&self) -> String {
-        let mut out = String::new();
-        let _ = writeln!(out, "{}", self.heading);
-        let _ = writeln!(
-            out,
-            "assembly: C4 = {}, θ = {:.5}°, φ = {:.5}°",
-            point(self.c4),
-            self.theta_deg,
-            self.phi_deg
-        );
-        let _ = writeln!(
-            out,
-            "ω(m1) = ω(m3) = {:.6} rad/s (eq. 27), loop rate m1ωm2 = {:.6} rad/s",
-            self.omega_m1, self.loop_rate
-        );
-        for (i, [x, y]) in self.corner_velocities.iter().enumerate() {
-            let _ = writeln!(out, "  Ċ{} = ({x:.4}, {y:.4}) mm/s", i + 1);
-        }
-        out
-    }
 }

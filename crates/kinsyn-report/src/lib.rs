@@ -1,39 +1,45 @@
 //! kinsyn's commands as functions, shared by its two front ends (the command line,
 //! `kinsyn-cli`, and the Python package, `kinsyn-py`): a request checked, the work run by the
-//! library (`kinsyn`, `kinsyn-papers`), and the result as a report (the `--json` value, or the
-//! text a terminal shows), with failures as one [`Error`] whose message is one line. The front
-//! ends only turn arguments into requests and reports into output (text and JSON on stdout,
-//! Python objects and exceptions), so that both read the same files, compute the same reports
-//! and refuse bad input with the same words.
+//! library (`kinsyn`, `kinsyn-papers`), and the result as a typed report, with failures as one
+//! [`Error`] whose message is one line and warnings as data (one line each). What a report
+//! contains is decided here; how it is printed is the front end's: the command line writes
+//! the text a terminal shows and the `--json` text from these values, Python turns them into
+//! objects and exceptions, so that both read the same files, compute the same reports and
+//! refuse bad input with the same words.
 //!
 //! - files: [`files::read_text`] (and [`files::read_text_within`],
 //!   [`files::read_bytes_within`], [`files::check_file`] with a [`files::SizeLimit`]),
 //!   [`manipulator::parse_description`];
 //! - errors: [`Error`], [`terminal::one_line`];
 //! - `kinsyn build`: [`manipulator::build_checked`], [`manipulator::build_flag`];
-//! - `kinsyn analyze`: [`manipulator::analyse_placed`] and [`manipulator::Analyzed::report`]
-//!   (a [`manipulator::AnalyzeReport`]);
-//! - `kinsyn modes`: [`manipulator::sample_modes`] and [`manipulator::modes_report`] (a
-//!   [`manipulator::ModesReport`]);
-//! - `kinsyn analyze --all-assemblies`: [`manipulator::all_assemblies_of`] and
-//!   [`manipulator::AllAssemblies::report`] (a [`manipulator::AssembliesReport`]);
+//! - `kinsyn analyze`: [`manipulator::analyze`] (a file read, a [`manipulator::Loaded`]),
+//!   [`manipulator::analyse_placed`] and [`manipulator::Analyzed::report`] (a
+//!   [`manipulator::AnalyzeReport`]);
+//! - `kinsyn modes`: [`manipulator::modes`], [`manipulator::sample_modes`] and
+//!   [`manipulator::modes_report`] (a [`manipulator::ModesReport`]);
+//! - `kinsyn analyze --all-assemblies`: [`manipulator::all_assemblies`],
+//!   [`manipulator::all_assemblies_of`] and [`manipulator::AllAssemblies::report`] (a
+//!   [`manipulator::AssembliesReport`]);
 //! - `--body`, `--relative-to`, `--legs`: [`manipulator::select_body`],
 //!   [`manipulator::parse_description_legs`];
-//! - `kinsyn solve`: [`solve::solve_system`] and [`solve::Solved::json`];
+//! - `kinsyn solve`: [`solve::solve`], [`solve::solve_system`] (a [`solve::Solved`]) and
+//!   [`solve::Solved::json`];
 //! - `kinsyn configurable inverse|forward|velocity`: [`configurable::inverse_report`],
 //!   [`configurable::forward_report`], [`configurable::velocity_report`];
 //! - `kinsyn components`: [`components::components_of`] with [`components::ComponentsOptions`]
-//!   and [`components::Components::report`] (a [`components::ComponentsReport`]);
+//!   (a [`components::Components`]) and [`components::Components::report`] (a
+//!   [`components::ComponentsReport`]);
 //!
 //! The reports are typed values (`#[derive(Serialize)]` structs, each field documented with
 //! its meaning and unit): the front ends print them as JSON with [`sorted_json`] (the command)
-//! or hand them to Python as the text of [`sorted_value`], and the command's text output is
-//! written from the same values or the results behind them.
+//! or hand them to Python as the text of [`sorted_value`]; the command's text output is
+//! written by the command line from the same values.
 //! - `kinsyn sweep` and `kinsyn sweep merge`: [`sweep`] (the run, the merge, the files'
 //!   readers and writers; `designs.parquet` is encoded by the front end, [`sweep::Table`]).
 //!
 //! This crate depends on no command-line parser, plotting or file-format crate: what only
-//! the command needs (argument grammar, figures, the Parquet encoder) is in `kinsyn-cli`.
+//! the command needs (argument grammar, text rendering, figures, the Parquet encoder) is in
+//! `kinsyn-cli`.
 
 #![deny(missing_docs)]
 

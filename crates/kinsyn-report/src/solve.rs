@@ -1,12 +1,11 @@
 //! `kinsyn solve`: every isolated solution of a polynomial system in a Bertini input file, by
 //! homotopy continuation, certified.
 
-use crate::{Error, json, terminal};
+use crate::{Error, terminal};
 use kinsyn::certify::Reality;
-use kinsyn::homotopy::{self, RunsReport, Solution, SolveReport, SolveSettings, StartSystem};
+use kinsyn::homotopy::{self, RunsReport, Solution, SolveSettings, StartSystem};
 use kinsyn::poly::{C64, System, bertini};
 use serde::Serialize;
-use std::fmt::Write as _;
 use std::path::Path;
 
 /// Which solutions the text lists.
@@ -73,12 +72,14 @@ fn parse_input(text: &str, source: &str) -> Result<bertini::BertiniInput, Error>
 }
 
 /// `n word` or `n words`.
-fn count(n: usize, word: &str) -> String {
+#[must_use]
+pub fn count(n: usize, word: &str) -> String {
     format!("{n} {word}{}", if n == 1 { "" } else { "s" })
 }
 
 /// A path count as text: the number, or "more than 10^38" when it saturated (at `u128::MAX`).
-pub(crate) fn paths_text(n: u128) -> String {
+#[must_use]
+pub fn paths_text(n: u128) -> String {
     if n == u128::MAX {
         "more than 10^38".into()
     } else {
@@ -88,7 +89,8 @@ pub(crate) fn paths_text(n: u128) -> String {
 
 /// The multi-homogeneous count as text: [`paths_text`], or "not counted" when the variable
 /// groups are too many to count ([`kinsyn::poly::multihomogeneous::MAX_GROUP_STATES`]).
-fn multihomogeneous_text(system: &System) -> String {
+#[must_use]
+pub fn multihomogeneous_text(system: &System) -> String {
     system
         .multihomogeneous_bezout()
         .map_or_else(|| "not counted".into(), paths_text)
@@ -294,38 +296,28 @@ pub fn solve_with_bar(
     Ok(homotopy::combine_runs(reports))
 }
 
-/// `kinsyn solve FILE`.
+/// `kinsyn solve FILE`: the system of the Bertini input file at `path`, solved as `options`
+/// say ([`solve_system`]).
 ///
 /// # Errors
 /// As [`read_input`], [`check_cost`] and [`solve_with_bar`].
-pub fn solve(path: &Path, options: &SolveOptions, as_json: bool) -> Result<String, Error> {
+pub fn solve(path: &Path, options: &SolveOptions) -> Result<Solved, Error> {
     let text = crate::files::read_text(path, NOT_BERTINI)?;
-    let solved = solve_system(&text, &path.display().to_string(), options)?;
-    if options.start == StartSystem::MultiHomogeneous && solved.system.groups().len() < 2 {
-        crate::terminal::warning(&format!(
-            "{}: one variable group: the multi-homogeneous start system is the total-degree count",
-            path.display()
-        ));
-    }
-    if as_json {
-        Ok(json(&solved.json()))
-    } else {
-        Ok(text_report(&solved))
-    }
+    solve_system(&text, &path.display().to_string(), options)
 }
 
 /// A system solved as `kinsyn solve` solves it.
 pub struct Solved {
     /// The file's name, or what stands for it.
-    source: String,
+    pub source: String,
     /// The system solved.
-    system: System,
+    pub system: System,
     /// The options it was solved with.
-    options: SolveOptions,
+    pub options: SolveOptions,
     /// The worker threads.
-    threads: usize,
+    pub threads: usize,
     /// Every run.
-    runs: RunsReport,
+    pub runs: RunsReport,
 }
 
 /// Every isolated solution of the polynomial system of the Bertini input `text` (`source`
@@ -375,6 +367,20 @@ pub fn solve_system(text: &str, source: &str, options: &SolveOptions) -> Result<
 }
 
 impl Solved {
+    /// The warnings of the solve, one line each, without the file's name: a multi-homogeneous
+    /// start system asked for a system of one variable group.
+    #[must_use]
+    pub fn warnings(&self) -> Vec<String> {
+        if self.options.start == StartSystem::MultiHomogeneous && self.system.groups().len() < 2 {
+            vec![
+                "one variable group: the multi-homogeneous start system is the total-degree count"
+                    .to_string(),
+            ]
+        } else {
+            Vec::new()
+        }
+    }
+
     /// The report of `kinsyn solve --json`.
     #[must_use]
     pub fn json(&self) -> impl Serialize + use<'_> {
@@ -386,17 +392,6 @@ impl Solved {
             &self.runs,
         )
     }
-}
-
-/// The text report of `kinsyn solve`.
-fn text_report(solved: &Solved) -> String {
-    text(
-        &solved.source,
-        &solved.system,
-        &solved.options,
-        solved.threads,
-        &solved.runs,
-    )
 }
 
 /// A complex number as text: `1.2345678901` or `1.2345678901 - 0.5000000000i`.
@@ -414,138 +409,16 @@ pub fn complex_text(c: C64) -> String {
     }
 }
 
-fn reality(s: &Solution) -> &'static str {
+/// What a regular solution is known to be: `real`, `non-real` (both certified), or `real (not
+/// proven)`, `complex (not proven)`.
+#[must_use]
+pub fn reality(s: &Solution) -> &'static str {
     match s.certificate.as_ref().map(|c| c.real) {
         Some(Reality::CertifiedReal) => "real",
         Some(Reality::CertifiedNonReal) => "non-real",
         _ if s.real => "real (not proven)",
         _ => "complex (not proven)",
     }
-}
-
-/// The certificate counts in one line.
-#[must_use]
-pub fn certificate_line(report: &SolveReport) -> String {
-    let regular = report.nonsingular();
-    let non_real = report
-        .solutions
-        .iter()
-        .filter(|s| {
-            s.is_certified()
-                && s.certificate
-                    .as_ref()
-                    .is_some_and(|c| c.real == Reality::CertifiedNonReal)
-        })
-        .count();
-    format!(
-        "certified (Krawczyk, interval arithmetic): {} of {regular} non-singular solutions unique and distinct, {} proven real, {non_real} proven non-real",
-        report.certified(),
-        report.certified_real()
-    )
-}
-
-fn text(
-    path: &str,
-    system: &System,
-    options: &SolveOptions,
-    threads: usize,
-    runs: &RunsReport,
-) -> String {
-    let report = &runs.runs[0];
-    let mut out = String::new();
-    let _ = writeln!(
-        out,
-        "{}: {} in {} ({})",
-        path,
-        count(system.len(), "equation"),
-        count(system.nvars(), "variable"),
-        system.variables().join(", ")
-    );
-    let _ = writeln!(
-        out,
-        "start system: {}, {} paths (Bézout number {}, multi-homogeneous {} for {} variable group{}), seed {}",
-        match options.start {
-            StartSystem::TotalDegree => "total degree",
-            StartSystem::MultiHomogeneous => "multi-homogeneous",
-        },
-        report.paths(),
-        paths_text(system.bezout_number()),
-        multihomogeneous_text(system),
-        system.groups().len(),
-        if system.groups().len() == 1 { "" } else { "s" },
-        options.seed
-    );
-    let _ = writeln!(out, "{}", report.summary());
-    if options.certify {
-        let _ = writeln!(out, "{}", certificate_line(report));
-    }
-    if runs.runs.len() > 1 {
-        let _ = writeln!(
-            out,
-            "runs: {} independent runs (seeds {}–{}) found {} distinct non-singular solutions; {} of {} runs found all of them",
-            runs.runs.len(),
-            options.seed,
-            options.seed.wrapping_add(runs.runs.len() as u64 - 1),
-            runs.union.len(),
-            runs.complete_count(),
-            runs.runs.len()
-        );
-    }
-    if report.retracked > 0 {
-        let _ = writeln!(
-            out,
-            "re-tracked: {} paths (coinciding endpoints or failures)",
-            report.retracked
-        );
-    }
-    let _ = writeln!(
-        out,
-        "time: {:.3} s on {threads} thread{}",
-        report.seconds,
-        if threads == 1 { "" } else { "s" }
-    );
-    let listed: Vec<&Solution> = match options.show {
-        Show::None => Vec::new(),
-        Show::Real => report
-            .solutions
-            .iter()
-            .filter(|s| s.regular && s.real)
-            .collect(),
-        Show::All => report.solutions.iter().collect(),
-    };
-    if !listed.is_empty() {
-        let _ = writeln!(
-            out,
-            "{} solutions ({}):",
-            if options.show == Show::Real {
-                "real"
-            } else {
-                "finite"
-            },
-            listed.len()
-        );
-    }
-    for (k, s) in listed.iter().enumerate() {
-        let coordinates: Vec<String> = system
-            .variables()
-            .iter()
-            .zip(&s.x)
-            .map(|(n, c)| format!("{n} = {}", complex_text(*c)))
-            .collect();
-        let kind = if s.regular {
-            reality(s).to_string()
-        } else {
-            format!("singular, multiplicity {}", s.multiplicity)
-        };
-        let _ = writeln!(
-            out,
-            "  {:>3}  {}  [{kind}; residual {:.1e}]",
-            k + 1,
-            coordinates.join(", "),
-            s.residual
-        );
-    }
-    out
 }
 
 /// `kinsyn solve --json`.

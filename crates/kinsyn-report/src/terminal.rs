@@ -1,7 +1,7 @@
-//! What reaches the user: results on stdout that stop quietly when the reader goes away, and
-//! errors and warnings on stderr that are always one line and never drive the terminal.
-
-use std::io::{self, Write};
+//! What the commands show while they work, and the one-line form of their messages: progress
+//! bars and a spinner on stderr (drawn only on a terminal), and [`one_line`], which errors and
+//! warnings pass through (the command line prints them, `kinsyn-cli`'s `terminal`; Python
+//! raises them).
 
 /// `message` made safe for one line of a terminal: line breaks, escape sequences and every
 /// other control or bidirectional-formatting character are written as Rust escapes (`\n`,
@@ -10,25 +10,6 @@ use std::io::{self, Write};
 #[must_use]
 pub fn one_line(message: &str) -> String {
     kinsyn::markup::visible(message).into_owned()
-}
-
-/// Writes `text` to stdout, every line made safe for a terminal: the line breaks and tabs
-/// that lay it out kept, every other control or bidirectional-formatting character written as
-/// its Rust escape ([`kinsyn::markup::visible_lines`]), so that a name, id or path read from a
-/// file cannot drive the terminal. JSON reaches here already escaped
-/// ([`kinsyn::markup::json_visible`]) and passes unchanged. A reader that has gone away
-/// (`kinsyn … | head`) is not an error: the command ends quietly, as the conventional SIGPIPE
-/// behaviour would.
-///
-/// # Errors
-/// The write's error when stdout is closed other than by the reader going away.
-pub fn print(text: &str) -> io::Result<()> {
-    let shown = kinsyn::markup::visible_lines(text);
-    let mut out = io::stdout().lock();
-    match out.write_all(shown.as_bytes()).and_then(|()| out.flush()) {
-        Err(e) if e.kind() == io::ErrorKind::BrokenPipe => Ok(()),
-        other => other,
-    }
 }
 
 /// Runs `work` with a spinner and `message` on stderr, shown only when stderr is a terminal
@@ -54,19 +35,4 @@ pub fn progress(count: usize, unit: &str, message: &str) -> indicatif::ProgressB
     }
     bar.set_message(message.to_string());
     bar
-}
-
-/// Prints `kinsyn: error: MESSAGE` as one line on stderr.
-pub fn error(message: &str) {
-    line(&format!("kinsyn: error: {}", one_line(message)));
-}
-
-/// Prints `warning: MESSAGE` as one line on stderr.
-pub fn warning(message: &str) {
-    line(&format!("warning: {}", one_line(message)));
-}
-
-/// One line on stderr; a closed stderr is ignored (there is nowhere left to report it).
-fn line(text: &str) {
-    let _ = writeln!(io::stderr().lock(), "{text}");
 }

@@ -12,15 +12,17 @@ mod export;
 mod hexa_plot;
 mod notation;
 mod plot;
+mod render;
 mod site;
 mod sweep_command;
 pub use sweep_command::parquet_bytes;
 mod sweep_report;
+mod terminal;
 
 /// The commands as functions (`kinsyn-report`), under the names the command's modules use.
 use kinsyn_report::{
     Error as CliError, components, configurable, json, list_or_none, manipulator, output, solve,
-    sweep, terminal,
+    sorted_json, sweep,
 };
 
 use args::{Cli, Command};
@@ -162,15 +164,27 @@ fn execute(command: Command) -> Result<String, CliError> {
                 (None, Some(k)) => manipulator::Selection::MaxLocks(k),
                 (None, None) => manipulator::Selection::All,
             };
-            manipulator::modes(
+            let loaded = manipulator::modes(
                 &file,
                 (pose.as_deref(), body.as_deref(), relative_to.as_deref()),
                 legs.as_deref(),
                 &selection,
                 max_subsets,
                 &sampling.settings(),
-                as_json,
-            )
+            )?;
+            render::warn(&file, &loaded.warnings);
+            let (m, modes) = (&loaded.manipulator, &loaded.result);
+            Ok(if as_json {
+                sorted_json(&manipulator::modes_report(
+                    m,
+                    modes,
+                    pose.as_deref(),
+                    &selection,
+                    &loaded.warnings,
+                ))
+            } else {
+                render::modes::text(m, modes, pose.as_deref(), &selection)
+            })
         }
         Command::Analyze {
             file,
@@ -180,7 +194,17 @@ fn execute(command: Command) -> Result<String, CliError> {
             seed,
             json: as_json,
             ..
-        } => manipulator::all_assemblies(&file, inputs.as_deref(), body.as_deref(), seed, as_json),
+        } => {
+            let loaded =
+                manipulator::all_assemblies(&file, inputs.as_deref(), body.as_deref(), seed)?;
+            render::warn(&file, &loaded.warnings);
+            let (m, all) = (&loaded.manipulator, &loaded.result);
+            Ok(if as_json {
+                sorted_json(&all.report(m, &loaded.warnings))
+            } else {
+                render::assemblies::text(m, all, &file)
+            })
+        }
         Command::Analyze {
             file,
             pose,
@@ -195,24 +219,33 @@ fn execute(command: Command) -> Result<String, CliError> {
             seed,
             json: as_json,
             ..
-        } => manipulator::analyze(
-            &file,
-            &manipulator::Placement {
-                pose: pose.as_deref(),
-                inputs: inputs.as_deref(),
-                from: from.as_deref(),
-                body: body.as_deref(),
-                study: &study,
-                nearest: nearest.then_some(rounding),
-                relative_to: relative_to.as_deref(),
-            },
-            lock.as_deref(),
-            &kinsyn::mechanism::SampleSettings {
-                seed,
-                ..Default::default()
-            },
-            as_json,
-        ),
+        } => {
+            let loaded = manipulator::analyze(
+                &file,
+                &manipulator::Placement {
+                    pose: pose.as_deref(),
+                    inputs: inputs.as_deref(),
+                    from: from.as_deref(),
+                    body: body.as_deref(),
+                    study: &study,
+                    nearest: nearest.then_some(rounding),
+                    relative_to: relative_to.as_deref(),
+                },
+                lock.as_deref(),
+                &kinsyn::mechanism::SampleSettings {
+                    seed,
+                    ..Default::default()
+                },
+            )?;
+            render::warn(&file, &loaded.warnings);
+            let m = &loaded.manipulator;
+            let report = loaded.result.report(m, &loaded.warnings);
+            Ok(if as_json {
+                sorted_json(&report)
+            } else {
+                render::analyze::text(m, &report)
+            })
+        }
         Command::Build {
             spec,
             output,
@@ -228,19 +261,26 @@ fn execute(command: Command) -> Result<String, CliError> {
             show,
             no_certify,
             json: as_json,
-        } => solve::solve(
-            &file,
-            &solve::SolveOptions {
-                start: start.into(),
-                seed,
-                runs,
-                threads,
-                max_paths,
-                certify: !no_certify,
-                show: show.into(),
-            },
-            as_json,
-        ),
+        } => {
+            let solved = solve::solve(
+                &file,
+                &solve::SolveOptions {
+                    start: start.into(),
+                    seed,
+                    runs,
+                    threads,
+                    max_paths,
+                    certify: !no_certify,
+                    show: show.into(),
+                },
+            )?;
+            render::warn(&file, &solved.warnings());
+            Ok(if as_json {
+                json(&solved.json())
+            } else {
+                render::solve::text(&solved)
+            })
+        }
         Command::Components {
             file,
             inputs,
@@ -249,17 +289,23 @@ fn execute(command: Command) -> Result<String, CliError> {
             seed,
             max_paths,
             json: as_json,
-        } => components::components(
-            &file,
-            &components::ComponentsOptions {
-                seed,
-                method: method.into(),
-                inputs,
-                free_inputs,
-                max_paths,
-            },
-            as_json,
-        ),
+        } => {
+            let c = components::components_of(
+                &file,
+                &components::ComponentsOptions {
+                    seed,
+                    method: method.into(),
+                    inputs,
+                    free_inputs,
+                    max_paths,
+                },
+            )?;
+            Ok(if as_json {
+                sorted_json(&c.report())
+            } else {
+                render::components::text(&c)
+            })
+        }
         Command::Configurable(c) => match c {
             args::ConfigurableCommand::Inverse {
                 centre,
@@ -267,18 +313,39 @@ fn execute(command: Command) -> Result<String, CliError> {
                 theta,
                 phi,
                 json: as_json,
-            } => configurable::inverse(centre.as_deref(), c4.as_deref(), theta, phi, as_json),
+            } => {
+                let r = configurable::inverse_report(centre.as_deref(), c4.as_deref(), theta, phi)?;
+                Ok(if as_json {
+                    sorted_json(&r)
+                } else {
+                    render::configurable::inverse(&r)
+                })
+            }
             args::ConfigurableCommand::Forward {
                 q,
                 method,
                 json: as_json,
-            } => configurable::forward(&q, method, as_json),
+            } => {
+                let r = configurable::forward_report(&q, method)?;
+                Ok(if as_json {
+                    sorted_json(&r)
+                } else {
+                    render::configurable::forward(&r)
+                })
+            }
             args::ConfigurableCommand::Velocity {
                 q,
                 qdot,
                 near,
                 json: as_json,
-            } => configurable::velocity(&q, &qdot, near.as_deref(), as_json),
+            } => {
+                let r = configurable::velocity_report(&q, &qdot, near.as_deref())?;
+                Ok(if as_json {
+                    sorted_json(&r)
+                } else {
+                    render::configurable::velocity(&r)
+                })
+            }
         },
         Command::Plot(args::PlotCommand::Inverse {
             out,

@@ -1,13 +1,11 @@
-//! `kinsyn sweep` and `kinsyn sweep merge` as the command runs them: the reports as text, and
+//! `kinsyn sweep` and `kinsyn sweep merge` as the command runs them (their text in
+//! `render::sweep`), and
 //! `designs.parquet`, the rows of a sweep as one flat table (docs/sweep.md lists the columns)
 //! with the sweep's manifest in the file's key-value metadata, encoded by the Parquet crate's
 //! Arrow writer.
 
-use super::sweep::{
-    CHECKPOINT, JSONL, MANIFEST, Manifest, PARQUET, Request, SweepOutcome, merge, outcome_json,
-    run_request,
-};
-use super::{CliError, json};
+use super::sweep::{Manifest, Request, merge, outcome_json, run_request};
+use super::{CliError, json, render};
 use arrow_array::builder::{ListBuilder, StringBuilder, UInt32Builder};
 use arrow_array::{ArrayRef, RecordBatch, StringArray, UInt32Array};
 use kinsyn::sweep::DesignRow;
@@ -15,7 +13,6 @@ use parquet::arrow::ArrowWriter;
 use parquet::basic::Compression;
 use parquet::file::metadata::KeyValue;
 use parquet::file::properties::WriterProperties;
-use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
@@ -138,61 +135,7 @@ pub(super) fn command(
     if as_json {
         return Ok(json(&outcome_json(&outcome)));
     }
-    Ok(summary(&outcome, bench))
-}
-
-/// The text report of a run, with `--bench`'s figures.
-fn summary(o: &SweepOutcome, bench: bool) -> String {
-    let m = &o.manifest;
-    let shard = m.shard.map_or_else(String::new, |s| format!(", shard {s}"));
-    let what = format!(
-        "{} designs of {} ({}; {} legs, {} actuated per leg, seed {}{shard})",
-        m.designs,
-        m.sweep_designs,
-        m.selection,
-        m.settings.legs,
-        m.settings
-            .actuated_per_leg
-            .iter()
-            .map(ToString::to_string)
-            .collect::<Vec<_>>()
-            .join(" or "),
-        m.settings.sampling.seed,
-    );
-    if o.already_complete {
-        return format!(
-            "{}: already complete with {what}; nothing rewritten\n",
-            o.out
-        );
-    }
-    let mut s = format!(
-        "{}: {what}: {} evaluated, resumed {} rows, {} errors; ",
-        o.out, o.evaluated, o.resumed, o.errors
-    );
-    if o.complete {
-        let _ = writeln!(s, "complete: {JSONL}, {PARQUET}, {MANIFEST}");
-    } else {
-        let _ = writeln!(
-            s,
-            "stopped with {} of {} rows in {CHECKPOINT}; run the same command again to resume",
-            o.resumed + o.evaluated,
-            m.designs
-        );
-    }
-    if bench {
-        let _ = writeln!(s, "designs evaluated      {}", o.evaluated);
-        let _ = writeln!(s, "lock subsets sampled   {}", o.lock_subsets);
-        let _ = writeln!(s, "wall seconds           {:.3}", o.seconds);
-        let _ = writeln!(s, "designs/s              {:.2}", o.designs_per_second());
-        let _ = writeln!(
-            s,
-            "subsets per core-s     {:.1}",
-            o.subsets_per_core_second()
-        );
-        let _ = writeln!(s, "threads                {}", o.threads);
-        let _ = writeln!(s, "writing ms             {:.1}", o.write_ms);
-    }
-    s
+    Ok(render::sweep::run(&outcome, bench))
 }
 
 /// `kinsyn sweep merge DIR… --out OUT [--force]`.
@@ -206,11 +149,5 @@ pub(super) fn merge_command(
     if as_json {
         return Ok(json(&manifest));
     }
-    Ok(format!(
-        "{}: merged {} shards: {} designs ({}); {JSONL}, {PARQUET}, {MANIFEST}\n",
-        out.display(),
-        dirs.len(),
-        manifest.designs,
-        manifest.selection
-    ))
+    Ok(render::sweep::merged(out, dirs.len(), &manifest))
 }

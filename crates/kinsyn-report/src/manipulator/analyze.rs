@@ -1,12 +1,12 @@
 //! `kinsyn analyze`: a configuration placed by pose, input values and start, and its mobility,
-//! Jacobians, ranks and singularities as text or JSON.
+//! Jacobians, ranks and singularities as a typed report (printed by the front ends).
 
-use super::{clean, leg_warnings, load_with_body, warn};
-use crate::{Error, sorted_json};
+use super::{Loaded, leg_warnings, load_with_body};
+use crate::Error;
 use kinsyn::manipulator::file::{AngleUnit, Units};
 use kinsyn::manipulator::{
     Analysis, ContinuationFailure, Manipulator, ManipulatorError, PRINTED_STUDY_TOLERANCE,
-    PositionError, PositionRequest, RowKind, Singularity, rank_text,
+    PositionError, PositionRequest, RowKind, Singularity,
 };
 use kinsyn::mechanism::SampleSettings;
 use kinsyn::screw::{self, DEFAULT_RANK_TOLERANCE};
@@ -14,7 +14,6 @@ use kinsyn::spatial::study::StudyParameters;
 use nalgebra::DMatrix;
 use serde::Serialize;
 use std::collections::BTreeMap;
-use std::fmt::Write as _;
 use std::path::Path;
 
 /// The platform pose of `--pose TEXT` (or another option named `option`) for `m`, assembled
@@ -81,7 +80,8 @@ struct Reached {
     continuous: bool,
 }
 
-/// `kinsyn analyze`.
+/// `kinsyn analyze`: the manipulator of the file at `path` (with `placement`'s end-effector
+/// and reference body), the configuration `placement` asks for analysed, and the leg warnings.
 ///
 /// # Errors
 /// [`Error::Input`] for a file that is not a description, a pose or inputs that do not read or do not assemble, or options out of range.
@@ -90,16 +90,15 @@ pub fn analyze(
     placement: &Placement<'_>,
     lock: Option<&str>,
     settings: &SampleSettings,
-    as_json: bool,
-) -> Result<String, Error> {
+) -> Result<Loaded<Analyzed>, Error> {
     let m = load_with_body(path, placement.body, placement.relative_to, None)?;
     let analyzed = analyse_placed(&m, placement, lock, settings)?;
     let warnings = leg_warnings(&m);
-    warn(path, &warnings);
-    if as_json {
-        return Ok(sorted_json(&analyzed.report(&m, &warnings)));
-    }
-    Ok(analyzed.study_lines.clone() + &analysis_text(&m, &analyzed.analysis, &analyzed.reached))
+    Ok(Loaded {
+        manipulator: m,
+        result: analyzed,
+        warnings,
+    })
 }
 
 /// A configuration placed as `kinsyn analyze` places it, and its analysis.
@@ -108,8 +107,6 @@ pub struct Analyzed {
     pub analysis: Analysis,
     /// How the configuration was reached.
     reached: Reached,
-    /// The text report's lines on `--study`.
-    study_lines: String,
     /// The report's `study` entries.
     study: Vec<StudyReport>,
 }
@@ -177,10 +174,9 @@ pub fn analyse_placed(
                 .map_err(|e| Error::Input(format!("--pose {text:?}: {e}")))?,
         );
     }
-    let mut study_lines = String::new();
     let mut study = Vec::new();
     let (q, steps, continuous) = if !placement.study.is_empty() {
-        let q = study_configuration(m, placement, &start, &mut study_lines, &mut study)?;
+        let q = study_configuration(m, placement, &start, &mut study)?;
         (q, 0, true)
     } else if request.inputs.is_empty() && request.platform.is_none() {
         (start, 0, true)
@@ -206,18 +202,16 @@ pub fn analyse_placed(
     Ok(Analyzed {
         analysis: a,
         reached,
-        study_lines,
         study,
     })
 }
 
 /// `--study` (with `--nearest`): the configuration of the Study poses reached from `start`,
-/// with the report's lines and entries.
+/// with the report's entries.
 fn study_configuration(
     m: &Manipulator,
     placement: &Placement<'_>,
     start: &[f64],
-    study_lines: &mut String,
     study: &mut Vec<StudyReport>,
 ) -> Result<Vec<f64>, Error> {
     let sets = placement
@@ -227,11 +221,6 @@ fn study_configuration(
         .collect::<Result<Vec<_>, _>>()?;
     for (body, s) in m.bodies().iter().zip(&sets) {
         let residual = kinsyn::spatial::study::relative_quadric_residual(s);
-        let _ = writeln!(
-            study_lines,
-            "--study {:?}: relative Study quadric residual |x·y|/(|x| |y|) = {residual:.3e} (tolerance {:.0e}, values printed to two decimals)",
-            body.name, PRINTED_STUDY_TOLERANCE
-        );
         study.push(StudyReport {
             body: body.name.clone(),
             parameters: *s,
@@ -241,7 +230,7 @@ fn study_configuration(
         });
     }
     if let Some(rounding) = placement.nearest {
-        nearest_study(m, start, &sets, rounding, study_lines, study)
+        nearest_study(m, start, &sets, rounding, study)
     } else {
         let frames = m
             .frames_from_study(&sets, PRINTED_STUDY_TOLERANCE)
@@ -255,15 +244,14 @@ fn study_configuration(
     }
 }
 
-/// `--study … --nearest`: the assembly nearest to the Study poses, with a line and a report
-/// entry per body on how far it moved (the file's units) and how far the rounding explains;
-/// refused in one line when a body moved further.
+/// `--study … --nearest`: the assembly nearest to the Study poses, with a report entry per
+/// body on how far it moved (the file's units) and how far the rounding explains; refused in
+/// one line when a body moved further.
 fn nearest_study(
     m: &Manipulator,
     start: &[f64],
     sets: &[kinsyn::spatial::study::StudyParameters],
     rounding: f64,
-    lines: &mut String,
     entries: &mut [StudyReport],
 ) -> Result<Vec<f64>, Error> {
     if !(rounding.is_finite() && rounding > 0.0) {
@@ -299,14 +287,6 @@ fn nearest_study(
     let mut moved = Vec::new();
     for c in &nearest.changes {
         let name = &m.bodies()[c.body].name;
-        let _ = writeln!(
-            lines,
-            "--nearest {name:?}: moved {:.3e} {length} and {:.3e} {angle_name} from its --study pose (rounding each parameter by {rounding} explains up to {:.3e} {length} and {:.3e} {angle_name})",
-            c.translation,
-            angle.from_radians(c.rotation),
-            c.translation_bound,
-            angle.from_radians(c.rotation_bound),
-        );
         moved.push(NearestReport {
             body: name.clone(),
             translation: c.translation,
@@ -358,29 +338,6 @@ fn relative_motion(m: &Manipulator, a: &Analysis) -> Option<RelativeMotionReport
     })
 }
 
-/// The text report's line on the motion relative to the body of `--relative-to`.
-fn relative_text(r: &RelativeMotionReport) -> String {
-    let (body, base) = (&r.body, &r.relative_to);
-    let what = match (r.dof, r.rotations) {
-        (0, _) => "it does not move relative to it".to_string(),
-        (_, 0) => format!(
-            "every relative twist is a translation ({body:?} and {base:?} have the same angular velocity)"
-        ),
-        (_, 1) => "1 independent relative angular velocity".to_string(),
-        (_, k) => format!("{k} independent relative angular velocities"),
-    };
-    let mut s = format!(
-        "motion of {body:?} relative to {base:?}: {} dof; {what}; twist basis (v of {body:?}'s point; ω), in the frame of {base:?} at the reference:",
-        r.dof
-    );
-    for t in &r.twists_at_point {
-        let t: Vec<String> = t.iter().map(|x| format!("{:.6}", clean(*x))).collect();
-        let _ = write!(s, " [{}]", t.join(", "));
-    }
-    s.push('\n');
-    s
-}
-
 /// The input values at `q` in the file's units (lengths, or angles in its angle unit), with
 /// their labels: `P1.3 = 0.050000`.
 fn input_values(m: &Manipulator, q: &[f64]) -> Vec<(String, f64)> {
@@ -425,87 +382,6 @@ fn stack_wrenches(
         .collect()
 }
 
-/// A wrench in words: a couple about a direction, a force along a line, or a wrench of some
-/// pitch along a line (`length` the mechanism's characteristic length, for what counts as 0).
-fn wrench_text(w: &kinsyn::screw::Wrench, length: f64) -> String {
-    let ff = w.f.norm_squared();
-    let size = (ff.sqrt() * length).max(w.m.norm());
-    // Four decimals, round-off (below 5e-5 of the characteristic length) written as 0.
-    let c = |x: f64| {
-        if x.abs() < 5e-5 * length.max(1.0) {
-            0.0
-        } else {
-            x
-        }
-    };
-    let v = |x: nalgebra::Vector3<f64>| format!("[{:.4}, {:.4}, {:.4}]", c(x.x), c(x.y), c(x.z));
-    if ff.sqrt() * length < 1e-9 * size {
-        return format!("a couple about {}", v(w.m.normalize()));
-    }
-    let pitch = w.f.dot(&w.m) / ff;
-    let point = w.f.cross(&w.m) / ff;
-    let direction = w.f.normalize();
-    if pitch.abs() < 1e-9 * length {
-        format!("a force along {} through {}", v(direction), v(point))
-    } else {
-        format!(
-            "a wrench of pitch {pitch:.4} along {} through {}",
-            v(direction),
-            v(point)
-        )
-    }
-}
-
-/// The paper 002 lines of the text report (see [`series_parallel`]); empty unless the
-/// manipulator is a stack of two or more three-legged modules.
-fn series_text(m: &Manipulator, a: &Analysis) -> String {
-    let Some(spm) = kinsyn_papers::series::stack(m, &a.q).filter(|s| s.modules().len() > 1) else {
-        return String::new();
-    };
-    let mut s = String::new();
-    let system = spm.twist_system(DEFAULT_RANK_TOLERANCE);
-    let _ = writeln!(
-        s,
-        "series-parallel stack of {} three-legged modules (paper 002): twist-system order {} (eqs. 9–10: {})",
-        spm.modules().len(),
-        system.order.rank,
-        rank_text(&system.order)
-    );
-    match spm.jacobian() {
-        Ok(j) => {
-            let _ = writeln!(
-                s,
-                "  J_S-PM (eqs. 7–8, twist (ω; v) of the end-effector origin per input rate): {}",
-                rank_text(&screw::rank(&j, DEFAULT_RANK_TOLERANCE))
-            );
-        }
-        Err(e) => {
-            let _ = writeln!(s, "  J_S-PM not defined here: {e}");
-        }
-    }
-    if system.order.rank < 6 {
-        let _ = writeln!(
-            s,
-            "  constraint wrench system of the stack (order {}, reciprocal to every end-effector twist; a basis, moments about the ground origin, {}):",
-            6 - system.order.rank,
-            m.units().length
-        );
-        for w in stack_wrenches(&spm, &system.constraint_wrenches) {
-            let _ = writeln!(s, "    {}", wrench_text(&w, m.mechanism().scale()));
-        }
-    }
-    for (i, module) in spm.modules().iter().enumerate() {
-        let forward = DMatrix::from_column_slice(6, 6, module.forward_jacobian().as_slice());
-        let _ = writeln!(
-            s,
-            "  module {} forward Jacobian A (eqs. 2–3, actuation and constraint wrenches): {}",
-            i + 1,
-            rank_text(&screw::rank(&forward, DEFAULT_RANK_TOLERANCE))
-        );
-    }
-    s
-}
-
 /// The labels of the inputs left free in an analysis.
 fn free_labels(m: &Manipulator, a: &Analysis) -> Vec<String> {
     a.jacobians
@@ -513,216 +389,6 @@ fn free_labels(m: &Manipulator, a: &Analysis) -> Vec<String> {
         .iter()
         .map(|&i| m.actuators()[i].label())
         .collect()
-}
-
-fn jacobian_text(m: &Manipulator, a: &Analysis) -> String {
-    let mut s = String::new();
-    let inputs = free_labels(m, a);
-    let _ = writeln!(
-        s,
-        "J_D [v_P; ω] = J_I [{}]   (rows: wrenches (f; m_P) at P; J_I column of the row's input)",
-        inputs.join(" ")
-    );
-    for r in &a.jacobians.rows {
-        let cells: Vec<String> = r
-            .wrench
-            .iter()
-            .map(|&x| format!("{:>10.6}", clean(x)))
-            .collect();
-        let _ = writeln!(
-            s,
-            "  {:<20} [{}] | {:.6}",
-            row_label(m, r.kind),
-            cells.join(" "),
-            r.input
-        );
-    }
-    let _ = writeln!(
-        s,
-        "J_D: {} (generic {})",
-        rank_text(&a.jd_rank),
-        a.generic.jd
-    );
-    let _ = writeln!(
-        s,
-        "constraint rows: {} (generic {})",
-        rank_text(&a.constraint_rank),
-        a.generic.constraint
-    );
-    s
-}
-
-/// What replaces `J_D`, `J_I` when the legs do not all run from the ground to the end-effector:
-/// why they are not defined, and the end-effector's input–output freedoms from the loop
-/// closure (docs/manipulators.md, "Several moving bodies").
-fn closure_io_text(m: &Manipulator, a: &Analysis) -> String {
-    let mut s = String::new();
-    let ee = m.platform();
-    let off: Vec<String> = m
-        .legs()
-        .iter()
-        .enumerate()
-        .filter(|(_, l)| l.from != m.mechanism().ground() || l.to != ee)
-        .map(|(i, l)| {
-            format!(
-                "leg {} {} → {}",
-                i + 1,
-                m.mechanism().body_name(l.from),
-                m.mechanism().body_name(l.to)
-            )
-        })
-        .collect();
-    let _ = writeln!(
-        s,
-        "J_D, J_I: not defined: paper 000's leg wrenches act on the end-effector only when every leg runs from the ground to it, and {} do not; from the loop-closure Jacobian instead:",
-        off.join(", ")
-    );
-    let plural = |n: usize| if n == 1 { "" } else { "s" };
-    let held = 6 - a.jd_rank.rank;
-    let generic_held = 6 - a.generic.jd;
-    let _ = writeln!(
-        s,
-        "  with every input held, the end-effector keeps {held} dof (generic {generic_held}; 0 when the inputs fix it)"
-    );
-    let _ = writeln!(
-        s,
-        "  with the locked inputs held, the end-effector has {} dof: constraint wrenches of rank {} (generic {})",
-        a.platform_dof, a.constraint_rank.rank, a.generic.constraint
-    );
-    let free = free_labels(m, a);
-    let _ = writeln!(
-        s,
-        "  with the end-effector held, the free inputs [{}] keep {} independent rate{} (generic {})",
-        free.join(" "),
-        a.inputs_with_end_effector_held,
-        plural(a.inputs_with_end_effector_held),
-        a.generic.inputs_with_end_effector_held
-    );
-    s
-}
-
-/// The opening lines of `analyze`: the configuration analysed (the end-effector's point P and
-/// rotation vector, the locked inputs), how it was reached from the start, and the input
-/// values.
-fn configuration_text(m: &Manipulator, a: &Analysis, reached: &Reached) -> String {
-    let mut s = String::new();
-    let frame = m.platform_frame(&a.q);
-    let rv = kinsyn::mechanism::rotation_log(&frame.rotation);
-    let p = a.jacobians.point;
-    let several = m.bodies().len() > 1;
-    let title = if several {
-        format!(
-            "{}, end-effector {:?}",
-            m.name(),
-            m.bodies()[m.end_effector()].name
-        )
-    } else {
-        m.name().to_string()
-    };
-    let _ = writeln!(
-        s,
-        "{title}: P = [{:.6}, {:.6}, {:.6}] {}; platform rotation vector [{:.6}, {:.6}, {:.6}] rad; locked: {}",
-        clean(p.x),
-        clean(p.y),
-        clean(p.z),
-        m.units().length,
-        clean(rv.x),
-        clean(rv.y),
-        clean(rv.z),
-        m.lock_text(&a.locked)
-    );
-    if !reached.continuous {
-        let _ = writeln!(
-            s,
-            "reached from {} by damped Newton steps, not by continuation: the path of the values from the start leaves the workspace or meets a singularity, so this may be another assembly mode than the start's",
-            reached.start
-        );
-    } else if reached.steps > 0 || reached.start_given {
-        let _ = writeln!(
-            s,
-            "reached from {} in {} continuation step{}: the assembly continuous with it (another start, --from POSE, may give another assembly)",
-            reached.start,
-            reached.steps,
-            if reached.steps == 1 { "" } else { "s" }
-        );
-    }
-    let values: Vec<String> = input_values(m, &a.q)
-        .iter()
-        .map(|(label, v)| format!("{label} = {:.6}", clean(*v)))
-        .collect();
-    let _ = writeln!(
-        s,
-        "input values (from the reference; {}, angles in {}): {}",
-        m.units().length,
-        m.units().angle.name(),
-        values.join(", ")
-    );
-    s
-}
-
-fn analysis_text(m: &Manipulator, a: &Analysis, reached: &Reached) -> String {
-    let mut s = configuration_text(m, a, reached);
-    let several = m.bodies().len() > 1;
-    if several {
-        let dofs: Vec<String> = m
-            .bodies()
-            .iter()
-            .zip(&a.body_dof)
-            .map(|(b, d)| format!("{} {d}", b.name))
-            .collect();
-        let _ = writeln!(
-            s,
-            "mobility {} (joint rates closing the loops); moving bodies' dof (twist spaces on the loop closure): {}; end-effector {:?}",
-            a.mobility,
-            dofs.join(", "),
-            m.bodies()[m.end_effector()].name
-        );
-    } else {
-        let _ = writeln!(
-            s,
-            "mobility {} (joint rates closing the loops), platform dof {} (6 − rank of the constraint wrenches; {} internal)",
-            a.mobility,
-            a.platform_dof,
-            a.mobility.saturating_sub(a.platform_dof)
-        );
-    }
-    let (kept, dropped) = a.closure_rank.gap();
-    let _ = writeln!(
-        s,
-        "loop closure: rank {} over {} free joint rates, gap {kept:.3e} kept / {dropped:.3e} dropped",
-        a.closure_rank.rank,
-        a.closure_rank.rank + a.mobility,
-    );
-    if a.leg_wrench_jacobians {
-        s += &jacobian_text(m, a);
-    } else {
-        s += &closure_io_text(m, a);
-    }
-    for (i, (r, g)) in a.leg_ranks.iter().zip(&a.generic.legs).enumerate() {
-        let _ = writeln!(
-            s,
-            "leg {} joint twists: {} (generic {g})",
-            i + 1,
-            rank_text(r)
-        );
-    }
-    if a.generic.constraint == 6 && a.locked.is_empty() {
-        let _ = writeln!(
-            s,
-            "note: the constraint wrenches have rank 6 at every generic configuration: with every input free the platform cannot move (a structure, not a manipulator)"
-        );
-    }
-    s += &series_text(m, a);
-    if a.singularities.is_empty() {
-        let _ = writeln!(s, "no singularity");
-    }
-    for sing in &a.singularities {
-        let _ = writeln!(s, "singularity ({:?}): {}", sing.kind, sing.detail());
-    }
-    if let Some(r) = relative_motion(m, a) {
-        s += &relative_text(&r);
-    }
-    s
 }
 
 /// The report of `kinsyn analyze --json` (and of Python's `Manipulator.analyze`): the
@@ -763,6 +429,9 @@ pub struct AnalyzeReport {
     /// Whether the configuration is the assembly continuous with the start (false when damped
     /// Newton steps reached it after the continuation path left the workspace).
     pub continuous_with_start: bool,
+    /// Whether the start was given (`--from`) rather than the reference (not in the JSON).
+    #[serde(skip)]
+    pub start_given: bool,
     /// The mobility: the dimension of the joint rates that keep every loop closed (the locked
     /// inputs held), the platform's dof plus the legs' internal motions.
     pub mobility: usize,
@@ -1020,6 +689,7 @@ impl AnalyzeReport {
             reached_from: reached.start.clone(),
             continuation_steps: reached.steps,
             continuous_with_start: reached.continuous,
+            start_given: reached.start_given,
             mobility: a.mobility,
             closure_rank: RankReport::new(&a.closure_rank, None),
             platform_dof: a.platform_dof,

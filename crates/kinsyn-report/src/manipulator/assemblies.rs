@@ -1,24 +1,28 @@
 //! `kinsyn analyze FILE --inputs … --all-assemblies`: every assembly of a manipulator at given
 //! inputs, from its constraint polynomials in Study parameters solved by homotopy continuation.
 
-use super::{clean, input_texts, inputs_or_reference, leg_warnings, load_with_body, warn};
-use crate::solve::{PathOption, certificate_line, solve_with_bar};
-use crate::{Error, sorted_json};
+use super::{Loaded, clean, input_texts, inputs_or_reference, leg_warnings, load_with_body};
+use crate::Error;
+use crate::solve::{PathOption, solve_with_bar};
 use kinsyn::geometry::Chart;
 use kinsyn::homotopy::{SolveReport, SolveSettings};
 use kinsyn::manipulator::{LegKind, Manipulator, PositionRequest};
 use kinsyn::mechanism::rotation_log;
 use kinsyn::spatial::Displacement;
 use serde::Serialize;
-use std::fmt::Write as _;
 use std::path::Path;
 
-/// One real assembly: the platform frame and the largest leg residual.
-struct Assembly {
-    pose: Displacement,
-    residual: f64,
-    certified: bool,
-    current: bool,
+/// One real assembly: the platform frame, the largest leg residual, and whether it is
+/// certified and the one continued from the reference.
+pub struct Assembly {
+    /// The platform frame.
+    pub pose: Displacement,
+    /// The largest residual of the legs' constraints (length unit).
+    pub residual: f64,
+    /// Whether the solution is certified (Krawczyk).
+    pub certified: bool,
+    /// Whether it is the assembly reached by continuation from the reference configuration.
+    pub current: bool,
 }
 
 /// The pose as `--pose` takes it: `x,y,z,rx,ry,rz`, lengths in the file's unit and the rotation
@@ -36,7 +40,9 @@ pub fn pose_text(m: &Manipulator, g: &Displacement) -> String {
         .join(",")
 }
 
-/// `kinsyn analyze FILE [--inputs …] --all-assemblies`.
+/// `kinsyn analyze FILE [--inputs …] --all-assemblies`: the manipulator of the file at `path`
+/// (its end-effector `body` when given), every assembly at the inputs of `inputs_text` (the
+/// others at their reference values) solved with `seed`, and the leg warnings.
 ///
 /// # Errors
 /// [`Error::Input`] for a file that is not a description, inputs that do not read, a system past the path limit, or a mechanism whose assemblies cannot be posed as a system.
@@ -45,35 +51,35 @@ pub fn all_assemblies(
     inputs_text: Option<&str>,
     body: Option<&str>,
     seed: u64,
-    as_json: bool,
-) -> Result<String, Error> {
+) -> Result<Loaded<AllAssemblies>, Error> {
     let m = load_with_body(path, body, None, None)?;
     let all = all_assemblies_of(&m, inputs_text, seed)?;
     let warnings = leg_warnings(&m);
-    warn(path, &warnings);
-    if as_json {
-        return Ok(sorted_json(&all.report(&m, &warnings)));
-    }
-    Ok(all.text(&m, path, seed))
+    Ok(Loaded {
+        manipulator: m,
+        result: all,
+        warnings,
+    })
 }
 
 /// Every assembly of a manipulator at given inputs: the solve of its position system and the
 /// real assemblies found.
 pub struct AllAssemblies {
-    /// The inputs, every one (`LABEL = value`, [`input_texts`]).
-    inputs: Vec<(usize, f64)>,
+    /// The inputs, every one, by actuator index and value (radians or length unit; as text
+    /// by [`input_texts`]).
+    pub inputs: Vec<(usize, f64)>,
     /// The seed of the chart and of the solve.
-    seed: u64,
+    pub seed: u64,
     /// The variables, equations and degrees of the position system.
-    system: kinsyn::poly::System,
+    pub system: kinsyn::poly::System,
     /// What each leg contributes to the position system.
-    kinds: Vec<&'static str>,
+    pub kinds: Vec<&'static str>,
     /// The solve.
-    report: SolveReport,
+    pub report: SolveReport,
     /// The real assemblies.
-    assemblies: Vec<Assembly>,
+    pub assemblies: Vec<Assembly>,
     /// How many singular endpoints lie on the null cone.
-    null_cone: usize,
+    pub null_cone: usize,
 }
 
 /// Every assembly of `m` at the inputs of `inputs_text` (`--inputs`; the inputs not named at
@@ -224,67 +230,6 @@ impl AllAssemblies {
                 .collect(),
             warnings: warnings.to_vec(),
         }
-    }
-
-    /// The text report of `kinsyn analyze FILE --all-assemblies` (`path` the file's).
-    fn text(&self, m: &Manipulator, path: &Path, seed: u64) -> String {
-        let (report, assemblies, null_cone) = (&self.report, &self.assemblies, self.null_cone);
-        let input_text = input_texts(m, &self.inputs);
-        let kinds = &self.kinds;
-        let system = &self.system;
-        let mut out = String::new();
-        let _ = writeln!(out, "{} at {}", m.name(), input_text.join(", "));
-        let _ = writeln!(
-            out,
-            "formulation: {} equations in the Study parameters x0…y3 of the platform frame (legs: {}; the Study quadric; a random linear chart, seed {seed}), Bézout number {}",
-            system.len(),
-            kinds.join(", "),
-            system.bezout_number()
-        );
-        let _ = writeln!(
-            out,
-            "{}",
-            report.summary().replace("solutions", "assemblies")
-        );
-        let _ = writeln!(out, "{}", certificate_line(report));
-        if null_cone > 0 {
-            let _ = writeln!(
-                out,
-                "{null_cone} of the singular endpoints lie on the null cone x0² + x1² + x2² + x3² = 0, which solves the constraints without being a displacement"
-            );
-        }
-        let _ = writeln!(out, "time: {:.3} s", report.seconds);
-        let unit = m.units();
-        let _ = writeln!(
-            out,
-            "real assemblies ({}), as --pose x,y,z,rx,ry,rz ({}, {}):",
-            assemblies.len(),
-            unit.length,
-            unit.angle.name()
-        );
-        for (k, a) in assemblies.iter().enumerate() {
-            let _ = writeln!(
-                out,
-                "  {:>3}  {}  [legs within {:.1e}{}{}]",
-                k + 1,
-                pose_text(m, &a.pose),
-                a.residual,
-                if a.certified { ", certified" } else { "" },
-                if a.current {
-                    "; the assembly continued from the reference"
-                } else {
-                    ""
-                }
-            );
-        }
-        if !assemblies.is_empty() {
-            let _ = writeln!(
-                out,
-                "analyse one with: kinsyn analyze {} --pose=X,Y,Z,RX,RY,RZ",
-                path.display()
-            );
-        }
-        out
     }
 }
 

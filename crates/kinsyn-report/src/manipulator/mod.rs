@@ -1,6 +1,7 @@
 //! `kinsyn build`, `kinsyn modes`, `kinsyn analyze`: manipulators from description files. This
 //! module reads a file (`load`, refusing what is not a description) and builds one (`build`);
-//! `modes` and `analyze` are in their own files.
+//! `modes` and `analyze` are in their own files, each returning what it found as typed values
+//! ([`Loaded`]); the front ends print them.
 
 mod analyze;
 mod assemblies;
@@ -12,8 +13,8 @@ pub use analyze::{
     analyse_placed, analyze,
 };
 pub use assemblies::{
-    AllAssemblies, AssembliesReport, Formulation, RealAssembly, all_assemblies, all_assemblies_of,
-    pose_text,
+    AllAssemblies, AssembliesReport, Assembly, Formulation, RealAssembly, all_assemblies,
+    all_assemblies_of, pose_text,
 };
 pub use modes::{
     DEFAULT_MAX_SUBSETS, MAX_SAMPLES, MAX_SUBSETS_CEILING, ModesReport, Selection, modes,
@@ -147,12 +148,19 @@ fn leg_warnings(m: &Manipulator) -> Vec<String> {
     m.leg_warnings().iter().map(ToString::to_string).collect()
 }
 
-/// Prints each warning on stderr as one line `warning: FILE: …`. Called once the command has
-/// succeeded, so that an error stays the only line on stderr.
-fn warn(path: &Path, warnings: &[String]) {
-    for w in warnings {
-        crate::terminal::warning(&format!("{}: {w}", path.display()));
-    }
+/// A manipulator read for a command (`analyze`, `modes`, `analyze --all-assemblies`), what the
+/// command found on it, and the description's leg warnings, for the front end to print or hand
+/// on.
+pub struct Loaded<T> {
+    /// The manipulator, with the end-effector (`--body`) and reference body (`--relative-to`)
+    /// asked for.
+    pub manipulator: Manipulator,
+    /// What the command found.
+    pub result: T,
+    /// The leg warnings of the description, one line each, without the file's name
+    /// (docs/mechanism-format.md, "Leg checks"); the command prints them on stderr once it
+    /// has succeeded.
+    pub warnings: Vec<String>,
 }
 
 /// The `kinsyn build` option that sets a [`BuildSpec`] field (`--legs`, `--chain`, …): the
@@ -276,25 +284,11 @@ pub fn input_texts(m: &Manipulator, inputs: &[(usize, f64)]) -> Vec<String> {
         .collect()
 }
 
-/// A value printed with six decimals, without a "-0.000000" for round-off.
-fn clean(x: f64) -> f64 {
+/// A value to be printed with six decimals, without a "-0.000000" for round-off: 0 below 5e-7
+/// in magnitude, the value otherwise.
+#[must_use]
+pub fn clean(x: f64) -> f64 {
     if x.abs() < 5e-7 { 0.0 } else { x }
-}
-
-/// The moving bodies' names, comma separated, the end-effector marked.
-fn body_names(m: &Manipulator) -> String {
-    m.bodies()
-        .iter()
-        .enumerate()
-        .map(|(k, b)| {
-            if k == m.end_effector() {
-                format!("{} (end-effector)", b.name)
-            } else {
-                b.name.clone()
-            }
-        })
-        .collect::<Vec<_>>()
-        .join(", ")
 }
 
 /// `kinsyn stack`: a series-parallel stack of three-legged modules as a description, checked

@@ -1,0 +1,237 @@
+//! The text of `kinsyn components`: the irreducible components of a polynomial system, or a
+//! manipulator's self-motions, operation modes and assemblies.
+
+use kinsyn::homotopy::Decomposition;
+use kinsyn::manipulator::{
+    DecompositionMethod, LocalMotion, Manipulator, ModeComponent, OperationModes,
+};
+use kinsyn::poly::{C64, System};
+use kinsyn_report::components::{Components, ComponentsOptions, Decomposed, method_name};
+use kinsyn_report::manipulator::pose_text;
+use std::fmt::Write as _;
+
+/// The text report of `kinsyn components`.
+pub(in crate::cli) fn text(c: &Components) -> String {
+    match &c.decomposed {
+        Decomposed::System {
+            source,
+            system,
+            decomposition,
+        } => system_text(source, system, decomposition, c.options.method),
+        Decomposed::Manipulator { m, modes, inputs } => {
+            manipulator_text(m, modes, inputs, &c.options)
+        }
+    }
+}
+
+/// The text report of the components `d` of the Bertini file `source`'s `system`.
+fn system_text(
+    source: &str,
+    system: &System,
+    d: &Decomposition,
+    method: DecompositionMethod,
+) -> String {
+    let mut out = String::new();
+    let _ = writeln!(
+        out,
+        "{source}: {} equations in {} unknowns ({})",
+        system.len(),
+        system.nvars(),
+        system.variables().join(", ")
+    );
+    let _ = writeln!(out, "{}", summary(d, method));
+    for (k, c) in d.components.iter().enumerate() {
+        let _ = writeln!(
+            out,
+            "  {}. dimension {}, degree {}{}; a point: {}",
+            k + 1,
+            c.dimension,
+            c.degree,
+            if c.trace_test_passed {
+                ""
+            } else {
+                " (trace test FAILED: perhaps a union of components)"
+            },
+            point_text(system.variables(), &c.sample_point)
+        );
+    }
+    unresolved_text(&mut out, d);
+    out
+}
+
+/// The components found, the method, its paths and time, the junk removed.
+fn summary(d: &Decomposition, method: DecompositionMethod) -> String {
+    format!(
+        "{} irreducible component{} ({}: {} paths, {:.2} s; {} junk point{} removed)",
+        d.components.len(),
+        if d.components.len() == 1 { "" } else { "s" },
+        method_name(method),
+        d.paths,
+        d.seconds,
+        d.junk,
+        if d.junk == 1 { "" } else { "s" }
+    )
+}
+
+/// The warning line on singular witness points on no component, if any.
+fn unresolved_text(out: &mut String, d: &Decomposition) {
+    if !d.unresolved.is_empty() {
+        let mut dims: Vec<usize> = d.unresolved.iter().map(|(k, _)| *k).collect();
+        dims.sort_unstable();
+        dims.dedup();
+        let _ = writeln!(
+            out,
+            "warning: {} singular witness point{} on no component found (dimension {}): a non-reduced component (multiplicity > 1), not decomposed here",
+            d.unresolved.len(),
+            if d.unresolved.len() == 1 { "" } else { "s" },
+            dims.iter()
+                .map(ToString::to_string)
+                .collect::<Vec<_>>()
+                .join(", ")
+        );
+    }
+}
+
+/// `name = value` for each variable, complex values as `a+bi`, six significant digits.
+fn point_text(names: &[String], x: &[C64]) -> String {
+    names
+        .iter()
+        .zip(x)
+        .map(|(n, v)| {
+            let re = if v.re.abs() < 1e-10 { 0.0 } else { v.re };
+            if v.im.abs() < 1e-10 * (1.0 + v.norm()) {
+                format!("{n}={re:.6}")
+            } else {
+                format!("{n}={re:.6}{:+.6}i", v.im)
+            }
+        })
+        .collect::<Vec<_>>()
+        .join(" ")
+}
+
+/// A platform motion in words: its dof and pattern.
+fn motion_text(m: &LocalMotion) -> String {
+    let name = m.motion.pattern.name();
+    let group = if m.motion.pattern.is_group() {
+        ""
+    } else {
+        " (not a displacement group)"
+    };
+    format!("{} dof, {}{group}", m.dof, name)
+}
+
+/// Which of paper 004's Schönflies modes a unit Study point is in, if either: `x0 = x3 = 0`
+/// (the platform upside down) or `x1 = x2 = 0` (parallel, upright).
+fn study_label(x: &[C64]) -> &'static str {
+    let small = |v: C64| v.norm() < 1e-8;
+    if small(x[0]) && small(x[3]) {
+        " [x0 = x3 = 0: platform turned upside down]"
+    } else if small(x[1]) && small(x[2]) {
+        " [x1 = x2 = 0: platform upright]"
+    } else {
+        ""
+    }
+}
+
+/// The text report of the operation modes (or assemblies and self-motions) of `m`.
+fn manipulator_text(
+    m: &Manipulator,
+    modes: &OperationModes,
+    inputs: &[String],
+    options: &ComponentsOptions,
+) -> String {
+    let system = modes.system.system();
+    let d = &modes.decomposition;
+    let mut out = String::new();
+    let _ = writeln!(
+        out,
+        "{}, {}: {} constraint equations in {} unknowns ({}); Study parameters with x0² + x1² + x2² + x3² = 1, so each pose is two points ±(x, y)",
+        m.name(),
+        if modes.free_inputs {
+            "inputs free (tangents of their half angles are unknowns)".to_string()
+        } else {
+            format!("inputs {}", inputs.join(", "))
+        },
+        system.len(),
+        system.nvars(),
+        system.variables().join(", ")
+    );
+    let _ = writeln!(out, "{}", summary(d, options.method));
+    let (isolated, positive): (Vec<&ModeComponent>, Vec<&ModeComponent>) =
+        modes.components.iter().partition(|c| c.dimension == 0);
+    for c in &positive {
+        let what = if modes.free_inputs {
+            format!("operation mode, {} dof", c.dimension)
+        } else {
+            format!("self-motion, {} dof", c.dimension)
+        };
+        let motion = c.real.as_ref().map_or_else(
+            || "no real point found on 8 real slices: a complex component".to_string(),
+            |l| {
+                format!(
+                    "platform motion {} at the pose {}",
+                    motion_text(l),
+                    pose_text(m, &l.pose)
+                )
+            },
+        );
+        let _ = writeln!(
+            out,
+            "  dimension {}, degree {}{}: {what}{}; {motion}",
+            c.dimension,
+            c.degree,
+            if c.trace_test_passed {
+                ""
+            } else {
+                " (trace test FAILED)"
+            },
+            study_label(&c.sample),
+        );
+    }
+    if !isolated.is_empty() {
+        let real: Vec<&&ModeComponent> = isolated
+            .iter()
+            .filter(|c| !c.real_points.is_empty())
+            .collect();
+        let _ = writeln!(
+            out,
+            "  dimension 0: {} isolated point{} ({} real){}",
+            isolated.len(),
+            if isolated.len() == 1 { "" } else { "s" },
+            real.len(),
+            if modes.free_inputs {
+                ""
+            } else {
+                ": the assemblies"
+            }
+        );
+        let mut shown: Vec<kinsyn::spatial::Displacement> = Vec::new();
+        for c in real {
+            let Some(l) = &c.real else { continue };
+            if shown
+                .iter()
+                .any(|g| (g.to_homogeneous() - l.pose.to_homogeneous()).amax() < 1e-7)
+            {
+                continue;
+            }
+            shown.push(l.pose);
+            let mode = c.released.as_ref().map_or_else(
+                || "its operation mode not found (an input 180° from the reference, where tan(δ/2) is infinite, or a singular point of the released variety)".to_string(),
+                |r| {
+                    format!(
+                        "operation mode with the inputs released: {}",
+                        motion_text(r)
+                    )
+                },
+            );
+            let _ = writeln!(
+                out,
+                "    assembly at the pose {}{}: {mode}",
+                pose_text(m, &l.pose),
+                study_label(&c.sample),
+            );
+        }
+    }
+    unresolved_text(&mut out, d);
+    out
+}
