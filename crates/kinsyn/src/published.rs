@@ -277,24 +277,14 @@ impl Comparison {
     pub fn new(printed: &PrintedTables, candidates: &[Candidate]) -> Self {
         let mut rows: BTreeMap<RowKey, RowComparison> = BTreeMap::new();
         for p in printed.rows() {
-            let k = printed.key(p.table, p.row);
-            let entry = rows.entry(k).or_insert_with(|| RowComparison {
-                key: k,
-                word: p.word.clone(),
-                generated: BTreeSet::new(),
-                printed: BTreeSet::new(),
-            });
-            entry.printed.extend(p.chains.iter().cloned());
+            row(&mut rows, printed.key(p.table, p.row), &p.word)
+                .printed
+                .extend(p.chains.iter().cloned());
         }
         for c in candidates {
-            let k = printed.key(c.table, c.row);
-            let entry = rows.entry(k).or_insert_with(|| RowComparison {
-                key: k,
-                word: c.word.clone(),
-                generated: BTreeSet::new(),
-                printed: BTreeSet::new(),
-            });
-            entry.generated.insert(c.chain.letters());
+            row(&mut rows, printed.key(c.table, c.row), &c.word)
+                .generated
+                .insert(c.chain.letters());
         }
         let mut printed_where: BTreeMap<&str, Vec<RowKey>> = BTreeMap::new();
         for r in rows.values() {
@@ -553,4 +543,19 @@ fn revolute_counts(word: &[crate::notation::Primitive], axes: &[rules::AxisIndex
 fn word_text_family(word: &str) -> String {
     let p = word.chars().filter(|&c| c == 'P').count();
     format!("{}{}", "P".repeat(p), "R".repeat(word.len() - p))
+}
+
+/// The comparison of row `key` in `rows`, created empty with the row's `word` the first time
+/// the row is met (by a printed row or a generated chain).
+fn row<'a>(
+    rows: &'a mut BTreeMap<RowKey, RowComparison>,
+    key: RowKey,
+    word: &str,
+) -> &'a mut RowComparison {
+    rows.entry(key).or_insert_with(|| RowComparison {
+        key,
+        word: word.to_string(),
+        generated: BTreeSet::new(),
+        printed: BTreeSet::new(),
+    })
 }

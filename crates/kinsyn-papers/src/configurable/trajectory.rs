@@ -163,21 +163,9 @@ pub struct Sample {
     pub inverse_condition: f64,
 }
 
-/// How the following ended.
-#[derive(Debug, Clone, PartialEq)]
-pub enum TrajectoryEnd {
-    /// Every instant reached on the same real branch.
-    Completed,
-    /// The followed assembly stopped being real (or regular) between two instants.
-    Ceased {
-        /// The last instant reached on the branch.
-        last: f64,
-        /// The first instant it was not found at.
-        next: f64,
-        /// Why.
-        reason: String,
-    },
-}
+/// How the following ended: the general [`BranchEnd`] of [`follow_real`], its reason worded
+/// for assemblies ("assembly" where the solver says "solution").
+pub type TrajectoryEnd = BranchEnd;
 
 /// The followed trajectory.
 #[derive(Debug, Clone, PartialEq)]
@@ -238,8 +226,8 @@ pub fn follow(
             .map(|p| sample(m, inputs(p.t), p))
             .collect(),
         end: match branch.end {
-            BranchEnd::Completed => TrajectoryEnd::Completed,
-            BranchEnd::Ceased { last, next, reason } => TrajectoryEnd::Ceased {
+            BranchEnd::Completed => BranchEnd::Completed,
+            BranchEnd::Ceased { last, next, reason } => BranchEnd::Ceased {
                 last,
                 next,
                 reason: reason
