@@ -65,13 +65,13 @@ pub(super) fn svg(
     Ok(text)
 }
 
-/// A figure as PNG bytes: `draw` on an RGB bitmap of `size` pixels, encoded as plotters'
-/// bitmap backend saves a `.png` file (the `image` crate's PNG encoder, default settings).
+/// A figure as PNG bytes: `draw` on an RGB bitmap of `size` pixels, encoded by the `png` crate
+/// with the settings of the `image` crate's default PNG encoder (default compression, adaptive
+/// filtering), which plotters' bitmap backend uses when it saves a `.png` file itself.
 pub(super) fn png(
     size: (u32, u32),
     draw: impl FnOnce(&DrawingArea<BitMapBackend<'_>, Shift>) -> Result<(), CliError>,
 ) -> Result<Vec<u8>, CliError> {
-    use image::ImageEncoder as _;
     let (w, h) = size;
     let mut pixels = vec![0u8; 3 * w as usize * h as usize];
     {
@@ -80,9 +80,17 @@ pub(super) fn png(
         root.present().map_err(draw_error)?;
     }
     let mut bytes = Vec::new();
-    image::codecs::png::PngEncoder::new(&mut bytes)
-        .write_image(&pixels, w, h, image::ColorType::Rgb8)
-        .map_err(draw_error)?;
+    {
+        let mut encoder = png::Encoder::new(&mut bytes, w, h);
+        encoder.set_color(png::ColorType::Rgb);
+        encoder.set_depth(png::BitDepth::Eight);
+        encoder.set_compression(png::Compression::Default);
+        encoder.set_filter(png::FilterType::Sub);
+        encoder.set_adaptive_filter(png::AdaptiveFilterType::Adaptive);
+        let mut writer = encoder.write_header().map_err(draw_error)?;
+        writer.write_image_data(&pixels).map_err(draw_error)?;
+        writer.finish().map_err(draw_error)?;
+    }
     Ok(bytes)
 }
 
