@@ -18,7 +18,7 @@ pub use run::{SweepOptions, SweepOutcome, sweep};
 
 /// The encoder of `designs.parquet` ([`PARQUET`]): the rows of a finished sweep part (sorted by
 /// design) and its manifest as the bytes of the file. The Parquet encoder is the front end's
-/// (the command's, the Parquet crate's Arrow writer; Python's, pyarrow), so that the reports
+/// (the command's, the Parquet crate's column writers; Python's, pyarrow), so that the reports
 /// need neither.
 pub type Table<'a> =
     &'a (dyn Fn(&Manifest, &[&kinsyn::sweep::DesignRow]) -> Result<Vec<u8>, Error> + Sync);

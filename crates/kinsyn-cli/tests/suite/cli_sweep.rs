@@ -364,20 +364,64 @@ fn a_killed_run_resumes_to_the_same_files() {
     assert_same_files(&whole, &killed);
 }
 
-/// The Parquet file read back with the parquet crate's Arrow reader: the JSONL rows, column
-/// by column, and the manifest in its metadata.
+/// The columns of `designs.parquet`, in order (docs/sweep.md).
+const PARQUET_COLUMNS: [&str; 17] = [
+    "design",
+    "chain",
+    "notation",
+    "family",
+    "legs",
+    "actuated",
+    "inputs",
+    "dof",
+    "subgroups",
+    "kinds",
+    "group_kinds",
+    "groups",
+    "non_groups",
+    "unsampled",
+    "singular",
+    "singular_lock_sets",
+    "error",
+];
+
+/// A cell of an unsigned 32-bit column (the record reader's `UInt`: INT32 annotated unsigned).
+fn uint32_cell(field: &parquet::record::Field) -> u64 {
+    match field {
+        parquet::record::Field::UInt(v) => u64::from(*v),
+        other => panic!("not a uint32: {other:?}"),
+    }
+}
+
+/// A cell of a UTF-8 column (the record reader's `Str`).
+fn string_cell(field: &parquet::record::Field) -> &str {
+    match field {
+        parquet::record::Field::Str(s) => s,
+        other => panic!("not a string: {other:?}"),
+    }
+}
+
+/// The elements of a cell of a LIST column.
+fn list_cell(field: &parquet::record::Field) -> &[parquet::record::Field] {
+    match field {
+        parquet::record::Field::ListInternal(list) => list.elements(),
+        other => panic!("not a list: {other:?}"),
+    }
+}
+
+/// The Parquet file read back with the parquet crate's record reader: the JSONL rows, column
+/// by column (names in order, types and values), and the manifest in its metadata.
 #[test]
 fn the_parquet_file_holds_the_jsonl_rows() {
-    use arrow_array::cast::AsArray;
-    use arrow_array::types::UInt32Type;
-    use parquet::arrow::arrow_reader::ParquetRecordBatchReaderBuilder;
+    use parquet::file::reader::{FileReader, SerializedFileReader};
+    use parquet::record::Field;
     let dir = temp();
     let out = dir.path().join("p");
     sweep(&out, &["--chains", "T1-001,T4-034", "--actuated", "1,2"]);
     let rows = rows(&out);
     let file = std::fs::File::open(out.join("designs.parquet")).unwrap();
-    let builder = ParquetRecordBatchReaderBuilder::try_new(file).unwrap();
-    let kv: std::collections::BTreeMap<String, String> = builder
+    let reader = SerializedFileReader::new(file).unwrap();
+    let kv: std::collections::BTreeMap<String, String> = reader
         .metadata()
         .file_metadata()
         .key_value_metadata()
@@ -395,59 +439,51 @@ fn the_parquet_file_holds_the_jsonl_rows() {
     assert_eq!(kv["kinsyn.designs"], rows.len().to_string());
     assert_eq!(kv["kinsyn.version"], manifest["kinsyn"].as_str().unwrap());
     let mut n = 0;
-    for batch in builder.build().unwrap() {
-        let batch = batch.unwrap();
-        let col = |name: &str| batch.column_by_name(name).unwrap().clone();
-        for i in 0..batch.num_rows() {
-            let row = &rows[n];
-            for name in [
-                "design",
-                "legs",
-                "inputs",
-                "dof",
-                "subgroups",
-                "kinds",
-                "unsampled",
-                "singular",
-            ] {
-                let c = col(name);
-                assert_eq!(
-                    u64::from(c.as_primitive::<UInt32Type>().value(i)),
-                    row[name].as_u64().unwrap(),
-                    "{name}"
-                );
-            }
-            for name in ["chain", "notation", "family"] {
-                assert_eq!(
-                    col(name).as_string::<i32>().value(i),
-                    row[name].as_str().unwrap()
-                );
-            }
-            let actuated = col("actuated");
-            let list = actuated.as_list::<i32>().value(i);
-            let values: Vec<u64> = list
-                .as_primitive::<UInt32Type>()
-                .values()
-                .iter()
-                .map(|&v| u64::from(v))
-                .collect();
-            assert_eq!(serde_json::json!(values), row["actuated"]);
-            let kinds = col("group_kinds");
-            let list = kinds.as_list::<i32>().value(i);
-            let values: Vec<&str> = list.as_string::<i32>().iter().map(Option::unwrap).collect();
-            assert_eq!(serde_json::json!(values), row["group_kinds"]);
-            let singular = col("singular_lock_sets");
-            let list = singular.as_list::<i32>().value(i);
-            let values: Vec<&str> = list.as_string::<i32>().iter().map(Option::unwrap).collect();
-            assert_eq!(serde_json::json!(values), row["singular_lock_sets"]);
-            for name in ["groups", "non_groups"] {
-                let v: Value = serde_json::from_str(col(name).as_string::<i32>().value(i)).unwrap();
-                assert_eq!(v, row[name], "{name}");
-            }
-            let error = col("error");
-            assert_eq!(error.is_null(i), row.get("error").is_none());
-            n += 1;
+    for record in reader.get_row_iter(None).unwrap() {
+        let record = record.unwrap();
+        let names: Vec<&str> = record.get_column_iter().map(|(k, _)| k.as_str()).collect();
+        assert_eq!(names, PARQUET_COLUMNS);
+        let cells: std::collections::BTreeMap<&str, &Field> = record
+            .get_column_iter()
+            .map(|(k, v)| (k.as_str(), v))
+            .collect();
+        let col = |name: &str| cells[name];
+        let row = &rows[n];
+        for name in [
+            "design",
+            "legs",
+            "inputs",
+            "dof",
+            "subgroups",
+            "kinds",
+            "unsampled",
+            "singular",
+        ] {
+            assert_eq!(
+                uint32_cell(col(name)),
+                row[name].as_u64().unwrap(),
+                "{name}"
+            );
         }
+        for name in ["chain", "notation", "family"] {
+            assert_eq!(string_cell(col(name)), row[name].as_str().unwrap());
+        }
+        let values: Vec<u64> = list_cell(col("actuated")).iter().map(uint32_cell).collect();
+        assert_eq!(serde_json::json!(values), row["actuated"]);
+        for name in ["group_kinds", "singular_lock_sets"] {
+            let values: Vec<&str> = list_cell(col(name)).iter().map(string_cell).collect();
+            assert_eq!(serde_json::json!(values), row[name], "{name}");
+        }
+        for name in ["groups", "non_groups"] {
+            let v: Value = serde_json::from_str(string_cell(col(name))).unwrap();
+            assert_eq!(v, row[name], "{name}");
+        }
+        match (col("error"), row.get("error")) {
+            (Field::Null, None) => {}
+            (field, Some(error)) => assert_eq!(string_cell(field), error.as_str().unwrap()),
+            (field, None) => panic!("error {field:?} where the row has none"),
+        }
+        n += 1;
     }
     assert_eq!(n, rows.len());
     assert_eq!(n, 2 * 21);
