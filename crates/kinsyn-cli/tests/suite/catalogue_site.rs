@@ -141,6 +141,7 @@ fn the_index_filtered_in_its_address_shows_the_rows_of_kinsyn_query() {
             ],
         ),
     ];
+    let mut first = None;
     for (filter, args) in cases {
         let dom = dump_dom(
             &chromium,
@@ -150,14 +151,11 @@ fn the_index_filtered_in_its_address_shows_the_rows_of_kinsyn_query() {
         let expected = query_rows(args);
         assert!(!expected.is_empty(), "{filter}: the query finds nothing");
         assert_eq!(shown, expected, "{filter}");
+        first.get_or_insert(shown);
     }
     // The first case by hand: T1-002 (PPCU, axes xyzzxy) is a translator with its U and the
     // C's R locked (three locked revolutes remove the three rotations), so the page shows it.
-    let dom = dump_dom(
-        &chromium,
-        &url(site.path(), "index.html?pattern=T3&max-locks=3"),
-    );
-    let shown = rows_shown(&dom);
+    let shown = first.expect("three cases");
     assert!(shown.contains(&("T1-002".into(), "T3".into(), "456".into())));
     // A plane written backwards.
     let dom = dump_dom(
