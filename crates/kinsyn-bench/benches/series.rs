@@ -77,8 +77,8 @@ fn series(c: &mut Criterion) {
     group.bench_function("twist system of the 3-RPS-3-SPR (eqs. 9-10)", |b| {
         b.iter(|| black_box(&s).twist_system(DEFAULT_RANK_TOLERANCE));
     });
-    // The general machinery on the description file: the loop-closure mobility (30 joints,
-    // 24 closure equations) and the same S-PM read off the mechanism (issue 11).
+    // The general machinery on the description file: the loop-closure mobility (30 joints, 24
+    // closure equations) and the same S-PM read off the mechanism.
     let path = format!(
         "{}/../../mechanisms/multibody/3-rps-3-spr.json",
         env!("CARGO_MANIFEST_DIR")

@@ -1,4 +1,4 @@
-//! Speed of the catalogue-wide multioperation sweep (issue 17): one design (a symmetric
+//! Speed of the catalogue-wide multioperation sweep: one design (a symmetric
 //! 3-legged manipulator, every lock subset of its inputs sampled and classified) with one and
 //! with two actuated joints per leg, and a slice of 21 consecutive designs (one chain, every
 //! actuation choice). `kinsyn sweep --bench` gives the figure of the whole sweep.

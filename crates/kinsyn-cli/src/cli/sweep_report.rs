@@ -192,7 +192,7 @@ fn markdown_report(results: &SweepRows, r: &Ranking) -> String {
     let _ = writeln!(md, "# Multioperation sweep: ranking of the designs\n");
     let _ = writeln!(
         md,
-        "Rows: {}: {} designs, {} built, {} not built, {} with unsampled lock subsets, {} with {} lock subsets whose start is a singular configuration of the locked manipulator (not counted: the motion branches there, and the pattern sampled depends on the branch; see docs/deviations.md, \"Issue 17\").\n",
+        "Rows: {}: {} designs, {} built, {} not built, {} with unsampled lock subsets, {} with {} lock subsets whose start is a singular configuration of the locked manipulator (not counted: the motion branches there, and the pattern sampled depends on the branch; see docs/deviations.md, \"What the catalogue-wide sweep changed\").\n",
         markup::markdown_code(&results.file.display().to_string()),
         r.designs,
         r.built,

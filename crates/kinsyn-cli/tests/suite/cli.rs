@@ -158,7 +158,7 @@ fn help_teaches() {
 
 #[test]
 fn query_and_locks() {
-    // PPPS with its S locked translates (hand derivation, issue 3).
+    // PPPS with its S locked translates (hand derivation).
     let o = kinsyn(&[
         "query",
         "--pattern",

@@ -1,5 +1,5 @@
 //! `kinsyn modes` and `kinsyn analyze` on paper 003's configurable 4-RRR
-//! (`mechanisms/4-rrr-configurable.json`, issue 13 item 1); the library side is in
+//! (`mechanisms/4-rrr-configurable.json`); the library side is in
 //! `crates/kinsyn-papers/tests/suite/configurable_mechanism.rs`.
 
 use crate::common;

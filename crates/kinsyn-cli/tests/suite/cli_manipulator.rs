@@ -581,7 +581,7 @@ fn edited(dir: &tempfile::TempDir, name: &str, edit: impl FnOnce(&mut Value)) ->
 
 #[test]
 fn committed_files_analyse_without_leg_warnings() {
-    // Issue 8: every committed file is meant to be generic, so its legs pass the leg check.
+    // Every committed file is meant to be generic, so its legs pass the leg check.
     for name in [
         "3-ups",
         "3-rps",
@@ -601,10 +601,10 @@ fn committed_files_analyse_without_leg_warnings() {
 
 #[test]
 fn a_singular_leg_is_warned_on_stderr_and_in_json() {
-    // Issue 8, bug 5: hand-written files get a leg-rank check. Leg 1 of the planar 3-RRR with its
-    // middle joint at the midpoint of its base and platform points: three z revolutes through
-    // collinear points, twists (z; p × z) linear in p, rank 2 there and 3 at generic joint
-    // values (tests/suite/manipulator.rs derives it). The analysis still runs; stdout is the analysis
+    // Hand-written files get a leg-rank check. Leg 1 of the planar 3-RRR with its middle joint at
+    // the midpoint of its base and platform points: three z revolutes through collinear points,
+    // twists (z; p × z) linear in p, rank 2 there and 3 at generic joint values
+    // (tests/suite/manipulator.rs derives it). The analysis still runs; stdout is the analysis
     // only, and each warning is one stderr line.
     let dir = tempfile::tempdir().unwrap();
     let path = edited(&dir, "3-rrr-planar", |v| {
@@ -648,8 +648,7 @@ fn a_singular_leg_is_warned_on_stderr_and_in_json() {
 
 #[test]
 fn parallel_marks_that_contradict_the_axes_are_one_line_exit_2() {
-    // Issue 8, bug 6: `RaRaRa` marks three parallel revolutes; an x axis among z axes is refused,
-    // naming the field.
+    // `RaRaRa` marks three parallel revolutes; an x axis among z axes is refused, naming the field.
     let dir = tempfile::tempdir().unwrap();
     let path = edited(&dir, "3-rrr-planar", |v| {
         v["legs"][2]["axes"][1] = serde_json::json!([1.0, 0.0, 0.0]);
@@ -681,10 +680,10 @@ fn parallel_marks_that_contradict_the_axes_are_one_line_exit_2() {
 
 #[test]
 fn build_fails_on_a_leg_that_is_singular_at_the_built_geometry() {
-    // Issue 8, bug 5: the C's revolute and the last R of CRR with axes zzzz both lie on the leg
-    // line (z), so joints 2 and 4 have equal twists at the reference (rank 3, 4 at generic joint
-    // values), and turning revolutes about z keeps every axis z. Once this wrote a file whose
-    // source claimed turned axes; now nothing is written.
+    // The C's revolute and the last R of CRR with axes zzzz both lie on the leg line (z), so joints
+    // 2 and 4 have equal twists at the reference (rank 3, 4 at generic joint values), and turning
+    // revolutes about z keeps every axis z. Once this wrote a file whose source claimed turned
+    // axes; now nothing is written.
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("crr.json");
     let o = kinsyn(&[
@@ -731,12 +730,12 @@ fn build_fails_on_a_leg_that_is_singular_at_the_built_geometry() {
 
 #[test]
 fn a_structure_is_called_one() {
-    // Issue 8 bug 3 mentions a 4-leg PPR built with `build`. Hand derivation: each PPR leg
-    // (sliders along its leg frame's x and y, revolute along z, the leg's direction) allows the
-    // planar motions G of the plane normal to its leg; two planar groups with non-parallel
-    // normals share no rotation and only the translations along the line where the planes meet,
-    // and three independent normals leave none. Four inclined legs: dof 0 everywhere, one
-    // answer from mobility and wrenches, and `analyze` says it is a structure.
+    // A 4-leg PPR built with `build`. Hand derivation: each PPR leg (sliders along its leg frame's
+    // x and y, revolute along z, the leg's direction) allows the planar motions G of the plane
+    // normal to its leg; two planar groups with non-parallel normals share no rotation and only the
+    // translations along the line where the planes meet, and three independent normals leave none.
+    // Four inclined legs: dof 0 everywhere, one answer from mobility and wrenches, and `analyze`
+    // says it is a structure.
     let dir = tempfile::tempdir().unwrap();
     let file = dir.path().join("ppr.json");
     let file = file.to_str().unwrap();
@@ -763,11 +762,11 @@ fn a_structure_is_called_one() {
 
 #[test]
 fn modes_print_the_parameters_of_the_groups() {
-    // Issue 8: a group's parameters in the text output. Hand derivation for the 3-UPS of
-    // mechanisms/ (platform radius 0.5 at height 1, legs at 0°, 120°, 240°): with legs 2 and 3
-    // fully locked and leg 1's α locked, the platform turns about the line through the S centres
-    // G2 = (−0.25, 0.433, 1) and G3 = (−0.25, −0.433, 1), along y; its point nearest the origin
-    // is (−0.25, 0, 1). The spherical 3-RRR's axes all pass through (0, 0, 0.5) (its source).
+    // A group's parameters in the text output. Hand derivation for the 3-UPS of mechanisms/
+    // (platform radius 0.5 at height 1, legs at 0°, 120°, 240°): with legs 2 and 3 fully locked and
+    // leg 1's α locked, the platform turns about the line through the S centres
+    // G2 = (−0.25, 0.433, 1) and G3 = (−0.25, −0.433, 1), along y; its point nearest the origin is
+    // (−0.25, 0, 1). The spherical 3-RRR's axes all pass through (0, 0, 0.5) (its source).
     let out = succeed(&["modes", "mechanisms/3-ups.json"]);
     let dof1 = dof_sections(&out).into_iter().find(|s| s.dof == 1).unwrap();
     assert!(
@@ -789,7 +788,7 @@ fn modes_print_the_parameters_of_the_groups() {
     );
 }
 
-// ---- Issue 9: `kinsyn modes` for analysts (--lock, --max-locks, --pose, limits, compact text) ----
+// ---- `kinsyn modes` for analysts (--lock, --max-locks, --pose, limits, compact text) ----
 
 /// `modes ARGS --json` as a JSON value (asserting success).
 fn modes_json(args: &[&str]) -> Value {

@@ -1,5 +1,5 @@
-//! The command line on descriptions with several moving bodies (`kinsyn-manipulator/2`,
-//! issue 10, item 5); the library side is in crates/kinsyn/tests/suite/platforms.rs.
+//! The command line on descriptions with several moving bodies (`kinsyn-manipulator/2`); the
+//! library side is in crates/kinsyn/tests/suite/platforms.rs.
 
 use crate::common;
 
@@ -51,12 +51,12 @@ fn the_command_line_refuses_bad_v2_files_in_one_line_and_names_bodies() {
     assert_eq!(v["leg_wrench_jacobians"], false);
 }
 
-/// `analyze --study` (issue 11, item 2) on the S-PM of paper 002, Table 1: row 1 (printed
-/// x = (1:0:0:0:0:0:0:0.75), y = (1:0:0:0:0:0:0:0.8)) assembles, and the stack report gives the
-/// twist-system order 3 that the loop closure gives as the end-effector's dof for the text's
-/// mechanism (the paper prints 5, which the table's 3-RPS-3-RPS reading gives: below, and
-/// docs/deviations.md, "Paper 002"); row 2's x is off the Study quadric (x·y = −0.4835,
-/// relative 0.21) and is refused in one line naming the body; one set for two bodies is refused.
+/// `analyze --study` on the S-PM of paper 002, Table 1: row 1 (printed x = (1:0:0:0:0:0:0:0.75),
+/// y = (1:0:0:0:0:0:0:0.8)) assembles, and the stack report gives the twist-system order 3 that the
+/// loop closure gives as the end-effector's dof for the text's mechanism (the paper prints 5, which
+/// the table's 3-RPS-3-RPS reading gives: below, and docs/deviations.md, "Paper 002"); row 2's x is
+/// off the Study quadric (x·y = −0.4835, relative 0.21) and is refused in one line naming the body;
+/// one set for two bodies is refused.
 #[test]
 fn analyze_takes_study_parameters_for_each_moving_body() {
     let file = "mechanisms/multibody/3-rps-3-spr.json";
@@ -220,9 +220,9 @@ fn nearest_takes_rounded_study_parameters_within_their_rounding() {
     assert_eq!(o.status.code(), Some(2));
 }
 
-/// `kinsyn stack` (issue 11, item 1): paper 002's S-PM made from its modules analyses with the
-/// hand mobility 6 (Grübler 6·14 − 6·13) and the first platform's 3 dof; a module that is not
-/// RPS or SPR, and radii that do not match the modules, are one-line errors.
+/// `kinsyn stack`: paper 002's S-PM made from its modules analyses with the hand mobility 6
+/// (Grübler 6·14 − 6·13) and the first platform's 3 dof; a module that is not RPS or SPR, and radii
+/// that do not match the modules, are one-line errors.
 #[test]
 fn stack_writes_a_series_parallel_description() {
     let dir = tempfile::tempdir().unwrap();

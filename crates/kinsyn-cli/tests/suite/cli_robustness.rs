@@ -1,6 +1,6 @@
-//! The command line survives anything (issue 9): a table of bad inputs, each of which must exit
-//! with code 2 and print exactly one line on stderr, and a regression test for each defect the
-//! issue reproduced (docs/limits.md lists the limits and error classes).
+//! The command line survives anything: a table of bad inputs, each of which must exit with code 2
+//! and print exactly one line on stderr, and a regression test for each defect found and
+//! reproduced (docs/limits.md lists the limits and error classes).
 
 use crate::common;
 

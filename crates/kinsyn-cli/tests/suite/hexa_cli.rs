@@ -1,5 +1,5 @@
-//! `kinsyn modes` and `kinsyn analyze` on paper 001's HEXA (`mechanisms/6-ruu-hexa.json`,
-//! issue 15), and `modes --legs` for its sub-mechanisms; the library side is in
+//! `kinsyn modes` and `kinsyn analyze` on paper 001's HEXA (`mechanisms/6-ruu-hexa.json`),
+//! and `modes --legs` for its sub-mechanisms; the library side is in
 //! `crates/kinsyn-papers/tests/suite/hexa_mechanism.rs`.
 
 use crate::common;

@@ -1,6 +1,6 @@
-//! Paper 003's configurable 4-RRR as data (`mechanisms/4-rrr-configurable.json`, issue 13 item
-//! 1): the file against the paper's geometry and Tables 1–2, its mobility by Grübler–Kutzbach,
-//! each link's planar motion, and the motion of one link relative to another.
+//! Paper 003's configurable 4-RRR as data (`mechanisms/4-rrr-configurable.json`): the file
+//! against the paper's geometry and Tables 1–2, its mobility by Grübler–Kutzbach, each link's
+//! planar motion, and the motion of one link relative to another.
 
 use kinsyn::manipulator::Manipulator;
 use kinsyn::mechanism::{ASSEMBLY_TOLERANCE, SampleSettings, log};

@@ -1,5 +1,5 @@
-//! Paper 003's velocities, three methods and one answer at the Table 2 configuration (issue 13
-//! item 4): the screw theory of §4 (eqs. 16–29, `configurable::velocity`), the loop-closure
+//! Paper 003's velocities, three methods and one answer at the Table 2 configuration: the
+//! screw theory of §4 (eqs. 16–29, `configurable::velocity`), the loop-closure
 //! Jacobian of the general mechanism graph built from `mechanisms/4-rrr-configurable.json`, and
 //! (in `tests/suite/configurable_velocity.rs`) finite differences of the forward position.
 

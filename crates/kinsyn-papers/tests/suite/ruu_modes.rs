@@ -1,4 +1,4 @@
-//! Operation modes of the 4-RUU (paper 004 §4, issue 14 — in progress): the coplanarity
+//! Operation modes of the 4-RUU (paper 004 §4): the coplanarity
 //! equations g1–g4 with the Study quadric g13 and the normalisation g14, at fixed random inputs,
 //! decomposed numerically (`homotopy::decompose`) and exactly (Singular's `minAssGTZ`, the
 //! paper's own tool, when installed).

@@ -1,4 +1,4 @@
-//! Self-motions and operation-mode changes of the 4-RUU (paper 004 §5.2–§6, issue 14): the
+//! Self-motions and operation-mode changes of the 4-RUU (paper 004 §5.2–§6): the
 //! solution set of `I = ⟨g1..g8, g13, g14⟩` in the eight Study parameters at **fixed inputs**,
 //! decomposed numerically (`homotopy::decompose`, witness sets + monodromy + trace test). Its
 //! positive-dimensional components are the self-motions; each is put in a mode by its points

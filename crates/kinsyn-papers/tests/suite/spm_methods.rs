@@ -1,4 +1,4 @@
-//! Paper 002 (issue 11, item 3): three methods, one answer. At the reference and at random
+//! Paper 002: three methods, one answer. At the reference and at random
 //! assemblies of `mechanisms/multibody/3-rps-3-spr.json`, the general loop-closure machinery
 //! (the mechanism graph: end-effector twist space, and the end-effector twist per unit rate of
 //! each input with the other five held) is compared with the paper's Jacobian `J_S-PM` (eqs. 2–7,
@@ -55,9 +55,8 @@ fn the_paper_jacobian_the_twist_system_and_the_loop_closure_agree() {
     agree("3-rps-3-spr");
 }
 
-/// Eq. 8 (n modules) against the loop closure for the 3-module stack 3-RPS-3-SPR-3-RPS: the
-/// 6 × 9 Jacobian equals the input–output Jacobian, and its rank is 6 (issue 11: "a 3-module
-/// stack: rank 6 at random configurations; the n-module formula equals the general machinery").
+/// Eq. 8 (n modules) against the loop closure for the 3-module stack 3-RPS-3-SPR-3-RPS: the 6 × 9
+/// Jacobian equals the input–output Jacobian, and its rank is 6 at random configurations.
 #[test]
 fn the_n_module_jacobian_equals_the_loop_closure_for_three_modules() {
     agree("3-rps-3-spr-3-rps");
@@ -120,11 +119,11 @@ fn only_module_stacks_read_as_series_parallel() {
     assert_eq!(read("../../mechanisms/multibody/3-rps-split.json"), None);
 }
 
-/// Each module alone is the 3-RPS of paper 000 §5 in form (issue 11; paper 002 eq. 9): the
-/// coupler's twists (the proximal module's, the distal legs leaving it free) are reciprocal
-/// to three independent pure forces, one per leg, through the S centre along the R axis — as
-/// the platform twists of `mechanisms/3-rps.json` are to its legs' forces. The forces are built
-/// from the joints of the assembled mechanism; the twists come from the loop closure.
+/// Each module alone is the 3-RPS of paper 000 §5 in form (paper 002 eq. 9): the coupler's twists
+/// (the proximal module's, the distal legs leaving it free) are reciprocal to three independent
+/// pure forces, one per leg, through the S centre along the R axis — as the platform twists of
+/// `mechanisms/3-rps.json` are to its legs' forces. The forces are built from the joints of the
+/// assembled mechanism; the twists come from the loop closure.
 #[test]
 fn each_module_has_the_constraint_forces_of_a_3_rps() {
     let check = |m: &Manipulator, body: usize, legs: std::ops::Range<usize>, what: &str| {
@@ -193,11 +192,11 @@ fn each_module_has_the_constraint_forces_of_a_3_rps() {
     check(&rps, rps.end_effector(), 0..3, "mechanisms/3-rps.json");
 }
 
-/// Stacks made by `manipulator::stacking::stack` (issue 11, item 1: "a general way to stack n
-/// parallel modules"): the paper's 3-RPS-3-SPR (h = 2, 1, 2) and a 3-RPS-3-SPR-3-RPS. Hand
-/// (Grübler, as for the committed files): mobility 6·(15 − 1) − 6·13 = 6 and 6·21 − 9·13 = 9;
-/// each module's platform 3 dof relative to the one below, the end-effector 6 (eq. 8, generic).
-/// The methods agree on the made files as on the committed ones.
+/// Stacks made by `manipulator::stacking::stack` (a general way to stack n parallel modules): the
+/// paper's 3-RPS-3-SPR (h = 2, 1, 2) and a 3-RPS-3-SPR-3-RPS. Hand (Grübler, as for the committed
+/// files): mobility 6·(15 − 1) − 6·13 = 6 and 6·21 − 9·13 = 9; each module's platform 3 dof
+/// relative to the one below, the end-effector 6 (eq. 8, generic). The methods agree on the made
+/// files as on the committed ones.
 #[test]
 fn stacks_made_from_modules_have_the_hand_mobility() {
     use ModuleKind::{Rps, Spr};

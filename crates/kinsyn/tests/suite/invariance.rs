@@ -1,4 +1,4 @@
-//! Invariances the manipulator analysis must have (issue 8), on every manipulator of the
+//! Invariances the manipulator analysis must have, on every manipulator of the
 //! hand-written library (`tests/library/`) and of `mechanisms/`:
 //!
 //! - **unit invariance**: a manipulator with every length multiplied by 10^k, k ∈ [−9, 9], is the

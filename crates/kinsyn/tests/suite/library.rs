@@ -1,4 +1,4 @@
-//! The library of hand-written manipulators (`tests/library/*.json`, issue 8): for each file,
+//! The library of hand-written manipulators (`tests/library/*.json`): for each file,
 //!
 //! - **dof and motion pattern** from the literature (each file's `source` and the comment at its
 //!   test cite the paper or give the first-principles derivation), checked against the
@@ -477,8 +477,8 @@ library!(
 
 #[test]
 fn the_library_has_at_least_twelve_hand_written_files_with_a_source() {
-    // Issue 8: at least 12 manipulators written by hand, each citing its source; none is the
-    // output of `kinsyn build` (whose `source` is the command).
+    // At least 12 manipulators written by hand, each citing its source; none is the output of
+    // `kinsyn build` (whose `source` is the command).
     let mut count = 0;
     for entry in std::fs::read_dir("tests/library").unwrap() {
         let path = entry.unwrap().path();
@@ -499,11 +499,12 @@ fn the_library_has_at_least_twelve_hand_written_files_with_a_source() {
 
 #[test]
 fn finite_differences_of_the_couple_constrained_legs_match_hand_derived_rates() {
-    // The finite-difference method itself, checked where kinsyn's J_I is in doubt (issue 8 bug
-    // 1): at the reference, along the platform motions the literature allows (translations;
-    // for the 4-RUU also the rotation about z through P), each input's rate from assemble_at
-    // equals a rate derived by hand from the leg's geometry, with v_C = v_P + ω × (C − P) the
-    // velocity of the leg's platform point C:
+    // The finite-difference method itself, checked where kinsyn's J_I is in doubt (legs constrained
+    // by couples, where it was wrong before the trustworthy manipulator analysis): at the
+    // reference, along the platform motions the literature allows (translations; for the 4-RUU also
+    // the rotation about z through P), each input's rate from assemble_at equals a rate derived by
+    // hand from the leg's geometry, with v_C = v_P + ω × (C − P) the velocity of the leg's platform
+    // point C:
     // - 3-UPU: the slider is the distance |C − A| of the U centres, so ḋ = f·v_C, f = (C − A)/|C − A|;
     // - 3-CRR and the CRR legs of the 2-dof translational one: revolutes about axes parallel to u move no point along u, so u·(C − A) changes by
     //   the slider alone: ḋ = u·v_C;

@@ -473,9 +473,9 @@ fn a_similar_hexagon_gough_stewart_platform_is_singular_everywhere() {
 
 #[test]
 fn modes_of_the_three_ups_cover_all_64_lock_subsets() {
-    // Issue 4: `kinsyn modes` on the 3-UPS enumerates 2^6 lock subsets; the dof with k inputs
-    // locked is 6 − k near the reference (each locked input removes one, the legs being
-    // non-singular there), and 1T2R is reached exactly by locking the three α (§5.2).
+    // `kinsyn modes` on the 3-UPS enumerates 2^6 lock subsets; the dof with k inputs locked is
+    // 6 − k near the reference (each locked input removes one, the legs being non-singular there),
+    // and 1T2R is reached exactly by locking the three α (§5.2).
     let m = load("3-ups");
     let modes = m.modes(&SampleSettings::default()).unwrap();
     assert_eq!(modes.modes.len(), 64);
@@ -570,10 +570,10 @@ fn a_three_rps_with_radial_revolutes_is_constraint_singular_at_the_horizontal_po
 
 #[test]
 fn every_verified_catalogue_chain_builds_a_six_dof_manipulator() {
-    // Issue 4: `kinsyn build` must give a geometry in which any catalogue chain can be tried as a
-    // leg. A 3T3R leg (rank 6) allows every platform twist, so three of them leave the platform
-    // its six dof (the intersection of three full twist systems) — unless the built geometry is
-    // special. Checked for all 446 verified chains at the reference configuration.
+    // `kinsyn build` must give a geometry in which any catalogue chain can be tried as a leg. A
+    // 3T3R leg (rank 6) allows every platform twist, so three of them leave the platform its six
+    // dof (the intersection of three full twist systems) — unless the built geometry is special.
+    // Checked for all 446 verified chains at the reference configuration.
     use kinsyn::catalogue::Catalogue;
     use kinsyn::manipulator::build::{BuildSpec, build};
     let cat = Catalogue::generate(
@@ -597,11 +597,12 @@ fn every_verified_catalogue_chain_builds_a_six_dof_manipulator() {
 
 #[test]
 fn the_three_prrr_sliders_drive_the_platform() {
-    // Issue 8 bug 1: each PRRR leg's constraints are two couples (perpendicular to its axis
-    // direction u_i), and the old wrench selection took one of them as the slider's actuation
-    // wrench (J_I = 0, false inverse and architecture singularities). Hand derivation: a force
-    // along u_i is reciprocal to the three revolutes (parallel lines) and does work 1 on the
-    // slider (f·u_i = 1), so J_I = 1 and the row's force is u_i (up to the row's sign).
+    // Fixed with the trustworthy manipulator analysis: each PRRR leg's constraints are two couples
+    // (perpendicular to its axis direction u_i), and the old wrench selection took one of them as
+    // the slider's actuation wrench (J_I = 0, false inverse and architecture singularities). Hand
+    // derivation: a force along u_i is reciprocal to the three revolutes (parallel lines) and does
+    // work 1 on the slider (f·u_i = 1), so J_I = 1 and the row's force is u_i (up to the row's
+    // sign).
     let d = description("3-prrr");
     let m = load("3-prrr");
     let a = m
@@ -639,10 +640,10 @@ fn the_three_prrr_sliders_drive_the_platform() {
 
 #[test]
 fn extreme_units_give_the_answers_of_the_metre() {
-    // Issue 8 bug 2: the 3-PRRR with lengths ×1e±3 gave other ranks and singularities, and the
-    // 3-UPS ×1e-9 "platform dof 5" with every input without effect. A unit is a choice: the
-    // answers at ×1e-9 and ×1e9 must be those of the file (tests/suite/invariance.rs checks every
-    // file and exponent; these are the reported cases).
+    // Fixed with the trustworthy manipulator analysis: the 3-PRRR with lengths ×1e±3 gave other
+    // ranks and singularities, and the 3-UPS ×1e-9 "platform dof 5" with every input without
+    // effect. A unit is a choice: the answers at ×1e-9 and ×1e9 must be those of the file
+    // (tests/suite/invariance.rs checks every file and exponent; these are the reported cases).
     for name in ["3-prrr", "3-ups"] {
         let summary = |m: &Manipulator| {
             let a = m
@@ -667,12 +668,12 @@ fn extreme_units_give_the_answers_of_the_metre() {
 
 #[test]
 fn a_leg_singular_reference_has_one_dof_and_is_flagged() {
-    // Issue 8 bug 3: the planar 3-RRR with its `points` removed puts each leg's middle joint on
-    // the line from base to platform. Hand derivation: three parallel revolutes through
-    // collinear points span only two twists (the leg cannot move along its line), each
-    // revolute depends on the other two, and three such legs meeting the platform at points
-    // whose lines are not concurrent leave it no instantaneous motion: platform dof 0 (not 3),
-    // while the joint rates keep 3 internal motions. The old code printed "platform dof 3
+    // Fixed with the trustworthy manipulator analysis: the planar 3-RRR with its `points` removed
+    // puts each leg's middle joint on the line from base to platform. Hand derivation: three
+    // parallel revolutes through collinear points span only two twists (the leg cannot move along
+    // its line), each revolute depends on the other two, and three such legs meeting the platform
+    // at points whose lines are not concurrent leave it no instantaneous motion: platform dof 0
+    // (not 3), while the joint rates keep 3 internal motions. The old code printed "platform dof 3
     // (twist space) = 0 (wrenches)" and no singularity.
     use kinsyn::manipulator::SingularityKind::{Inverse, Leg};
     let mut d = description("3-rrr-planar");
@@ -705,12 +706,12 @@ fn a_leg_singular_reference_has_one_dof_and_is_flagged() {
 
 #[test]
 fn the_three_ppps_reaches_no_helical_motion() {
-    // Issue 8 bug 4: a 3-PPPS built from T1-001 (three sliders and a spherical joint per leg)
-    // reported "5 of the 12 kinds (E R H S D)" for some seeds; H was a one-dof walk whose
-    // samples coincided. First principles: every joint axis of the legs is fixed in direction
-    // (three sliders) or passes through one point of the platform (the S), so a one-dof motion
-    // with legs locked is a rotation about a line through S centres, never a screw motion of
-    // non-zero pitch. Over 20 seeds the kinds reached are the same and never include H.
+    // Fixed with the trustworthy manipulator analysis: a 3-PPPS built from T1-001 (three sliders
+    // and a spherical joint per leg) reported "5 of the 12 kinds (E R H S D)" for some seeds; H was
+    // a one-dof walk whose samples coincided. First principles: every joint axis of the legs is
+    // fixed in direction (three sliders) or passes through one point of the platform (the S), so a
+    // one-dof motion with legs locked is a rotation about a line through S centres, never a screw
+    // motion of non-zero pitch. Over 20 seeds the kinds reached are the same and never include H.
     use kinsyn::manipulator::build::{BuildSpec, build};
     let d = build(&BuildSpec {
         chain: "T1-001".into(),
@@ -736,7 +737,7 @@ fn the_three_ppps_reaches_no_helical_motion() {
     );
 }
 
-// ---- Issue 8, bugs 5 and 6: leg checks and parallel marks ----
+// ---- Leg checks and parallel marks ----
 
 /// The committed file `name` as JSON with `edit` applied, built into a manipulator.
 fn edited(
@@ -824,10 +825,11 @@ fn committed_files_have_generic_legs() {
 
 #[test]
 fn a_planar_rrr_leg_with_collinear_joint_points_is_singular_at_the_reference() {
-    // Issue 8, bug 5 (hand-written files get no leg check). Three revolutes along z through
-    // p1, p2 = (p1 + p3)/2, p3 have twists (z; p_i × z), linear in p_i: column 2 is the mean of
-    // columns 1 and 3, rank 2, all three joints in the dependency. Turned by any angle at the
-    // middle joint, p3 leaves the line and the rank is 3 (= joints: no dependency everywhere).
+    // Hand-written files got no leg check before the trustworthy manipulator analysis. Three
+    // revolutes along z through p1, p2 = (p1 + p3)/2, p3 have twists (z; p_i × z), linear in p_i:
+    // column 2 is the mean of columns 1 and 3, rank 2, all three joints in the dependency. Turned
+    // by any angle at the middle joint, p3 leaves the line and the rank is 3 (= joints: no
+    // dependency everywhere).
     let m = edited("3-rrr-planar", collinear_planar).unwrap();
     let checks = m.leg_checks();
     assert_eq!(
@@ -870,9 +872,8 @@ fn a_ups_leg_whose_u_turns_about_the_leg_has_dependent_joints_everywhere() {
 
 #[test]
 fn leg_checks_do_not_depend_on_the_length_unit_or_the_origin() {
-    // Issue 8 asks for unit-free ranks: the twists are made dimensionless with the leg's
-    // characteristic length, so scaling every length by 10^k and moving the origin changes no
-    // rank and no warning.
+    // Ranks are unit-free: the twists are made dimensionless with the leg's characteristic length,
+    // so scaling every length by 10^k and moving the origin changes no rank and no warning.
     type Edit = fn(&mut serde_json::Value);
     let files: Vec<(&str, Edit)> = vec![
         ("3-rrr-planar", |_| {}),
@@ -907,8 +908,8 @@ fn leg_checks_do_not_depend_on_the_length_unit_or_the_origin() {
 
 #[test]
 fn parallel_marks_are_checked_against_the_axes() {
-    // Issue 8, bug 6: `RaRaRa` says the three revolutes are parallel (docs/notation.md). Leg 1
-    // of the planar 3-RRR with its second axis along x instead of z contradicts it (90° apart).
+    // `RaRaRa` says the three revolutes are parallel (docs/notation.md). Leg 1 of the planar 3-RRR
+    // with its second axis along x instead of z contradicts it (90° apart).
     let e = edited("3-rrr-planar", |v| {
         v["legs"][0]["axes"][1] = serde_json::json!([1.0, 0.0, 0.0]);
     })
@@ -954,13 +955,14 @@ fn parallel_marks_are_checked_against_the_axes() {
 
 #[test]
 fn build_refuses_a_singular_leg_instead_of_claiming_turned_axes() {
-    // Issue 8, bug 5: `build --chain CRR --axes zzzz --actuated 1` wrote "axes turned" with the
-    // axes unchanged. Hand derivation: z is the leg line, from the base point (the C) to the
-    // platform point (the last R), so the C's revolute and the last revolute are the same line:
-    // equal twists, joints 2 and 4 dependent, rank 3 of 4 at the reference. At generic values the
-    // middle revolute moves the last axis off the C's (three parallel revolutes through
-    // non-collinear points give ω_z and two translations, the slider the third): rank 4. Turning
-    // revolutes about z axes leaves z axes z, so no turn can help: `build` fails.
+    // Before the trustworthy manipulator analysis, `build --chain CRR --axes zzzz --actuated 1`
+    // wrote "axes turned" with the axes unchanged. Hand derivation: z is the leg line, from the
+    // base point (the C) to the platform point (the last R), so the C's revolute and the last
+    // revolute are the same line: equal twists, joints 2 and 4 dependent, rank 3 of 4 at the
+    // reference. At generic values the middle revolute moves the last axis off the C's (three
+    // parallel revolutes through non-collinear points give ω_z and two translations, the slider the
+    // third): rank 4. Turning revolutes about z axes leaves z axes z, so no turn can help: `build`
+    // fails.
     use kinsyn::manipulator::build::{BuildSpec, build};
     let spec = |chain: &str, axes: &str| BuildSpec {
         chain: chain.into(),
@@ -968,8 +970,8 @@ fn build_refuses_a_singular_leg_instead_of_claiming_turned_axes() {
         actuated: Some(vec![1]),
         ..Default::default()
     };
-    // The library's typed error, worded with the CLI's option names (issue 10: flag names are
-    // the front end's, `BuildError::describe`).
+    // The library's typed error, worded with the CLI's option names (flag names are the front
+    // end's, `BuildError::describe`).
     let cli = |e: kinsyn::manipulator::build::BuildError| {
         e.describe(|f| format!("--{}", f.name().replace('_', "-")))
     };
@@ -1013,11 +1015,11 @@ fn build_refuses_a_singular_leg_instead_of_claiming_turned_axes() {
 
 #[test]
 fn the_platform_twists_from_the_wrenches_are_those_of_the_loop_closure() {
-    // One dof, one answer (issue 8): the platform's twists are computed once, as the twists
-    // reciprocal to the constraint rows of J_D. Second method: the platform's twists over the
-    // joint rates that close every loop (the intersection of the legs' twist systems). The two
-    // spans must be the same subspace, for every file of mechanisms/ and tests/library/, at the
-    // reference and along the finite motion.
+    // One dof, one answer: the platform's twists are computed once, as the twists reciprocal to the
+    // constraint rows of J_D. Second method: the platform's twists over the joint rates that close
+    // every loop (the intersection of the legs' twist systems). The two spans must be the same
+    // subspace, for every file of mechanisms/ and tests/library/, at the reference and along the
+    // finite motion.
     let mut paths: Vec<std::path::PathBuf> = ["../../mechanisms", "tests/library"]
         .iter()
         .flat_map(|d| std::fs::read_dir(d).unwrap().map(|e| e.unwrap().path()))
@@ -1061,7 +1063,7 @@ fn the_platform_twists_from_the_wrenches_are_those_of_the_loop_closure() {
     }
 }
 
-// ---- Issue 9: modes from any start, of chosen lock subsets, with progress ----
+// ---- Modes from any start, of chosen lock subsets, with progress ----
 
 #[test]
 fn lock_subsets_are_the_binomial_sums_in_order() {
@@ -1196,7 +1198,7 @@ fn a_description_reads_its_numbers_exactly_and_its_own_json_back() {
     }
 }
 
-// ---- Issue 10, item 4: catalogue ids resolved through a lookup, not by synthesis ----
+// ---- Catalogue ids resolved through a lookup, not by synthesis ----
 
 #[test]
 fn the_committed_lookup_gives_every_synthesised_entry() {
@@ -1273,9 +1275,9 @@ fn a_catalogue_id_builds_the_same_manipulator_as_the_synthesised_catalogue() {
     assert!(a.contains("legs[2].chain") && a.contains("T9-999"), "{a}");
 }
 
-/// Issue 10, item 8: the library's build errors name the spec's fields (`base_radius`), never
-/// the CLI's options (`--base-radius`); the CLI words them with its options through
-/// `BuildError::describe` (`tests/suite/cli_manipulator.rs` checks those texts).
+/// The library's build errors name the spec's fields (`base_radius`), never the CLI's options
+/// (`--base-radius`); the CLI words them with its options through `BuildError::describe`
+/// (`tests/suite/cli_manipulator.rs` checks those texts).
 #[test]
 fn build_errors_name_spec_fields_not_cli_options() {
     use kinsyn::manipulator::build::{BuildField, BuildSpec, build};

@@ -227,7 +227,8 @@ proptest! {
         // Independent method: the 4×4 matrix exponential (nalgebra's Padé approximant with
         // scaling and squaring) of the twist's matrix [[ω]× v; 0 0]. The closed form must agree
         // to round-off at every angle, including the small ones where (1 − cos θ)/θ² and
-        // (θ − sin θ)/θ³ cancel catastrophically when evaluated directly (issue 8 review).
+        // (θ − sin θ)/θ³ cancel catastrophically when evaluated directly (a loss of precision
+        // fixed with the trustworthy manipulator analysis).
         let w = Vector3::from(w);
         prop_assume!(w.norm() > 0.1);
         let w = w.normalize() * angle;
@@ -267,10 +268,11 @@ fn patterns_over_seeds(m: &Mechanism, body: usize) -> std::collections::BTreeSet
 
 #[test]
 fn one_dof_motions_are_never_mistaken_for_groups() {
-    // Issue 8 bug 4: one-dof walks of ±0.1 made the samples coincide for about one seed in
-    // eight, and any motion then "agreed" with itself. First principles: a planar four-bar's
-    // crank turns about its fixed pivot, R(z) through (0, 0); its coupler turns about a moving
-    // instantaneous centre, one rotation and no fixed axis: 0T1R, not a group, for every seed.
+    // Fixed with the trustworthy manipulator analysis: one-dof walks of ±0.1 made the samples
+    // coincide for about one seed in eight, and any motion then "agreed" with itself. First
+    // principles: a planar four-bar's crank turns about its fixed pivot, R(z) through (0, 0); its
+    // coupler turns about a moving instantaneous centre, one rotation and no fixed axis: 0T1R, not
+    // a group, for every seed.
     let m = four_bar();
     let crank = patterns_over_seeds(&m, 1);
     assert_eq!(crank.into_iter().collect::<Vec<_>>(), ["R(z)"]);
@@ -353,10 +355,10 @@ fn a_classification_reports_the_gap_of_its_rank_decisions() {
 
 #[test]
 fn assembly_settings_default_to_the_assembly_constants() {
-    // Issue 10, item 6: the assembly's tolerance and step counts are named settings. The default
-    // is what assemble_to has always used (1e-10, 100 steps, 2 polishing steps), and assembling
-    // with it gives bit for bit what assemble_to gives; a looser tolerance with no polishing
-    // stops once the residual is below it, and no step at all refuses an open loop.
+    // The assembly's tolerance and step counts are named settings. The default is what assemble_to
+    // has always used (1e-10, 100 steps, 2 polishing steps), and assembling with it gives bit for
+    // bit what assemble_to gives; a looser tolerance with no polishing stops once the residual is
+    // below it, and no step at all refuses an open loop.
     use kinsyn::mechanism::{ASSEMBLY_STEPS, ASSEMBLY_TOLERANCE, AssemblySettings};
     let d = AssemblySettings::default();
     assert_eq!(

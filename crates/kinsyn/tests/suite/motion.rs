@@ -131,8 +131,8 @@ fn schoenflies_and_translating_screw() {
 
 #[test]
 fn ppps_locks_give_t3_and_s() {
-    // Issue 3, hand derivation: PPPS with the S locked translates (T3); with the three P locked
-    // it turns about the centre of the S (S(N)).
+    // Hand derivation: PPPS with the S locked translates (T3); with the three P locked it turns
+    // about the centre of the S (S(N)).
     let n = v(0.5, -0.2, 0.3);
     let o = v(0., 0., 0.);
     let c = chain(&[
@@ -153,8 +153,8 @@ fn ppps_locks_give_t3_and_s() {
 
 #[test]
 fn redundant_parallel_guides_are_not_3t3r() {
-    // Issue 3: two guides that stay parallel translate along one line; with three R the chain
-    // has rank 5 and one of the guides is idle.
+    // Two guides that stay parallel translate along one line; with three R the chain has rank 5 and
+    // one of the guides is idle.
     let n = v(0.3, 0.1, 0.2);
     let o = v(0., 0., 0.);
     let c = chain(&[
@@ -220,9 +220,9 @@ proptest! {
         let (word, axes, blocks) = words[(seed % 3) as usize];
         let c = SerialChain::from_layout(word, axes, blocks, &mut rng).unwrap();
         let moved = c.transformed(&Rotation3::from_euler_angles(ax, ay, az), &Vector3::new(tx, -tx, 0.5));
-        // Sample configurations differ between the two (another seed): the classification of
-        // every lock subset must not. (The verification's sampler keeps samples apart; samples
-        // that nearly coincide prove no group, issue 8.)
+        // Sample configurations differ between the two (another seed): the classification of every
+        // lock subset must not. (The verification's sampler keeps samples apart; samples that
+        // nearly coincide prove no group: docs/verification.md.)
         let q1 = configurations(&c, &Settings::default(), seed + 1);
         let q2 = configurations(&c, &Settings::default(), seed + 2);
         let kind = |p: &Pattern| match p {

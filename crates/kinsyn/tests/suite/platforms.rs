@@ -1,4 +1,4 @@
-//! Mechanisms with several moving bodies (issue 10, item 5): the description format
+//! Mechanisms with several moving bodies: the description format
 //! `kinsyn-manipulator/2`, its reading of `/1` files, and the mobility and dof of stacked
 //! modules and split platforms against hand derivations (Grübler–Kutzbach and the constraints
 //! each leg imposes). docs/mechanism-format.md, "Format /2".

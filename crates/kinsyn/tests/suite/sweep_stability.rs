@@ -1,7 +1,8 @@
-//! Seed stability of the sweep's rows (issue 17): a design's group kinds and its singular-start
+//! Seed stability of the sweep's rows: a design's group kinds and its singular-start
 //! lock sets must not depend on the seed of the random walks. Before singular starts were set
 //! apart, two seeds gave different group kinds for 217 of the 9261 designs of the 3-legged
-//! sweep; these designs are among them (docs/deviations.md, "What issue 17 changed").
+//! sweep; these designs are among them (docs/deviations.md, "What the catalogue-wide sweep
+//! changed").
 
 use kinsyn::catalogue::Catalogue;
 use kinsyn::mechanism::SampleSettings;

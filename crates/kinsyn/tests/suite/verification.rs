@@ -68,9 +68,9 @@ fn an_unaligned_query_finds_each_typed_direction() {
 
 #[test]
 fn verified_entries_have_a_clear_rank_6_and_rejected_ones_a_clear_rank_5() {
-    // Issue 3: every verified entry has rank 6 at every sample with a clear gap; every rejected
-    // entry drops a singular value to round-off. Independent check: the finite-difference
-    // Jacobian at a fresh random configuration has the same rank (5 or 6) with a wide margin.
+    // Every verified entry has rank 6 at every sample with a clear gap; every rejected entry drops
+    // a singular value to round-off. Independent check: the finite-difference Jacobian at a fresh
+    // random configuration has the same rank (5 or 6) with a wide margin.
     let cat = catalogue();
     let mut rejected = 0;
     for e in &cat.entries {
