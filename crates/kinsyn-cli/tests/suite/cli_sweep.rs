@@ -489,6 +489,82 @@ fn the_parquet_file_holds_the_jsonl_rows() {
     assert_eq!(n, 2 * 21);
 }
 
+/// The encoder on more rows than one row group holds, with errors and empty lists, read back
+/// by the parquet crate's record reader: groups of 16,384 rows and the rest, every design
+/// index, error (null or text) and list length in its row.
+#[test]
+fn a_table_of_more_than_one_row_group_reads_back_row_by_row() {
+    use kinsyn::sweep::DesignRow;
+    use parquet::file::reader::{FileReader, SerializedFileReader};
+    use parquet::record::Field;
+    let dir = temp();
+    let out = dir.path().join("p");
+    sweep(&out, &["--chains", "T1-001,T4-034", "--actuated", "1,2"]);
+    let manifest: kinsyn_report::sweep::Manifest =
+        serde_json::from_str(&std::fs::read_to_string(out.join("sweep.json")).unwrap()).unwrap();
+    let base: Vec<DesignRow> = std::fs::read_to_string(out.join("designs.jsonl"))
+        .unwrap()
+        .lines()
+        .map(|l| serde_json::from_str(l).unwrap())
+        .collect();
+    // Every third row failed (an error, its lists empty); the others as the sweep gave them.
+    let rows: Vec<DesignRow> = (0..16_384 + 5)
+        .map(|i| {
+            let mut r = base[i % base.len()].clone();
+            r.design = i;
+            if i % 3 == 0 {
+                r.error = Some(format!("failed {i}"));
+                r.actuated.clear();
+                r.group_kinds.clear();
+                r.singular_lock_sets.clear();
+            }
+            r
+        })
+        .collect();
+    assert!(
+        rows.iter()
+            .any(|r| r.error.is_none() && !r.actuated.is_empty())
+    );
+    let refs: Vec<&DesignRow> = rows.iter().collect();
+    let file = dir.path().join("big.parquet");
+    std::fs::write(&file, kinsyn_cli::parquet_bytes(&manifest, &refs).unwrap()).unwrap();
+    let reader = SerializedFileReader::new(std::fs::File::open(&file).unwrap()).unwrap();
+    let groups: Vec<i64> = reader
+        .metadata()
+        .row_groups()
+        .iter()
+        .map(parquet::file::metadata::RowGroupMetaData::num_rows)
+        .collect();
+    assert_eq!(groups, [16_384, 5]);
+    let mut n = 0;
+    for record in reader.get_row_iter(None).unwrap() {
+        let record = record.unwrap();
+        let cells: std::collections::BTreeMap<&str, &Field> = record
+            .get_column_iter()
+            .map(|(k, v)| (k.as_str(), v))
+            .collect();
+        let row = &rows[n];
+        assert_eq!(uint32_cell(cells["design"]), n as u64);
+        match (cells["error"], &row.error) {
+            (Field::Null, None) => {}
+            (field, Some(e)) => assert_eq!(string_cell(field), e),
+            (field, None) => panic!("row {n}: error {field:?} where the row has none"),
+        }
+        assert_eq!(
+            list_cell(cells["actuated"]).len(),
+            row.actuated.len(),
+            "row {n}"
+        );
+        assert_eq!(list_cell(cells["group_kinds"]).len(), row.group_kinds.len());
+        assert_eq!(
+            list_cell(cells["singular_lock_sets"]).len(),
+            row.singular_lock_sets.len()
+        );
+        n += 1;
+    }
+    assert_eq!(n, rows.len());
+}
+
 #[test]
 fn bad_input_is_refused_in_one_line() {
     let dir = temp();
