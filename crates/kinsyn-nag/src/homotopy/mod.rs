@@ -708,8 +708,11 @@ pub(crate) fn scaled_inverse_condition(mut jacobian: DMatrix<C64>, scales: &[f64
     }
 }
 
-/// `|a − b| / (1 + |a|)`: how far apart two points are, relative to the first one's size.
-pub(crate) fn relative_distance(a: &[C64], b: &[C64]) -> f64 {
+/// `|a − b| / (1 + |a|)`: how far apart two points are, relative to the first one's size (so
+/// not symmetric), for points with the same number of coordinates. The solvers tell endpoints
+/// and witness points apart by it.
+#[must_use]
+pub fn relative_distance(a: &[C64], b: &[C64]) -> f64 {
     let d: f64 = a
         .iter()
         .zip(b)

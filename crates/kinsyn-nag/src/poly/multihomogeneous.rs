@@ -20,7 +20,7 @@ pub const MAX_GROUP_STATES: u64 = 1 << 16;
 /// documentation): a state is the number of equations given to each group so far, indexed in
 /// mixed radix (group `j`'s digit in base `n_j + 1`).
 #[derive(Debug, Clone)]
-pub(crate) struct Assignments {
+pub struct Assignments {
     sizes: Vec<usize>,
     strides: Vec<usize>,
     /// `completes[i][s]`: whether equations `i, i + 1, …` can be assigned from state `s` so
@@ -32,7 +32,11 @@ pub(crate) struct Assignments {
 impl Assignments {
     /// The assignments for the degrees `d[i][j]` of equation `i` in group `j` and the group
     /// sizes; `None` when the states exceed [`MAX_GROUP_STATES`].
-    pub(crate) fn new(degrees: &[Vec<u32>], sizes: &[usize]) -> Option<Self> {
+    ///
+    /// # Panics
+    /// If an equation has more degrees than there are groups.
+    #[must_use]
+    pub fn new(degrees: &[Vec<u32>], sizes: &[usize]) -> Option<Self> {
         let mut strides = Vec::with_capacity(sizes.len());
         let mut states: u64 = 1;
         for n in sizes {
@@ -74,13 +78,19 @@ impl Assignments {
 
     /// The multi-homogeneous Bézout number: the sum over complete assignments of the product
     /// of the chosen degrees (saturating at `u128::MAX`).
-    pub(crate) fn count(&self) -> u128 {
+    #[must_use]
+    pub fn count(&self) -> u128 {
         self.count
     }
 
     /// Whether equation `i` may go to group `j` from state `state`, the rest still completing:
-    /// the next state if so.
-    pub(crate) fn step(&self, i: usize, state: usize, j: usize) -> Option<usize> {
+    /// the next state if so. The walk starts from the empty assignment, state 0, with
+    /// equation 0.
+    ///
+    /// # Panics
+    /// If `j` is not a group; possibly if `i` is not an equation or `state` not a state.
+    #[must_use]
+    pub fn step(&self, i: usize, state: usize, j: usize) -> Option<usize> {
         let used = (state / self.strides[j]) % (self.sizes[j] + 1);
         let next = state + self.strides[j];
         (used < self.sizes[j] && self.completes[i + 1][next]).then_some(next)
