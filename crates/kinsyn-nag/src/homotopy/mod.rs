@@ -27,7 +27,9 @@
 //! assert_eq!(report.at_infinity(), 0, "Bézout's 2 paths, both finite");
 //! ```
 
-mod nearby;
+// Public for the tests in tests/suite/; not part of the API.
+#[doc(hidden)]
+pub mod nearby;
 mod parameter;
 mod real_branch;
 mod regeneration;

@@ -11,8 +11,9 @@ use std::collections::BTreeSet;
 
 /// Points by their value of `ℓ(z) = Σ Re(c_i z_i)`, `c_i` on the unit circle at the golden
 /// angle's multiples (generic, and the same every run), with an id each.
+// Public for the tests in tests/suite/; not part of the API.
 #[derive(Debug, Default)]
-pub(crate) struct NearPoints {
+pub struct NearPoints {
     sorted: BTreeSet<(i64, usize)>,
 }
 
@@ -33,14 +34,16 @@ fn form(z: &[C64]) -> f64 {
 
 /// An integer whose order is that of the finite doubles (the bits of a negative double
 /// reversed): a key of the sorted set.
-fn ordered(x: f64) -> i64 {
+// Public for the tests in tests/suite/; not part of the API.
+#[must_use]
+pub fn ordered(x: f64) -> i64 {
     let bits = x.to_bits().cast_signed();
     bits ^ ((bits >> 63).cast_unsigned() >> 1).cast_signed()
 }
 
 impl NearPoints {
     /// Adds the point `z` under `id`.
-    pub(crate) fn insert(&mut self, id: usize, z: &[C64]) {
+    pub fn insert(&mut self, id: usize, z: &[C64]) {
         self.sorted.insert((ordered(form(z)), id));
     }
 
@@ -48,7 +51,8 @@ impl NearPoints {
     /// way (`|y − z| ≤ tolerance · (1 + |z|)` or `≤ tolerance · (1 + |y|)`), in the order of
     /// `ℓ`; a superset, to be checked with the distance itself. For `tolerance < 1`; every
     /// point when `z` is not finite.
-    pub(crate) fn candidates(&self, z: &[C64], tolerance: f64) -> Vec<usize> {
+    #[must_use]
+    pub fn candidates(&self, z: &[C64], tolerance: f64) -> Vec<usize> {
         let size = z.iter().map(C64::norm_sqr).sum::<f64>().sqrt();
         // |ℓ(y) − ℓ(z)| ≤ √n |y − z|, and |y| ≤ (|z| + tolerance) / (1 − tolerance) when y is
         // within the tolerance relative to its own size; a margin covers the rounding of ℓ.

@@ -199,6 +199,22 @@ impl Program {
         self.len == 0
     }
 
+    /// The number of distinct monomials, those of the equations and of their derivatives.
+    // Public for the tests in tests/suite/; not part of the API.
+    #[doc(hidden)]
+    #[must_use]
+    pub fn monomial_count(&self) -> usize {
+        self.monomials.len()
+    }
+
+    /// The number of factors (powers of variables) of all the monomials together.
+    // Public for the tests in tests/suite/; not part of the API.
+    #[doc(hidden)]
+    #[must_use]
+    pub fn factor_count(&self) -> usize {
+        self.factors.len()
+    }
+
     /// A workspace for evaluations over `S`.
     #[must_use]
     pub fn workspace<S: Scalar>(&self) -> Workspace<S> {
