@@ -96,39 +96,3 @@ impl Assignments {
         (used < self.sizes[j] && self.completes[i + 1][next]).then_some(next)
     }
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// Two bilinear equations in groups {x}, {y}: the assignments are (x, y) and (y, x), each
-    /// of weight 1·1: 2. Three equations of degrees (2, 1) in groups of sizes 2 and 1: the
-    /// group of one variable takes one of the three equations (weight 1), the other two go to
-    /// the first group (weight 2·2): 3 · 4 = 12.
-    #[test]
-    fn counts_by_hand() {
-        let a = Assignments::new(&[vec![1, 1], vec![1, 1]], &[1, 1]).unwrap();
-        assert_eq!(a.count(), 2);
-        let b = Assignments::new(&[vec![2, 1], vec![2, 1], vec![2, 1]], &[2, 1]).unwrap();
-        assert_eq!(b.count(), 12);
-    }
-
-    /// Equations that cannot fill the groups count 0, and no first step completes. Here the
-    /// second group (one variable) appears in no equation.
-    #[test]
-    fn no_assignment_completes_when_a_group_is_left_out() {
-        let a = Assignments::new(&[vec![1, 0], vec![1, 0]], &[1, 1]).unwrap();
-        assert_eq!(a.count(), 0);
-        assert_eq!(a.step(0, 0, 0), None);
-    }
-
-    /// Sixteen groups of one variable are 2^16 states, the limit; seventeen are refused. With
-    /// every degree 1 the count is the permanent of the all-ones 16 × 16 matrix, 16!.
-    #[test]
-    fn the_states_are_bounded() {
-        let ones = vec![vec![1u32; 16]; 16];
-        let a = Assignments::new(&ones, &[1; 16]).unwrap();
-        assert_eq!(a.count(), (1..=16u128).product::<u128>());
-        assert!(Assignments::new(&vec![vec![1u32; 17]; 17], &[1; 17]).is_none());
-    }
-}
