@@ -27,7 +27,9 @@
 //! assert_eq!(report.at_infinity(), 0, "Bézout's 2 paths, both finite");
 //! ```
 
-mod nearby;
+// Public for the tests in tests/suite/; not part of the API.
+#[doc(hidden)]
+pub mod nearby;
 mod parameter;
 mod real_branch;
 mod regeneration;
@@ -708,8 +710,11 @@ pub(crate) fn scaled_inverse_condition(mut jacobian: DMatrix<C64>, scales: &[f64
     }
 }
 
-/// `|a − b| / (1 + |a|)`: how far apart two points are, relative to the first one's size.
-pub(crate) fn relative_distance(a: &[C64], b: &[C64]) -> f64 {
+/// `|a − b| / (1 + |a|)`: how far apart two points are, relative to the first one's size (so
+/// not symmetric), for points with the same number of coordinates. The solvers tell endpoints
+/// and witness points apart by it.
+#[must_use]
+pub fn relative_distance(a: &[C64], b: &[C64]) -> f64 {
     let d: f64 = a
         .iter()
         .zip(b)
@@ -832,113 +837,4 @@ fn distinct_solutions(system: &System, ends: &[PathEnd]) -> Vec<Solution> {
         });
     }
     solutions
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::poly::Poly;
-
-    /// `⌈n³ / 12³⌉`, by hand: 12³ = 1728; 13³ = 2197 (2), 16³ = 4096 (3), 32³ = 32768 (19),
-    /// 100³ = 10⁶ (579).
-    #[test]
-    fn path_weights_by_hand() {
-        for (n, w) in [(1, 1), (12, 1), (13, 2), (16, 3), (32, 19), (100, 579)] {
-            assert_eq!(path_weight(n), w, "{n} unknowns");
-        }
-    }
-
-    /// The estimates of the decompositions from the degrees, by hand. Four cubics in three
-    /// unknowns (the twisted cubic and a line): by dimension 3 + 9 + 27 = 39, by regeneration
-    /// 2 (3 + 9 + 27 + 81) = 240. Two equations of degrees 2 and 1 in two unknowns (exactly
-    /// N − 0 at dimension 0: the product 2, and 2 at dimension 1): 4; regeneration
-    /// 2 (1 + 2) = 6.
-    #[test]
-    fn decomposition_estimates_by_hand() {
-        let v = |i| Poly::variable(3, i);
-        let cubic = |a: Poly, b: Poly| a * b;
-        let (x, y, z) = (v(0), v(1), v(2));
-        let one = Poly::real(3, 1.0);
-        let q1 = &y - &(&x * &x);
-        let q2 = &z - &(&x * &y);
-        let l1 = &x - &one;
-        let l2 = &y - &(one.clone() * 2.0);
-        let system = System::new(
-            vec!["x".into(), "y".into(), "z".into()],
-            vec![
-                cubic(q1.clone(), l1.clone()),
-                cubic(q1, l2.clone()),
-                cubic(q2.clone(), l1),
-                cubic(q2, l2),
-            ],
-        )
-        .unwrap();
-        assert_eq!(system.degrees(), vec![3, 3, 3, 3]);
-        assert_eq!(decompose_paths(&system), 39);
-        assert_eq!(regeneration_paths(&system), 240);
-        let a = Poly::variable(2, 0);
-        let b = Poly::variable(2, 1);
-        let small = System::new(vec!["a".into(), "b".into()], vec![&a * &a - &b, &a - &b]).unwrap();
-        assert_eq!(decompose_paths(&small), 2 + 2);
-        assert_eq!(regeneration_paths(&small), 6);
-    }
-
-    /// The limit is checked before any tracking: a solve of `x² = 1` with `max_paths` 1 is
-    /// refused, with 2 it runs; a decomposition whose estimate fits but whose tracking
-    /// (monodromy, trace test) goes beyond the limit stops with the count it reached.
-    #[test]
-    fn limits_hold_before_and_during_the_work() {
-        let x = Poly::variable(1, 0);
-        let square = System::new(vec!["x".into()], vec![&x * &x - Poly::real(1, 1.0)]).unwrap();
-        let tight = SolveSettings {
-            max_paths: 1,
-            ..SolveSettings::default()
-        };
-        assert_eq!(
-            solve(&square, &tight).unwrap_err(),
-            HomotopyError::TooManyPaths {
-                paths: 2,
-                weight: 1,
-                limit: 1
-            }
-        );
-        let report = solve(
-            &square,
-            &SolveSettings {
-                max_paths: 2,
-                ..tight
-            },
-        )
-        .unwrap();
-        assert_eq!(report.nonsingular(), 2);
-        // A circle in the plane: one quadric in two unknowns, estimated at 2 start paths by
-        // dimension (dimension 1); its two witness points then need 4 paths for the trace test.
-        let (a, b) = (Poly::variable(2, 0), Poly::variable(2, 1));
-        let circle = System::new(
-            vec!["a".into(), "b".into()],
-            vec![&a * &a + &b * &b - Poly::real(2, 1.0)],
-        )
-        .unwrap();
-        assert_eq!(decompose_paths(&circle), 2);
-        let settings = DecomposeSettings {
-            max_paths: 2,
-            ..DecomposeSettings::default()
-        };
-        match decompose(&circle, &settings) {
-            Err(DecomposeError::PathLimit { tracked, limit, .. }) => {
-                assert_eq!((tracked, limit), (2, 2));
-            }
-            other => panic!("{other:?}"),
-        }
-        let d = decompose(
-            &circle,
-            &DecomposeSettings {
-                max_paths: 100,
-                ..settings
-            },
-        )
-        .unwrap();
-        assert_eq!(d.signature(), vec![(1, 2)]);
-        assert_eq!(d.estimated_paths, 2);
-    }
 }

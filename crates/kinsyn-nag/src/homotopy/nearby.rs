@@ -11,8 +11,9 @@ use std::collections::BTreeSet;
 
 /// Points by their value of `ℓ(z) = Σ Re(c_i z_i)`, `c_i` on the unit circle at the golden
 /// angle's multiples (generic, and the same every run), with an id each.
+// Public for the tests in tests/suite/; not part of the API.
 #[derive(Debug, Default)]
-pub(crate) struct NearPoints {
+pub struct NearPoints {
     sorted: BTreeSet<(i64, usize)>,
 }
 
@@ -33,14 +34,16 @@ fn form(z: &[C64]) -> f64 {
 
 /// An integer whose order is that of the finite doubles (the bits of a negative double
 /// reversed): a key of the sorted set.
-fn ordered(x: f64) -> i64 {
+// Public for the tests in tests/suite/; not part of the API.
+#[must_use]
+pub fn ordered(x: f64) -> i64 {
     let bits = x.to_bits().cast_signed();
     bits ^ ((bits >> 63).cast_unsigned() >> 1).cast_signed()
 }
 
 impl NearPoints {
     /// Adds the point `z` under `id`.
-    pub(crate) fn insert(&mut self, id: usize, z: &[C64]) {
+    pub fn insert(&mut self, id: usize, z: &[C64]) {
         self.sorted.insert((ordered(form(z)), id));
     }
 
@@ -48,7 +51,8 @@ impl NearPoints {
     /// way (`|y − z| ≤ tolerance · (1 + |z|)` or `≤ tolerance · (1 + |y|)`), in the order of
     /// `ℓ`; a superset, to be checked with the distance itself. For `tolerance < 1`; every
     /// point when `z` is not finite.
-    pub(crate) fn candidates(&self, z: &[C64], tolerance: f64) -> Vec<usize> {
+    #[must_use]
+    pub fn candidates(&self, z: &[C64], tolerance: f64) -> Vec<usize> {
         let size = z.iter().map(C64::norm_sqr).sum::<f64>().sqrt();
         // |ℓ(y) − ℓ(z)| ≤ √n |y − z|, and |y| ≤ (|z| + tolerance) / (1 − tolerance) when y is
         // within the tolerance relative to its own size; a margin covers the rounding of ℓ.
@@ -105,51 +109,5 @@ impl PointList {
     /// The points, in the order added.
     pub(crate) fn into_points(self) -> Vec<Vec<C64>> {
         self.points
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::homotopy::relative_distance;
-
-    /// The keys order the doubles as `<` does.
-    #[test]
-    fn keys_keep_the_order_of_doubles() {
-        let xs = [-1e300, -2.5, -1e-300, -0.0, 0.0, 1e-300, 3.0, 1e300];
-        for w in xs.windows(2) {
-            assert!(ordered(w[0]) <= ordered(w[1]), "{w:?}");
-        }
-    }
-
-    /// On points of a lattice and their copies moved by less than the tolerance, the window
-    /// gives every point that the full scan finds within the tolerance (both ways).
-    #[test]
-    fn the_candidates_hold_every_near_point() {
-        let mut points: Vec<Vec<C64>> = Vec::new();
-        for i in 0..12 {
-            for j in 0..12 {
-                let p = vec![
-                    C64::new(f64::from(i), -1.0),
-                    C64::new(0.5, f64::from(j) * 1e-6),
-                ];
-                points.push(p);
-            }
-        }
-        let mut index = NearPoints::default();
-        for (k, p) in points.iter().enumerate() {
-            index.insert(k, p);
-        }
-        for tolerance in [1e-6, 1e-4, 0.3] {
-            for q in &points {
-                let found = index.candidates(q, tolerance);
-                for (k, p) in points.iter().enumerate() {
-                    if relative_distance(p, q) <= tolerance || relative_distance(q, p) <= tolerance
-                    {
-                        assert!(found.contains(&k), "{q:?} ~ {p:?} at {tolerance}");
-                    }
-                }
-            }
-        }
     }
 }

@@ -20,7 +20,7 @@ pub const MAX_GROUP_STATES: u64 = 1 << 16;
 /// documentation): a state is the number of equations given to each group so far, indexed in
 /// mixed radix (group `j`'s digit in base `n_j + 1`).
 #[derive(Debug, Clone)]
-pub(crate) struct Assignments {
+pub struct Assignments {
     sizes: Vec<usize>,
     strides: Vec<usize>,
     /// `completes[i][s]`: whether equations `i, i + 1, …` can be assigned from state `s` so
@@ -32,7 +32,11 @@ pub(crate) struct Assignments {
 impl Assignments {
     /// The assignments for the degrees `d[i][j]` of equation `i` in group `j` and the group
     /// sizes; `None` when the states exceed [`MAX_GROUP_STATES`].
-    pub(crate) fn new(degrees: &[Vec<u32>], sizes: &[usize]) -> Option<Self> {
+    ///
+    /// # Panics
+    /// If an equation has more degrees than there are groups.
+    #[must_use]
+    pub fn new(degrees: &[Vec<u32>], sizes: &[usize]) -> Option<Self> {
         let mut strides = Vec::with_capacity(sizes.len());
         let mut states: u64 = 1;
         for n in sizes {
@@ -74,51 +78,21 @@ impl Assignments {
 
     /// The multi-homogeneous Bézout number: the sum over complete assignments of the product
     /// of the chosen degrees (saturating at `u128::MAX`).
-    pub(crate) fn count(&self) -> u128 {
+    #[must_use]
+    pub fn count(&self) -> u128 {
         self.count
     }
 
     /// Whether equation `i` may go to group `j` from state `state`, the rest still completing:
-    /// the next state if so.
-    pub(crate) fn step(&self, i: usize, state: usize, j: usize) -> Option<usize> {
+    /// the next state if so. The walk starts from the empty assignment, state 0, with
+    /// equation 0.
+    ///
+    /// # Panics
+    /// If `j` is not a group; possibly if `i` is not an equation or `state` not a state.
+    #[must_use]
+    pub fn step(&self, i: usize, state: usize, j: usize) -> Option<usize> {
         let used = (state / self.strides[j]) % (self.sizes[j] + 1);
         let next = state + self.strides[j];
         (used < self.sizes[j] && self.completes[i + 1][next]).then_some(next)
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// Two bilinear equations in groups {x}, {y}: the assignments are (x, y) and (y, x), each
-    /// of weight 1·1: 2. Three equations of degrees (2, 1) in groups of sizes 2 and 1: the
-    /// group of one variable takes one of the three equations (weight 1), the other two go to
-    /// the first group (weight 2·2): 3 · 4 = 12.
-    #[test]
-    fn counts_by_hand() {
-        let a = Assignments::new(&[vec![1, 1], vec![1, 1]], &[1, 1]).unwrap();
-        assert_eq!(a.count(), 2);
-        let b = Assignments::new(&[vec![2, 1], vec![2, 1], vec![2, 1]], &[2, 1]).unwrap();
-        assert_eq!(b.count(), 12);
-    }
-
-    /// Equations that cannot fill the groups count 0, and no first step completes. Here the
-    /// second group (one variable) appears in no equation.
-    #[test]
-    fn no_assignment_completes_when_a_group_is_left_out() {
-        let a = Assignments::new(&[vec![1, 0], vec![1, 0]], &[1, 1]).unwrap();
-        assert_eq!(a.count(), 0);
-        assert_eq!(a.step(0, 0, 0), None);
-    }
-
-    /// Sixteen groups of one variable are 2^16 states, the limit; seventeen are refused. With
-    /// every degree 1 the count is the permanent of the all-ones 16 × 16 matrix, 16!.
-    #[test]
-    fn the_states_are_bounded() {
-        let ones = vec![vec![1u32; 16]; 16];
-        let a = Assignments::new(&ones, &[1; 16]).unwrap();
-        assert_eq!(a.count(), (1..=16u128).product::<u128>());
-        assert!(Assignments::new(&vec![vec![1u32; 17]; 17], &[1; 17]).is_none());
     }
 }

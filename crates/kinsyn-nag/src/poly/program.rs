@@ -199,6 +199,22 @@ impl Program {
         self.len == 0
     }
 
+    /// The number of distinct monomials, those of the equations and of their derivatives.
+    // Public for the tests in tests/suite/; not part of the API.
+    #[doc(hidden)]
+    #[must_use]
+    pub fn monomial_count(&self) -> usize {
+        self.monomials.len()
+    }
+
+    /// The number of factors (powers of variables) of all the monomials together.
+    // Public for the tests in tests/suite/; not part of the API.
+    #[doc(hidden)]
+    #[must_use]
+    pub fn factor_count(&self) -> usize {
+        self.factors.len()
+    }
+
     /// A workspace for evaluations over `S`.
     #[must_use]
     pub fn workspace<S: Scalar>(&self) -> Workspace<S> {
@@ -281,40 +297,6 @@ impl Program {
         );
         for (k, v) in jacobian.iter_mut().enumerate() {
             *v = self.output(self.len + k, ws);
-        }
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// `n` linear equations `x_i + x_(i+1) − i` (cyclically) have the monomials `x_0 … x_(n−1)`
-    /// and `1` (the constant terms and every derivative): `n + 1` monomials and `n` factors,
-    /// whatever `n`; their Jacobian at any point has ones at `(i, i)` and `(i, i + 1)`.
-    #[test]
-    fn a_sparse_system_compiles_to_a_sparse_program() {
-        let n = 1000;
-        let equations: Vec<Poly> = (0..n)
-            .map(|i| {
-                Poly::variable(n, i) + Poly::variable(n, (i + 1) % n) - Poly::real(n, i as f64)
-            })
-            .collect();
-        let program = Program::new(&equations, n);
-        assert_eq!(program.monomials.len(), n + 1);
-        assert_eq!(program.factors.len(), n);
-        let x: Vec<C64> = (0..n).map(|i| C64::new(i as f64, 1.0)).collect();
-        let mut values = vec![C64::new(0.0, 0.0); n];
-        let mut jacobian = vec![C64::new(0.0, 0.0); n * n];
-        let mut ws = program.workspace();
-        program.evaluate_with_jacobian(&x, &mut values, &mut jacobian, &mut ws);
-        for i in 0..n {
-            let expected = x[i] + x[(i + 1) % n] - C64::new(i as f64, 0.0);
-            assert_eq!(values[i], expected);
-            for j in 0..n {
-                let one = j == i || j == (i + 1) % n;
-                assert_eq!(jacobian[i * n + j], C64::new(f64::from(u8::from(one)), 0.0));
-            }
         }
     }
 }

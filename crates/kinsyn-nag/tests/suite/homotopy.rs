@@ -1,7 +1,11 @@
 //! Homotopy continuation against known root counts, each cited, and against independent
-//! methods (companion-matrix eigenvalues).
+//! methods (companion-matrix eigenvalues); the weights of paths and the estimates and limits of
+//! their numbers, by hand; and (`nearby`) the index that finds the points near a given one.
 
-use kinsyn_nag::homotopy::{SolveSettings, StartSystem, solve};
+use kinsyn_nag::homotopy::{
+    DecomposeError, DecomposeSettings, HomotopyError, SolveSettings, StartSystem, decompose,
+    decompose_paths, path_weight, regeneration_paths, solve,
+};
 use kinsyn_nag::poly::families::{cyclic, katsura};
 use kinsyn_nag::poly::{C64, Poly, System};
 
@@ -229,4 +233,158 @@ fn cyclic6_count_without_failed_paths() {
     assert_eq!(report.nonsingular(), 156, "{}", report.summary());
     assert_eq!(report.certified(), 156);
     assert_eq!(report.failed(), 0, "{}", report.summary());
+}
+
+// `src/homotopy/mod.rs`: the weight of a path, the estimates of the decompositions and the
+// limit on the paths, by hand.
+
+/// `⌈n³ / 12³⌉`, by hand: 12³ = 1728; 13³ = 2197 (2), 16³ = 4096 (3), 32³ = 32768 (19),
+/// 100³ = 10⁶ (579).
+#[test]
+fn path_weights_by_hand() {
+    for (n, w) in [(1, 1), (12, 1), (13, 2), (16, 3), (32, 19), (100, 579)] {
+        assert_eq!(path_weight(n), w, "{n} unknowns");
+    }
+}
+
+/// The estimates of the decompositions from the degrees, by hand. Four cubics in three
+/// unknowns (the twisted cubic and a line): by dimension 3 + 9 + 27 = 39, by regeneration
+/// 2 (3 + 9 + 27 + 81) = 240. Two equations of degrees 2 and 1 in two unknowns (exactly
+/// N − 0 at dimension 0: the product 2, and 2 at dimension 1): 4; regeneration
+/// 2 (1 + 2) = 6.
+#[test]
+fn decomposition_estimates_by_hand() {
+    let v = |i| Poly::variable(3, i);
+    let cubic = |a: Poly, b: Poly| a * b;
+    let (x, y, z) = (v(0), v(1), v(2));
+    let one = Poly::real(3, 1.0);
+    let q1 = &y - &(&x * &x);
+    let q2 = &z - &(&x * &y);
+    let l1 = &x - &one;
+    let l2 = &y - &(one.clone() * 2.0);
+    let system = System::new(
+        vec!["x".into(), "y".into(), "z".into()],
+        vec![
+            cubic(q1.clone(), l1.clone()),
+            cubic(q1, l2.clone()),
+            cubic(q2.clone(), l1),
+            cubic(q2, l2),
+        ],
+    )
+    .unwrap();
+    assert_eq!(system.degrees(), vec![3, 3, 3, 3]);
+    assert_eq!(decompose_paths(&system), 39);
+    assert_eq!(regeneration_paths(&system), 240);
+    let a = Poly::variable(2, 0);
+    let b = Poly::variable(2, 1);
+    let small = System::new(vec!["a".into(), "b".into()], vec![&a * &a - &b, &a - &b]).unwrap();
+    assert_eq!(decompose_paths(&small), 2 + 2);
+    assert_eq!(regeneration_paths(&small), 6);
+}
+
+/// The limit is checked before any tracking: a solve of `x² = 1` with `max_paths` 1 is
+/// refused, with 2 it runs; a decomposition whose estimate fits but whose tracking
+/// (monodromy, trace test) goes beyond the limit stops with the count it reached.
+#[test]
+fn limits_hold_before_and_during_the_work() {
+    let x = Poly::variable(1, 0);
+    let square = System::new(vec!["x".into()], vec![&x * &x - Poly::real(1, 1.0)]).unwrap();
+    let tight = SolveSettings {
+        max_paths: 1,
+        ..SolveSettings::default()
+    };
+    assert_eq!(
+        solve(&square, &tight).unwrap_err(),
+        HomotopyError::TooManyPaths {
+            paths: 2,
+            weight: 1,
+            limit: 1
+        }
+    );
+    let report = solve(
+        &square,
+        &SolveSettings {
+            max_paths: 2,
+            ..tight
+        },
+    )
+    .unwrap();
+    assert_eq!(report.nonsingular(), 2);
+    // A circle in the plane: one quadric in two unknowns, estimated at 2 start paths by
+    // dimension (dimension 1); its two witness points then need 4 paths for the trace test.
+    let (a, b) = (Poly::variable(2, 0), Poly::variable(2, 1));
+    let circle = System::new(
+        vec!["a".into(), "b".into()],
+        vec![&a * &a + &b * &b - Poly::real(2, 1.0)],
+    )
+    .unwrap();
+    assert_eq!(decompose_paths(&circle), 2);
+    let settings = DecomposeSettings {
+        max_paths: 2,
+        ..DecomposeSettings::default()
+    };
+    match decompose(&circle, &settings) {
+        Err(DecomposeError::PathLimit { tracked, limit, .. }) => {
+            assert_eq!((tracked, limit), (2, 2));
+        }
+        other => panic!("{other:?}"),
+    }
+    let d = decompose(
+        &circle,
+        &DecomposeSettings {
+            max_paths: 100,
+            ..settings
+        },
+    )
+    .unwrap();
+    assert_eq!(d.signature(), vec![(1, 2)]);
+    assert_eq!(d.estimated_paths, 2);
+}
+
+/// `src/homotopy/nearby.rs`: the index of points sorted along a generic linear form finds every
+/// near point that the full scan finds.
+mod nearby {
+    use kinsyn_nag::homotopy::nearby::{NearPoints, ordered};
+    use kinsyn_nag::homotopy::relative_distance;
+    use kinsyn_nag::poly::C64;
+
+    /// The keys order the doubles as `<` does.
+    #[test]
+    fn keys_keep_the_order_of_doubles() {
+        let xs = [-1e300, -2.5, -1e-300, -0.0, 0.0, 1e-300, 3.0, 1e300];
+        for w in xs.windows(2) {
+            assert!(ordered(w[0]) <= ordered(w[1]), "{w:?}");
+        }
+    }
+
+    /// On points of a lattice and their copies moved by less than the tolerance, the window
+    /// gives every point that the full scan finds within the tolerance (both ways).
+    #[test]
+    fn the_candidates_hold_every_near_point() {
+        let mut points: Vec<Vec<C64>> = Vec::new();
+        for i in 0..12 {
+            for j in 0..12 {
+                let p = vec![
+                    C64::new(f64::from(i), -1.0),
+                    C64::new(0.5, f64::from(j) * 1e-6),
+                ];
+                points.push(p);
+            }
+        }
+        let mut index = NearPoints::default();
+        for (k, p) in points.iter().enumerate() {
+            index.insert(k, p);
+        }
+        for tolerance in [1e-6, 1e-4, 0.3] {
+            for q in &points {
+                let found = index.candidates(q, tolerance);
+                for (k, p) in points.iter().enumerate() {
+                    if relative_distance(p, q) <= tolerance || relative_distance(q, p) <= tolerance
+                    {
+                        assert!(found.contains(&k), "{q:?} ~ {p:?} at {tolerance}");
+                    }
+                }
+            }
+        }
+    }
 }
