@@ -4,7 +4,8 @@
 //! This is a bottom layer beside [`crate::spatial`]: it knows nalgebra and nothing else of the
 //! crate. It is private; what users call is re-exported from [`crate::screw`]
 //! (`screw::svd`, `screw::rank`, `screw::Rank`, `screw::rank6`, `screw::span_basis`,
-//! `screw::nullspace`, `screw::DEFAULT_RANK_TOLERANCE`, …), and every SVD of the crate goes
+//! `screw::nullspace`, `screw::rank_quick`, `screw::least_squares`,
+//! `screw::DEFAULT_RANK_TOLERANCE`, …), and every SVD of the crate goes
 //! through [`svd`], because nalgebra's alone is not always right (docs/verification.md).
 //!
 //! Tolerances are explicit: a rank is decided by a *relative* tolerance, relative to the
