@@ -13,6 +13,7 @@ mod generic_ranks;
 mod geometry_polynomials;
 mod invariance;
 mod library;
+mod linalg;
 mod lockset;
 mod manipulator;
 mod mechanism;
