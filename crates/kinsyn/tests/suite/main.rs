@@ -21,6 +21,7 @@ mod modes_cost;
 mod motion;
 mod notation;
 mod operation_modes;
+mod output;
 mod platforms;
 mod position;
 mod position_polynomial;
