@@ -16,6 +16,7 @@ mod library;
 mod linalg;
 mod lockset;
 mod manipulator;
+mod markup;
 mod mechanism;
 mod modes_cost;
 mod motion;
