@@ -27,6 +27,7 @@ mod platforms;
 mod position;
 mod position_polynomial;
 mod published;
+mod schematic;
 mod screw;
 mod spatial;
 mod spm_full_cycle;
