@@ -2,8 +2,11 @@
 //! rank of screw systems.
 //!
 //! The ranks, span and null-space bases and the checked SVD ([`svd`], [`rank`], [`rank6`],
-//! [`span_basis`], [`nullspace`], [`Rank`]) are the crate's linear-algebra layer, re-exported
-//! here; this module adds the screw theory on top of them ([`reciprocal_complement`]).
+//! [`span_basis`], [`nullspace`], [`Rank`]), the ranks a QR certifies to be the SVD's
+//! ([`rank_quick`], [`span_basis_quick`], [`full_row_rank`]), the least-norm Newton step
+//! ([`min_norm_step`]), random null-space directions ([`null_direction`]) and truncated least
+//! squares ([`least_squares`]) are the crate's linear-algebra layer, re-exported here; this
+//! module adds the screw theory on top of them ([`reciprocal_complement`]).
 //!
 //! Conventions (ARCHITECTURE.md): a twist is `t = (ω; v)`, the angular velocity and the velocity of
 //! the body point that coincides with the frame origin; a wrench is `w = (f; m)`, the force and
@@ -22,8 +25,9 @@
 //! ```
 
 pub use crate::linalg::{
-    DEFAULT_RANK_TOLERANCE, Rank, Svd, nullspace, nullspace_scaled, rank, rank6, span_basis,
-    span_basis_scaled, svd,
+    DEFAULT_RANK_TOLERANCE, FullRowRank, LeastSquares, Rank, Svd, full_row_rank, least_squares,
+    min_norm_step, null_direction, nullspace, nullspace_scaled, rank, rank_quick, rank6,
+    span_basis, span_basis_quick, span_basis_scaled, svd,
 };
 pub use crate::spatial::{Twist, adjoint, skew, transform_twist};
 use nalgebra::{DMatrix, Vector3, Vector6};

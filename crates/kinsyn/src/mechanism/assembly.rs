@@ -516,38 +516,3 @@ impl Mechanism {
         self.assemble_to(q, locked, goal.as_ref())
     }
 }
-
-#[cfg(test)]
-mod tests {
-    use super::inverse_left_jacobian;
-    use crate::mechanism::rotation_log;
-    use nalgebra::{Rotation3, Vector3};
-
-    /// ṙ = `J_l⁻¹(r)` ω: turning R by a small spatial rotation ω h changes its rotation vector by
-    /// `J_l⁻¹(r)` ω h, checked by central differences (angles up to 3 rad and near zero).
-    #[test]
-    fn rotation_vector_rates_match_finite_differences() {
-        let h = 1e-6;
-        for r in [
-            Vector3::new(0.3, -0.2, 0.5),
-            Vector3::new(1e-6, 2e-6, -1e-6),
-            Vector3::new(2.0, 1.0, -1.5),
-        ] {
-            let j = inverse_left_jacobian(&r);
-            for k in 0..3 {
-                let w = Vector3::ith(k, 1.0);
-                let turned = |s: f64| {
-                    rotation_log(
-                        &(Rotation3::from_scaled_axis(w * s) * Rotation3::from_scaled_axis(r)),
-                    )
-                };
-                let fd = (turned(h) - turned(-h)) / (2.0 * h);
-                assert!(
-                    (fd - j.column(k)).norm() < 1e-6,
-                    "r {r}, ω e{k}: {fd} vs {}",
-                    j.column(k)
-                );
-            }
-        }
-    }
-}

@@ -408,24 +408,3 @@ pub fn readings_with(word: &[Primitive], axes: &[AxisIndex], grouping: Grouping)
     }
     out
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn groupings_of_four_revolutes() {
-        // §2.2: "The sequence RRRR yields two universal joints" or RS / SR (rule 3).
-        let g = revolute_groupings(&[0, 1, 2, 0]);
-        assert_eq!(g, vec![vec![1, 3], vec![2, 2], vec![3, 1]]);
-    }
-
-    #[test]
-    fn spherical_pair_is_replaced() {
-        // Rule 3's exception: no SS; three-joint readings instead.
-        let g = revolute_groupings(&[0, 1, 2, 0, 1, 2]);
-        assert!(g.iter().all(|b| b.len() == 3));
-        assert!(g.contains(&vec![3, 2, 1])); // SUR
-        assert!(g.contains(&vec![2, 2, 2])); // UUU
-    }
-}

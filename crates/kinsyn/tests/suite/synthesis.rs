@@ -3,7 +3,7 @@
 
 use itertools::Itertools;
 use kinsyn::notation::{Primitive, letters_fit_word};
-use kinsyn::synthesis::rules::{self, Grouping};
+use kinsyn::synthesis::rules::{self, Grouping, revolute_groupings};
 use kinsyn::synthesis::{Candidate, Options, PrismaticReading, TABLES, enumerate, parse_word};
 use std::collections::BTreeSet;
 use std::sync::OnceLock;
@@ -139,6 +139,22 @@ fn rule_3_exception_replaces_ss() {
     assert!(g.iter().all(|b| b.len() == 3));
     // Every reading, not only the fewest, is there for explaining printed chains.
     assert!(rules::all_revolute_groupings(&[0, 1, 2, 0, 1, 2]).contains(&vec![3, 3]));
+}
+
+#[test]
+fn groupings_of_four_revolutes() {
+    // §2.2: "The sequence RRRR yields two universal joints" or RS / SR (rule 3).
+    let g = revolute_groupings(&[0, 1, 2, 0]);
+    assert_eq!(g, vec![vec![1, 3], vec![2, 2], vec![3, 1]]);
+}
+
+#[test]
+fn spherical_pair_is_replaced() {
+    // Rule 3's exception: no SS; three-joint readings instead.
+    let g = revolute_groupings(&[0, 1, 2, 0, 1, 2]);
+    assert!(g.iter().all(|b| b.len() == 3));
+    assert!(g.contains(&vec![3, 2, 1])); // SUR
+    assert!(g.contains(&vec![2, 2, 2])); // UUU
 }
 
 #[test]
