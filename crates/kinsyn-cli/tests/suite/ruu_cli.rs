@@ -5,7 +5,7 @@
 use crate::common;
 use serde_json::Value;
 
-use common::{assert_refused, kinsyn, stderr, stdout};
+use common::{kinsyn, stderr, stdout};
 use std::f64::consts::{FRAC_PI_2, SQRT_2};
 
 /// The 1st Schönflies mode (test only): the platform turned by π about (1, 1, 0)/√2 (z down),
@@ -127,13 +127,68 @@ fn an_input_moves_the_platform_within_k2_and_the_legs_stay_closed() {
     assert!(p[0].abs() + p[1].abs() + r[2].abs() > 1e-2, "{p:?} {r:?}");
 }
 
+/// The 4-RUU is over-constrained (4 legs × 2 equations = 8 > 6): `--all-assemblies` solves its
+/// ten equations in the eight Study parameters through their square randomisation and keeps
+/// the endpoints every equation accepts. A second method on the same equations, the numerical
+/// irreducible decomposition of `kinsyn components` (normalised Study parameters, so each pose
+/// twice as ±(x, y)), finds twice as many isolated points and twice as many real ones; at the
+/// reference inputs the description's reference configuration (the platform at height √2,
+/// `mechanisms/4-ruu.json`) is among the real assemblies.
 #[test]
-fn all_assemblies_refuses_the_over_constrained_4_ruu_in_one_line() {
-    // 4 legs × 2 equations = 8 > 6: no square position system.
-    let o = kinsyn(&["analyze", "mechanisms/4-ruu.json", "--all-assemblies"]);
-    assert_refused(
-        &o,
-        "4-RUU --all-assemblies",
-        &["8 constraints", "over-constrained"],
-    );
+fn all_assemblies_of_the_over_constrained_4_ruu_are_the_decompositions_isolated_points() {
+    for inputs in [None, Some("R1.1=17,R2.1=-11,R3.1=14,R4.1=6")] {
+        let mut args = vec![
+            "analyze",
+            "mechanisms/4-ruu.json",
+            "--all-assemblies",
+            "--json",
+        ];
+        let mut parts = vec!["components", "mechanisms/4-ruu.json", "--json"];
+        if let Some(i) = inputs {
+            args.extend(["--inputs", i]);
+            parts.extend(["--inputs", i]);
+        }
+        let o = kinsyn(&args);
+        assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+        let a: Value = serde_json::from_str(&stdout(&o)).unwrap();
+        assert_eq!(a["formulation"]["equations"], 10);
+        assert_eq!(a["formulation"]["randomised"], true);
+        assert!(a["spurious"].as_u64().unwrap() > 0, "{inputs:?}");
+        assert_eq!(a["singular"], 0, "{inputs:?}");
+        assert_eq!(a["certified"], a["nonsingular"], "{inputs:?}");
+        let d: Value = serde_json::from_str(&stdout(&kinsyn(&parts))).unwrap();
+        let isolated: Vec<&Value> = d["components"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .filter(|c| c["dimension"] == 0)
+            .collect();
+        let real_points: u64 = isolated
+            .iter()
+            .map(|c| c["real_points"].as_u64().unwrap())
+            .sum();
+        assert_eq!(
+            2 * a["nonsingular"].as_u64().unwrap(),
+            isolated.len() as u64,
+            "{inputs:?}"
+        );
+        assert_eq!(2 * a["real"].as_u64().unwrap(), real_points, "{inputs:?}");
+        if inputs.is_none() {
+            let poses: Vec<&str> = a["real_assemblies"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .map(|r| r["pose"].as_str().unwrap())
+                .collect();
+            assert_eq!(poses.len(), 2);
+            let reference = a["real_assemblies"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .find(|r| r["continued_from_reference"] == true)
+                .expect("the reference assembly");
+            let z = reference["position"][2].as_f64().unwrap();
+            assert!((z - SQRT_2).abs() < 1e-12, "{z}");
+        }
+    }
 }

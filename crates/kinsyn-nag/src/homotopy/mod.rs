@@ -13,6 +13,10 @@
 //! with stricter steps. Every random choice (γ, patches, start forms) comes from one seeded
 //! generator: the same seed gives the same paths.
 //!
+//! An over-determined system (more equations than unknowns) is solved by
+//! [`solve_overdetermined`]: randomised to a square one ([`square_randomisation`]), solved, and
+//! every endpoint checked against the original equations.
+//!
 //! ```
 //! use kinsyn_nag::homotopy::{solve, SolveSettings};
 //! use kinsyn_nag::poly::{Poly, System};
@@ -30,6 +34,7 @@
 // Public for the tests in tests/suite/; not part of the API.
 #[doc(hidden)]
 pub mod nearby;
+mod overdetermined;
 mod parameter;
 mod real_branch;
 mod regeneration;
@@ -37,6 +42,9 @@ mod start;
 mod tracker;
 mod witness;
 
+pub use overdetermined::{
+    OverdeterminedReport, satisfies_all, satisfying, solve_overdetermined, square_randomisation,
+};
 pub use parameter::{
     MonodromyReport, MonodromySettings, ParameterError, ParametrizedSystem, monodromy_solve,
     track_parameters,

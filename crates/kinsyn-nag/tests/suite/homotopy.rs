@@ -1,10 +1,11 @@
 //! Homotopy continuation against known root counts, each cited, and against independent
 //! methods (companion-matrix eigenvalues); the weights of paths and the estimates and limits of
-//! their numbers, by hand; and (`nearby`) the index that finds the points near a given one.
+//! their numbers, by hand; over-determined systems randomised to square ones; and (`nearby`) the index that finds the points near a given one.
 
 use kinsyn_nag::homotopy::{
     DecomposeError, DecomposeSettings, HomotopyError, SolveSettings, StartSystem, decompose,
-    decompose_paths, path_weight, regeneration_paths, solve,
+    decompose_paths, path_weight, regeneration_paths, solve, solve_overdetermined,
+    square_randomisation,
 };
 use kinsyn_nag::poly::families::{cyclic, katsura};
 use kinsyn_nag::poly::{C64, Poly, System};
@@ -387,4 +388,61 @@ mod nearby {
             }
         }
     }
+}
+
+// ---- over-determined systems: randomisation to a square system ----
+
+/// By hand: `x² − 1`, `y − x`, `y² − 1` in `(x, y)` have the two solutions `±(1, 1)`. The square
+/// randomisation keeps the two quadrics, each plus a random multiple of `y − x`: four finite
+/// solutions (Bézout 4, none at infinity, where `x² = y² = 0`), of which the two on `y = x` are
+/// the system's and the other two (`y ≠ x`) are refused by the original equations.
+#[test]
+fn an_over_determined_system_keeps_the_solutions_that_satisfy_every_equation() {
+    let x = Poly::variable(2, 0);
+    let y = Poly::variable(2, 1);
+    let one = Poly::real(2, 1.0);
+    let system = System::new(
+        vec!["x".into(), "y".into()],
+        vec![&(&x * &x) - &one, &y - &x, &(&y * &y) - &one],
+    )
+    .unwrap();
+    let square = square_randomisation(&system, 7).unwrap();
+    assert_eq!(square.degrees(), [2, 2]);
+    assert!(
+        square.is_real(),
+        "real random combinations keep a real system real"
+    );
+    for seed in 1..=5 {
+        let settings = SolveSettings {
+            seed,
+            ..SolveSettings::default()
+        };
+        let o = solve_overdetermined(&system, &settings).unwrap();
+        assert_eq!(o.report.paths(), 4);
+        assert_eq!(o.report.nonsingular(), 4, "seed {seed}");
+        assert_eq!(o.spurious(), 2, "seed {seed}");
+        let mut found: Vec<f64> = o
+            .solutions()
+            .map(|s| {
+                assert!(s.real && s.is_certified(), "seed {seed}");
+                assert!((s.x[0] - s.x[1]).norm() < 1e-12);
+                s.x[0].re
+            })
+            .collect();
+        found.sort_by(f64::total_cmp);
+        assert_eq!(found.len(), 2);
+        assert!((found[0] + 1.0).abs() < 1e-12 && (found[1] - 1.0).abs() < 1e-12);
+    }
+    // A square system is solved as it is; an under-determined one has no isolated solutions.
+    let circle = System::new(
+        vec!["x".into(), "y".into()],
+        vec![&(&x * &x) - &one, &y - &x],
+    )
+    .unwrap();
+    assert_eq!(square_randomisation(&circle, 1).unwrap(), circle);
+    let under = System::new(vec!["x".into(), "y".into()], vec![&y - &x]).unwrap();
+    assert!(matches!(
+        square_randomisation(&under, 1),
+        Err(HomotopyError::NotSquare { .. })
+    ));
 }

@@ -1,12 +1,15 @@
 //! `kinsyn analyze FILE --inputs … --all-assemblies`: every assembly of a manipulator at given
-//! inputs, from its constraint polynomials in Study parameters solved by homotopy continuation.
+//! inputs, from its constraint polynomials in Study parameters solved by homotopy continuation
+//! (through their square randomisation when the manipulator is over-constrained).
 
 use super::{Loaded, clean, input_texts, inputs_or_reference, leg_warnings, load_with_body};
 use crate::Error;
 use crate::solve::{PathOption, solve_with_bar};
 use kinsyn::geometry::Chart;
-use kinsyn::homotopy::{SolveReport, SolveSettings};
-use kinsyn::manipulator::{LegKind, Manipulator, PositionRequest};
+use kinsyn::homotopy::{SolveReport, SolveSettings, satisfying, square_randomisation};
+use kinsyn::manipulator::{
+    InputValues, LegKind, Manipulator, PositionRequest, PositionSystemError,
+};
 use kinsyn::mechanism::rotation_log;
 use kinsyn::spatial::Displacement;
 use serde::Serialize;
@@ -72,6 +75,13 @@ pub struct AllAssemblies {
     pub seed: u64,
     /// The variables, equations and degrees of the position system.
     pub system: kinsyn::poly::System,
+    /// The system solved: [`Self::system`] itself when it is square; for an over-constrained
+    /// manipulator (more equations than unknowns) its square randomisation
+    /// ([`kinsyn::homotopy::square_randomisation`]).
+    pub solved: kinsyn::poly::System,
+    /// The endpoints of the square randomisation that the original equations refuse (0 for a
+    /// square system): they are not in [`Self::report`]'s solutions.
+    pub spurious: usize,
     /// What each leg contributes to the position system.
     pub kinds: Vec<&'static str>,
     /// The solve.
@@ -97,23 +107,40 @@ pub fn all_assemblies_of(
     seed: u64,
 ) -> Result<AllAssemblies, Error> {
     let inputs = inputs_or_reference(m, inputs_text)?;
-    let ps = m
-        .position_system(&inputs, &Chart::random_linear(seed))
+    let chart = Chart::random_linear(seed);
+    // More constraints than the platform's six dof (an over-constrained manipulator such as the
+    // 4-RUU): the whole system, solved through its square randomisation.
+    let ps = match m.position_system(&inputs, &chart) {
+        Err(PositionSystemError::Overdetermined(_)) => {
+            m.constraint_system(&InputValues::Given(&inputs), &chart)
+        }
+        other => other,
+    }
+    .map_err(|e| Error::Input(format!("--all-assemblies: {e}")))?;
+    let solved = square_randomisation(ps.system(), seed)
         .map_err(|e| Error::Input(format!("--all-assemblies: {e}")))?;
     let settings = SolveSettings {
         seed,
         ..SolveSettings::default()
     };
     // One run: its report is the only one.
-    let report = solve_with_bar(
+    let mut report = solve_with_bar(
         "--all-assemblies",
-        ps.system(),
+        &solved,
         &settings,
         1,
         PathOption::Default,
     )?
     .runs
     .swap_remove(0);
+    // Of the randomisation's endpoints, only those that satisfy every original equation.
+    let mut spurious = 0;
+    if solved.len() < ps.system().len() {
+        let keep = satisfying(ps.system(), &report);
+        spurious = keep.iter().filter(|ok| !**ok).count();
+        let mut keep = keep.into_iter();
+        report.solutions.retain(|_| keep.next().unwrap_or(false));
+    }
     // The assembly Newton continuation reaches from the reference, to mark it.
     let request = PositionRequest {
         inputs: inputs.clone(),
@@ -173,6 +200,8 @@ pub fn all_assemblies_of(
         inputs,
         seed,
         system: ps.system().clone(),
+        solved,
+        spurious,
         kinds,
         report,
         assemblies,
@@ -184,7 +213,7 @@ impl AllAssemblies {
     /// The report of `kinsyn analyze --all-assemblies --json` for `m`, with the leg `warnings`.
     #[must_use]
     pub fn report(&self, m: &Manipulator, warnings: &[String]) -> AssembliesReport {
-        let (report, system) = (&self.report, &self.system);
+        let (report, system, solved) = (&self.report, &self.system, &self.solved);
         AssembliesReport {
             manipulator: m.name().to_string(),
             inputs: input_texts(m, &self.inputs),
@@ -192,9 +221,11 @@ impl AllAssemblies {
                 variables: system.variables().to_vec(),
                 equations: system.len(),
                 degrees: system.degrees(),
-                bezout_number: system.bezout_number().to_string(),
+                bezout_number: solved.bezout_number().to_string(),
+                randomised: solved.len() < system.len(),
                 legs: self.kinds.clone(),
             },
+            spurious: self.spurious,
             summary: report.summary(),
             paths: report.paths(),
             nonsingular: report.nonsingular(),
@@ -264,6 +295,9 @@ pub struct AssembliesReport {
     pub singular_on_null_cone: usize,
     /// The paths that went to infinity.
     pub at_infinity: usize,
+    /// The endpoints of the square randomisation of an over-determined system that the original
+    /// equations refuse (0 for a square system); they are counted nowhere else.
+    pub spurious: usize,
     /// The non-singular endpoints certified (each proved, by the Krawczyk operator in interval
     /// arithmetic, to approximate exactly one root).
     pub certified: usize,
@@ -283,7 +317,8 @@ pub struct AssembliesReport {
 }
 
 /// The position system of `analyze --all-assemblies`: the legs' constraints on the Study
-/// parameters `x0…y3` of the platform frame, the Study quadric, and a random linear chart.
+/// parameters `x0…y3` of the platform frame, the Study quadric, and a random linear chart
+/// (more equations than unknowns for an over-constrained manipulator).
 #[derive(Debug, Clone, Serialize)]
 pub struct Formulation {
     /// The unknowns' names.
@@ -292,8 +327,14 @@ pub struct Formulation {
     pub equations: usize,
     /// Each equation's degree.
     pub degrees: Vec<u32>,
-    /// The total-degree Bézout number (the product of the degrees), as decimal text.
+    /// The total-degree Bézout number of the system solved (the product of its degrees: of the
+    /// square randomisation when [`Self::randomised`]), as decimal text.
     pub bezout_number: String,
+    /// Whether the system has more equations than unknowns (an over-constrained manipulator,
+    /// e.g. the 4-RUU) and was solved through its square randomisation: the equations of
+    /// highest degree, as many as the unknowns, each plus a random real combination of the
+    /// others, every endpoint then checked against all the equations.
+    pub randomised: bool,
     /// What each leg contributes (`distance`, `R–S: distance and plane`, …), in leg order.
     pub legs: Vec<&'static str>,
 }

@@ -10,7 +10,8 @@
 //! in `tests/suite/ruu_self_motions.rs`. The file's reference crank angles are θ1i = (−90°, 0°, 90°,
 //! 0°), so an input `δ_i` is the absolute angle θ1i minus that.
 
-use kinsyn::homotopy::DecomposeSettings;
+use kinsyn::geometry::Chart;
+use kinsyn::homotopy::{DecomposeSettings, SolveSettings, solve_overdetermined};
 use kinsyn::manipulator::{
     DecompositionMethod, InputValues, Manipulator, ModeComponent, OperationModeSettings,
     OperationModes,
@@ -89,6 +90,43 @@ fn generic_inputs_give_32_isolated_solutions_each_real_one_in_a_schoenflies_mode
             // Paper 004 §4.1.1–4.1.2: both modes are 4-dof Schönflies motions X(z).
             assert!(is_schoenflies_z(c), "{:?}", c.released);
         }
+    }
+}
+
+/// The same count by a second method on the same equations: at fixed generic inputs the position
+/// system is over-determined (eight leg equations, the Study quadric and the normalisation
+/// `x0² + x1² + x2² + x3² = 1`, in the eight Study parameters). Randomised to a square system
+/// (`solve_overdetermined`: the eight equations of highest degree, each plus a random real
+/// combination of the other two; 2⁸ = 256 paths), the endpoints that satisfy all ten equations
+/// are the 32 isolated solutions of the decomposition above and of Singular's `vdim`, 16 in K1
+/// and 16 in K2, each regular and certified; two seeds.
+#[test]
+fn randomised_to_a_square_system_generic_inputs_give_the_same_32() {
+    let theta = [0.3f64, -0.7, 1.1, 0.45].map(|t| 2.0 * t.atan());
+    let given = inputs(theta);
+    let ps = ruu()
+        .constraint_system(&InputValues::Given(&given), &Chart::Unit)
+        .unwrap();
+    assert_eq!((ps.system().len(), ps.system().nvars()), (10, 8));
+    for seed in [1, 2] {
+        let settings = SolveSettings {
+            seed,
+            ..SolveSettings::default()
+        };
+        let o = solve_overdetermined(ps.system(), &settings).unwrap();
+        assert_eq!(o.report.paths(), 256);
+        let found: Vec<_> = o.solutions().collect();
+        assert_eq!(found.len(), 32, "seed {seed}: {}", o.report.summary());
+        assert!(
+            found.iter().all(|s| s.regular && s.is_certified()),
+            "seed {seed}"
+        );
+        let zero = |s: &&kinsyn::homotopy::Solution, a: usize, b: usize| {
+            s.x[a].norm() < 1e-8 && s.x[b].norm() < 1e-8
+        };
+        let k1 = found.iter().filter(|s| zero(s, 0, 3)).count();
+        let k2 = found.iter().filter(|s| zero(s, 1, 2)).count();
+        assert_eq!((k1, k2), (16, 16), "seed {seed}");
     }
 }
 

@@ -14,21 +14,36 @@ pub(in crate::cli) fn text(m: &Manipulator, all: &AllAssemblies, path: &Path) ->
     let seed = all.seed;
     let input_text = input_texts(m, &all.inputs);
     let kinds = &all.kinds;
-    let system = &all.system;
+    let (system, solved) = (&all.system, &all.solved);
     let mut out = String::new();
     let _ = writeln!(out, "{} at {}", m.name(), input_text.join(", "));
+    let randomised = if solved.len() < system.len() {
+        format!(
+            "; over-constrained: randomised to {} equations, Bézout number {}",
+            solved.len(),
+            solved.bezout_number()
+        )
+    } else {
+        format!(", Bézout number {}", system.bezout_number())
+    };
     let _ = writeln!(
         out,
-        "formulation: {} equations in the Study parameters x0…y3 of the platform frame (legs: {}; the Study quadric; a random linear chart, seed {seed}), Bézout number {}",
+        "formulation: {} equations in the Study parameters x0…y3 of the platform frame (legs: {}; the Study quadric; a random linear chart, seed {seed}){randomised}",
         system.len(),
         kinds.join(", "),
-        system.bezout_number()
     );
     let _ = writeln!(
         out,
         "{}",
         report.summary().replace("solutions", "assemblies")
     );
+    if all.spurious > 0 {
+        let _ = writeln!(
+            out,
+            "{} endpoints of the randomised system are not solutions: the original equations refuse them",
+            all.spurious
+        );
+    }
     let _ = writeln!(out, "{}", certificate_line(report));
     if null_cone > 0 {
         let _ = writeln!(
