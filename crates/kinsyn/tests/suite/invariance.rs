@@ -209,3 +209,45 @@ fn the_multioperation_table_is_the_same_for_five_seeds() {
 fn the_multioperation_table_is_the_same_for_fifty_seeds() {
     the_multioperation_table_is_the_same_for_seeds(50);
 }
+
+/// The over-constrained 4-RUU (paper 004) in another length unit: its ten position equations at
+/// the reference inputs, solved through their square randomisation, give in millimetres and in
+/// kilometres the 32 solutions and 4 real ones they give in metres (each pose twice as ±(x, y);
+/// `operation_modes.rs`, `ruu_cli.rs`), and the real poses are the same poses: the platform at
+/// height ±√2 m, ×10^k in the new unit.
+#[test]
+fn the_over_constrained_position_system_does_not_depend_on_the_length_unit() {
+    let d = description("../../mechanisms/4-ruu.json");
+    for k in [-3, 3] {
+        let factor = 10f64.powi(k);
+        let m = Manipulator::new(&scaled(&d, factor)).unwrap();
+        let inputs: Vec<(usize, f64)> = (0..4).map(|a| (a, 0.0)).collect();
+        let ps = m
+            .constraint_system(
+                &kinsyn::manipulator::InputValues::Given(&inputs),
+                &kinsyn::geometry::Chart::Unit,
+            )
+            .unwrap();
+        let o = kinsyn::homotopy::solve_overdetermined(
+            ps.system(),
+            &kinsyn::homotopy::SolveSettings::default(),
+        )
+        .unwrap();
+        let found: Vec<_> = o.solutions().collect();
+        assert_eq!(found.len(), 32, "×1e{k}: {}", o.report.summary());
+        let mut heights: Vec<f64> = found
+            .iter()
+            .filter(|s| s.real)
+            .map(|s| {
+                let x: Vec<f64> = s.x.iter().map(|c| c.re).collect();
+                ps.displacement(&x).unwrap().translation.vector.z / factor
+            })
+            .collect();
+        heights.sort_by(f64::total_cmp);
+        assert_eq!(heights.len(), 4, "×1e{k}");
+        let root2 = std::f64::consts::SQRT_2;
+        for (h, want) in heights.iter().zip([-root2, -root2, root2, root2]) {
+            assert!((h - want).abs() < 1e-9, "×1e{k}: {heights:?}");
+        }
+    }
+}
