@@ -212,14 +212,14 @@ fn the_multioperation_table_is_the_same_for_fifty_seeds() {
 
 /// The over-constrained 4-RUU (paper 004) in another length unit: its ten position equations at
 /// the reference inputs, solved through their square randomisation, give in millimetres and in
-/// kilometres the 32 solutions and 4 real ones they give in metres (each pose twice as ±(x, y);
-/// `operation_modes.rs`, `ruu_cli.rs`), and the real poses are the same poses: the platform at
-/// height ±√2 m, ×10^k in the new unit.
+/// kilometres as many solutions as in metres (32: each pose twice as ±(x, y), the count the
+/// decomposition finds in `ruu_cli.rs`), and the same real poses, their positions ×10^k; in
+/// metres the description's reference pose (the platform upright at height √2) is among them.
 #[test]
 fn the_over_constrained_position_system_does_not_depend_on_the_length_unit() {
     let d = description("../../mechanisms/4-ruu.json");
-    for k in [-3, 3] {
-        let factor = 10f64.powi(k);
+    // The real poses (position over the factor, rotation vector), sorted, and the count.
+    let solve = |factor: f64| {
         let m = Manipulator::new(&scaled(&d, factor)).unwrap();
         let inputs: Vec<(usize, f64)> = (0..4).map(|a| (a, 0.0)).collect();
         let ps = m
@@ -233,21 +233,49 @@ fn the_over_constrained_position_system_does_not_depend_on_the_length_unit() {
             &kinsyn::homotopy::SolveSettings::default(),
         )
         .unwrap();
-        let found: Vec<_> = o.solutions().collect();
-        assert_eq!(found.len(), 32, "×1e{k}: {}", o.report.summary());
-        let mut heights: Vec<f64> = found
-            .iter()
+        let mut poses: Vec<[f64; 6]> = o
+            .solutions()
             .filter(|s| s.real)
             .map(|s| {
                 let x: Vec<f64> = s.x.iter().map(|c| c.re).collect();
-                ps.displacement(&x).unwrap().translation.vector.z / factor
+                let g = ps.displacement(&x).unwrap();
+                let (t, r) = (g.translation.vector / factor, g.rotation.scaled_axis());
+                [t.x, t.y, t.z, r.x, r.y, r.z]
             })
             .collect();
-        heights.sort_by(f64::total_cmp);
-        assert_eq!(heights.len(), 4, "×1e{k}");
-        let root2 = std::f64::consts::SQRT_2;
-        for (h, want) in heights.iter().zip([-root2, -root2, root2, root2]) {
-            assert!((h - want).abs() < 1e-9, "×1e{k}: {heights:?}");
+        // In the order of the rounded coordinates (round-off of order 1e-11 in a position
+        // near 0 must not reorder them; + 0.0 makes -0 into 0).
+        let rounded = |p: &[f64; 6]| p.map(|v| (v * 1e6).round() + 0.0);
+        poses.sort_by(|a, b| {
+            let (a, b) = (rounded(a), rounded(b));
+            a.iter()
+                .zip(&b)
+                .map(|(u, v)| u.total_cmp(v))
+                .find(|o| o.is_ne())
+                .unwrap_or(std::cmp::Ordering::Equal)
+        });
+        (o.solutions().count(), poses)
+    };
+    let (count, metres) = solve(1.0);
+    assert_eq!(count, 32);
+    assert!(
+        metres.iter().any(|p| {
+            (p[2] - std::f64::consts::SQRT_2).abs() < 1e-9
+                && [p[0], p[1], p[3], p[4], p[5]]
+                    .iter()
+                    .all(|v| v.abs() < 1e-9)
+        }),
+        "{metres:?}"
+    );
+    for k in [-3, 3] {
+        let (scaled_count, poses) = solve(10f64.powi(k));
+        assert_eq!(scaled_count, count, "×1e{k}");
+        assert_eq!(poses.len(), metres.len(), "×1e{k}: {poses:?}");
+        for (a, b) in poses.iter().zip(&metres) {
+            assert!(
+                a.iter().zip(b).all(|(u, v)| (u - v).abs() < 1e-9),
+                "×1e{k}: {a:?} vs {b:?}"
+            );
         }
     }
 }
