@@ -412,6 +412,65 @@ impl StudyVariables {
         std::array::from_fn(|i| &p[i] - &(d.clone() * a[i]))
     }
 
+    /// The moving unit vector `m` (body frame) is carried onto the fixed unit vector `n`
+    /// (ground frame): `R m = n`. For a real `x ≠ 0`, `x m x̄ = Δ n` is equivalent to the
+    /// quaternion equation `x m = n x`, four **linear** equations in `x` of rank 2 (the
+    /// rotations that carry `m` onto `n` form a circle: a line of the projective space of `x`).
+    /// Returned: two independent real combinations of them (the right singular vectors of
+    /// their coefficient matrix for its two nonzero singular values), `x` only — degree 1. (The
+    /// platform of a planar leg turns about the leg's axis only: `R m = n` for its axis `m` in
+    /// the platform frame.)
+    ///
+    /// # Panics
+    /// Never: the singular value decomposition is asked for its right singular vectors.
+    #[must_use]
+    pub fn vector_onto(&self, m: &Vector3<f64>, n: &Vector3<f64>) -> [Poly; 2] {
+        let c = vector_onto_coefficients(m, n);
+        let svd = c.svd(false, true);
+        let v_t = svd.v_t.expect("the right singular vectors were asked for");
+        let mut order = [0, 1, 2, 3];
+        order.sort_by(|a, b| svd.singular_values[*b].total_cmp(&svd.singular_values[*a]));
+        let x = self.x();
+        order[..2]
+            .iter()
+            .map(|&k| {
+                (0..4).fold(Poly::zero(self.nvars), |acc, j| {
+                    acc + x[j].clone() * v_t[(k, j)]
+                })
+            })
+            .collect::<Vec<_>>()
+            .try_into()
+            .expect("two rows")
+    }
+
+    /// The four linear equations `x m − n x = 0` of [`Self::vector_onto`] (degree 1), for a
+    /// fixed vector `n` that is itself a polynomial vector (a turned axis, scaled by any
+    /// weight `w`: then `w x m − (w n) x`, with `w` the polynomial `weight`).
+    #[must_use]
+    pub fn vector_onto_turned(&self, m: &Vector3<f64>, n: &PolyVector, weight: &Poly) -> [Poly; 4] {
+        let x = self.x();
+        let xm = self.x_times(m);
+        // n x = [−n·x⃗, x0 n + n × x⃗] for the pure quaternion n.
+        let xv = [x[1].clone(), x[2].clone(), x[3].clone()];
+        let nx0 = -dot(n, &xv);
+        let nc = cross(n, &xv);
+        let nxv: [Poly; 3] = std::array::from_fn(|i| &(&x[0] * &n[i]) + &nc[i]);
+        [
+            weight * &xm[0] - nx0,
+            weight * &xm[1] - nxv[0].clone(),
+            weight * &xm[2] - nxv[1].clone(),
+            weight * &xm[3] - nxv[2].clone(),
+        ]
+    }
+
+    /// The angle between the fixed unit vector `n` (ground frame) and the moving unit vector
+    /// `m` (body frame) has cosine `c`: `n·(M_R m) − c Δ = 0` — degree 2, in `x` only. (The two
+    /// revolutes of a spherical RR dyad keep their axes at the link's twist angle.)
+    #[must_use]
+    pub fn vectors_at_angle(&self, n: &Vector3<f64>, m: &Vector3<f64>, c: f64) -> Poly {
+        self.moving_vector_orthogonal(m, n) - self.delta() * c
+    }
+
     /// The fixed line through `a` along `u` (ground frame) and the moving line through `b`
     /// along `m` (body frame) are coplanar — they meet or are parallel (paper 004 eq. 10:
     /// `(r_C − r_B)·(v × n) = 0`, the link of an RUU leg in the plane of its two axes):
@@ -433,6 +492,21 @@ impl StudyVariables {
         dot(&uv, &self.vector(&m.cross(b))) + dot(&uv, &self.rotated_cross_translation(m))
             - dot(&av, &cross(&uv, &self.vector(m)))
     }
+}
+
+/// The coefficient matrix `C` of the four linear equations `x m − n x = C x` (rows: the
+/// scalar part, then the vector part) of [`StudyVariables::vector_onto`]:
+/// `x m − n x = [−x⃗·(m − n), x0 (m − n) + x⃗ × (m + n)]`.
+fn vector_onto_coefficients(m: &Vector3<f64>, n: &Vector3<f64>) -> nalgebra::Matrix4<f64> {
+    let d = m - n;
+    let s = m + n;
+    // x⃗ × s = −[s]ₓ x⃗.
+    nalgebra::Matrix4::new(
+        0.0, -d.x, -d.y, -d.z, //
+        d.x, 0.0, s.z, -s.y, //
+        d.y, -s.z, 0.0, s.x, //
+        d.z, s.y, -s.x, 0.0,
+    )
 }
 
 /// The dot product of two quaternions as vectors of R⁴.

@@ -132,10 +132,10 @@ fn bad_requests_are_refused_in_one_line() {
     assert_refused(&o, "--inputs with --free-inputs", &["exclude each other"]);
     let o = kinsyn(&["components", "mechanisms/4-ruu.json", "--inputs", "R9.1=3"]);
     assert_refused(&o, "an unknown input", &["R9.1"]);
-    let o = kinsyn(&["components", "mechanisms/3-rrr-planar.json"]);
+    let o = kinsyn(&["components", "mechanisms/6-ruu-hexa.json"]);
     assert_refused(
         &o,
-        "a leg without a polynomial form",
-        &["3-rrr-planar.json"],
+        "a mechanism without a polynomial form",
+        &["6-ruu-hexa.json"],
     );
 }

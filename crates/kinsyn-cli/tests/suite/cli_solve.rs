@@ -792,16 +792,9 @@ fn bad_all_assemblies_input_is_one_line_and_exit_2() {
         &["'--all-assemblies' cannot be used with '--pose"],
     );
     assert_refused(
-        &kinsyn(&[
-            "analyze",
-            "mechanisms/3-rrr-planar.json",
-            "--all-assemblies",
-        ]),
-        "planar 3-RRR",
-        &[
-            "--all-assemblies: leg 1",
-            "supported with its inputs locked",
-        ],
+        &kinsyn(&["analyze", "mechanisms/6-ruu-hexa.json", "--all-assemblies"]),
+        "the HEXA",
+        &["--all-assemblies: 6-RUU HEXA"],
     );
     assert_refused(
         &kinsyn(&["analyze", ups, "--all-assemblies", "--inputs", "P7.3=0.1"]),

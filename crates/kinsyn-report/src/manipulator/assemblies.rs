@@ -7,9 +7,7 @@ use crate::Error;
 use crate::solve::{PathOption, solve_with_bar};
 use kinsyn::geometry::Chart;
 use kinsyn::homotopy::{SolveReport, SolveSettings, satisfying, square_randomisation};
-use kinsyn::manipulator::{
-    InputValues, LegKind, Manipulator, PositionRequest, PositionSystemError,
-};
+use kinsyn::manipulator::{InputValues, Manipulator, PositionRequest, PositionSystemError};
 use kinsyn::mechanism::rotation_log;
 use kinsyn::spatial::Displacement;
 use serde::Serialize;
@@ -160,7 +158,12 @@ pub fn all_assemblies_of(
             let residual = ps
                 .leg_residuals(&pose)
                 .iter()
-                .map(|r| r.distance.abs().max(r.plane.map_or(0.0, f64::abs)))
+                .map(|r| {
+                    r.distance
+                        .abs()
+                        .max(r.plane.map_or(0.0, f64::abs))
+                        .max(r.angle.map_or(0.0, f64::abs))
+                })
                 .fold(0.0, f64::max);
             let current = current.as_ref().is_some_and(|c| {
                 (c.to_homogeneous() - pose.to_homogeneous()).amax()
@@ -185,17 +188,7 @@ pub fn all_assemblies_of(
             !s.regular && delta.norm() <= 1e-8 * size
         })
         .count();
-    let kinds: Vec<&'static str> = ps
-        .legs()
-        .iter()
-        .map(|l| match l.kind {
-            LegKind::Distance => "distance",
-            LegKind::RevoluteSpherical => "R–S: distance and plane",
-            LegKind::SphericalRevolute => "S–R: distance and moving plane",
-            LegKind::Coincident => "coincident points",
-            LegKind::CoplanarDistance => "U–U: distance and coplanar lines",
-        })
-        .collect();
+    let kinds: Vec<&'static str> = ps.legs().iter().map(|l| l.kind.describe()).collect();
     Ok(AllAssemblies {
         inputs,
         seed,

@@ -309,8 +309,16 @@ fn real_slices(
     rng: &mut ChaCha8Rng,
 ) -> Vec<Vec<f64>> {
     let n = system.system().nvars();
+    let origin = vec![C64::new(0.0, 0.0); n];
     for attempt in 0..settings.real_slices {
-        let centre = &c.witness_points[attempt % c.witness_points.len()];
+        // Through the real part of a witness point, or (every other attempt) through the
+        // origin: with the unit chart the Study parameters' x lie on a sphere about it, which
+        // every real line through the origin meets.
+        let centre = if attempt % 2 == 1 {
+            &origin
+        } else {
+            &c.witness_points[(attempt / 2) % c.witness_points.len()]
+        };
         let slice: Vec<Vec<C64>> = (0..c.dimension)
             .map(|_| {
                 let a: Vec<f64> = (0..n)
@@ -349,7 +357,10 @@ fn released_point(
     q.resize(free.system().nvars(), 0.0);
     for a in 0..actuators {
         let delta = given.iter().find(|(i, _)| *i == a).map_or(0.0, |(_, v)| *v);
-        let variable = *free.inputs().get(a)?;
+        // A free input that is a passive joint of its leg has no variable to set.
+        let Some(variable) = free.input_variable(a) else {
+            continue;
+        };
         // An input half a turn from the reference has no finite tangent of its half angle.
         if (delta / 2.0).cos().abs() < 1e-6 {
             return None;

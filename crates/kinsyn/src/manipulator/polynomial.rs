@@ -35,10 +35,23 @@
 //!   through `B` along `u` coplanar with the moving line through `C` along `R n` (paper 004
 //!   eqs. 10, 12: `BC` lies in the plane of `u` and `R n`, the plane normal to `s`).
 //!
-//! Anything else (a passive P, two revolutes at each end with inner axes not parallel,
-//! parallel revolutes as in planar legs, passive joints between the end groups) is refused with
-//! [`PositionSystemError::UnsupportedLeg`], as are descriptions with several moving bodies or
-//! legs between bodies ([`PositionSystemError::Multibody`]).
+//! - **planar legs**: every passive revolute parallel to one axis `n`, any passive slider across
+//!   it (the motions of the leg's end lie in the planar group `G(n)`): the platform turns about
+//!   `n` only, `R m = n` — two **linear** equations in `x` (`x m = n x`,
+//!   [`crate::geometry::StudyVariables::vector_onto`]) — and its point `B` stays in the plane
+//!   of `A` normal to `n`; two parallel revolutes (an RR dyad) add `|B − A| = l`; a slider
+//!   along `n` frees the plane (`R m = n` only); one passive revolute fixes its axis
+//!   (`B = A` and `R m = n`);
+//! - **spherical RR dyads**: two passive revolutes meeting at `A`: `B = A` and the angle of the
+//!   link, `n·(R m) = cos α`;
+//! - **a passive slider between the end groups** (a leg whose slider input is free or not
+//!   given): S–P–S and U–P–S constrain nothing; R–P–S with the slider across the R keeps only
+//!   the plane condition, S–P–R with the slider across the platform R only the moving plane.
+//!
+//! Anything else (two revolutes at each end with inner axes not parallel, a skew RR dyad, a
+//! passive slider in any other place, several passive joints between the end groups) is
+//! refused with [`PositionSystemError::UnsupportedLeg`], as are descriptions with several
+//! moving bodies or legs between bodies ([`PositionSystemError::Multibody`]).
 //!
 //! The system is the legs' constraints, the Study quadric and the chart's equation
 //! ([`Chart`]); it is square exactly when the legs give six constraints. An over-constrained
@@ -46,9 +59,13 @@
 //! ([`Manipulator::constraint_system`]).
 //!
 //! # Free inputs
-//! With [`InputValues::Free`], each actuated revolute fixed in the ground (the first joint of
-//! its leg) is an unknown `t_k = tan(θ_k / 2)` of its **displacement `θ_k` from the reference**
-//! (variables `t1, t2, …` after `x0 … y3`, by actuator index). The points and axes it carries
+//! With [`InputValues::Free`], a free input is a **passive joint** of its leg wherever the leg
+//! is then of a kind recognised above: its value is eliminated with the leg's motion (a UPS
+//! with its slider free constrains nothing, an RPS keeps its plane, a planar RRR its plane and
+//! axis). Otherwise (an RUU, whose five passive revolutes form no kind above), an actuated
+//! revolute fixed in the ground (the first joint of its leg) is an unknown
+//! `t_k = tan(θ_k / 2)` of its **displacement `θ_k` from the reference** (variables
+//! `t1, t2, …`, named by actuator number, after `x0 … y3`). The points and axes it carries
 //! (its leg's ground-side data) turn about its axis `n` through its point `p` by the rational
 //! Rodrigues form `(1 + t²) R(θ) v = (1 − t²) v + 2t (n × v) + 2t² n (n·v)`, and each of the
 //! leg's equations is multiplied by `1 + t²`, which makes it a polynomial of degree 2 in `t`
@@ -123,16 +140,6 @@ pub enum PositionSystemError {
         "the legs give {0} constraints at these inputs, more than the platform's 6 dof: over-constrained systems are not supported yet"
     )]
     Overdetermined(usize),
-    /// A free input ([`InputValues::Free`]) that is not a revolute fixed in the ground.
-    #[error(
-        "input {label} cannot be a free unknown: {reason}; free inputs must be revolutes fixed in the ground (the first joint of a leg)"
-    )]
-    FreeInput {
-        /// The actuator's label.
-        label: String,
-        /// What it is instead.
-        reason: String,
-    },
 }
 
 /// Which actuated joints are fixed in [`Manipulator::constraint_system`].
@@ -176,6 +183,55 @@ pub enum LegKind {
     /// inner axes parallel (RUU): `|C − B| = l` and `(C − B)·(u × R n) = 0`, the line
     /// `(B, u)` coplanar with the moving line `(C, R n)`.
     CoplanarDistance,
+    /// Parallel passive revolutes (axis `n`), with any passive sliders across them, giving the
+    /// leg's end three planar dof or more: the planar displacements `G(n)`. The platform turns
+    /// about `n` only, `R m = n` (two linear equations in `x`: [`StudyVariables::vector_onto`]),
+    /// and its point `B` stays in the plane through `A` normal to `n`: `n·(B − A) = 0`.
+    Planar,
+    /// Two parallel passive revolutes (a planar RR dyad: the first axis through `A`, the last
+    /// through `B`, `B − A` normal to them): [`LegKind::Planar`] and `|B − A| = l`.
+    PlanarDistance,
+    /// Parallel passive revolutes with a passive slider along them (the Schoenflies motions
+    /// `X(n)`, or a cylindrical leg with the plane of motion free): `R m = n` only.
+    Parallel,
+    /// Two passive revolutes whose axes meet at `A` (a spherical RR dyad; `B = A` on the
+    /// platform): `B = A` (three equations) and the angle of the link between the fixed axis
+    /// `n` and the moving axis `R m`, `n·(R m) = cos α`.
+    SphericalAngle,
+    /// One passive revolute (axis `n` through `A`; `m` and `B` on the platform): the axis is
+    /// fixed, `B = A` and `R m = n`.
+    Revolute,
+    /// A passive slider between spherical groups of five revolutes or more (a UPS or SPS with
+    /// its slider free): no constraint.
+    Free,
+    /// A revolute at the base, a passive slider across its axis and a spherical group at the
+    /// platform (an RPS with its slider free): `n·(B − A) = 0` only.
+    Plane,
+    /// A spherical group at the base, a passive slider across the platform revolute's axis
+    /// (an SPR with its slider free): `(R m)·(A − B) = 0` only.
+    MovingPlane,
+}
+
+impl LegKind {
+    /// What the leg imposes, in a few words (reports).
+    #[must_use]
+    pub fn describe(self) -> &'static str {
+        match self {
+            Self::Distance => "distance",
+            Self::RevoluteSpherical => "R–S: distance and plane",
+            Self::SphericalRevolute => "S–R: distance and moving plane",
+            Self::Coincident => "coincident points",
+            Self::CoplanarDistance => "U–U: distance and coplanar lines",
+            Self::Planar => "planar: axis kept and plane",
+            Self::PlanarDistance => "planar R–R: axis kept, plane and distance",
+            Self::Parallel => "axis kept",
+            Self::SphericalAngle => "spherical R–R: coincident points and axis angle",
+            Self::Revolute => "revolute: coincident points and axis kept",
+            Self::Free => "none (passive slider)",
+            Self::Plane => "plane",
+            Self::MovingPlane => "moving plane",
+        }
+    }
 }
 
 /// The constraints of one leg: fixed point `A`, platform point `B`, length, axis.
@@ -195,8 +251,14 @@ pub struct LegConstraint {
     /// `m` of the platform revolute (platform frame) for [`LegKind::SphericalRevolute`], the
     /// base U's first axis `u` (ground frame) for [`LegKind::CoplanarDistance`].
     pub axis: Option<Vector3<f64>>,
-    /// The platform U's last axis `n` (platform frame) for [`LegKind::CoplanarDistance`].
+    /// The platform U's last axis `n` (platform frame) for [`LegKind::CoplanarDistance`]; the
+    /// platform's axis `m` (platform frame) for [`LegKind::Planar`],
+    /// [`LegKind::PlanarDistance`], [`LegKind::Parallel`], [`LegKind::SphericalAngle`] and
+    /// [`LegKind::Revolute`] (whose `axis` is then the fixed axis `n`, ground frame).
     pub platform_axis: Option<Vector3<f64>>,
+    /// `cos α`, the angle between the fixed and the moving axis, for
+    /// [`LegKind::SphericalAngle`].
+    pub cosine: Option<f64>,
     /// The free input that turns `base` and `axis` (ground frame), with
     /// [`InputValues::Free`]; they are given at its reference value.
     pub turned_by: Option<FreeRevolute>,
@@ -207,11 +269,15 @@ impl LegConstraint {
     #[must_use]
     pub fn equations(&self) -> usize {
         match self.kind {
-            LegKind::Distance => 1,
-            LegKind::RevoluteSpherical | LegKind::SphericalRevolute | LegKind::CoplanarDistance => {
-                2
-            }
-            LegKind::Coincident => 3,
+            LegKind::Free => 0,
+            LegKind::Distance | LegKind::Plane | LegKind::MovingPlane => 1,
+            LegKind::RevoluteSpherical
+            | LegKind::SphericalRevolute
+            | LegKind::CoplanarDistance
+            | LegKind::Parallel => 2,
+            LegKind::Coincident | LegKind::Planar => 3,
+            LegKind::PlanarDistance | LegKind::SphericalAngle => 4,
+            LegKind::Revolute => 5,
         }
     }
 }
@@ -221,13 +287,19 @@ impl LegConstraint {
 pub struct LegResidual {
     /// 0-based leg.
     pub leg: usize,
-    /// `|B − A| − l`.
+    /// `|B − A| − l` (`|B − A|` for the kinds that make the points coincide); 0 for the
+    /// kinds without a distance or coincidence condition.
     pub distance: f64,
     /// The plane condition's residual as a signed distance, `n·(B − A)` (R–S),
     /// `(R m)·(A − B)` (S–R), or the distance of `C` from the plane through `B` spanned by `u`
     /// and `R n`, `(C − B)·(u × R n) / |u × R n|` (U–U; 0 when they are parallel); `None` for
-    /// the other kinds.
+    /// the other kinds; `n·(B − A)` for the planar kinds too.
     pub plane: Option<f64>,
+    /// The kinds that fix an axis: the angle (radians) between the moving axis `R m` and the
+    /// fixed `n` ([`LegKind::Planar`], [`LegKind::PlanarDistance`], [`LegKind::Parallel`],
+    /// [`LegKind::Revolute`]), or its difference from the link's `α`
+    /// ([`LegKind::SphericalAngle`]); `None` for the other kinds.
+    pub angle: Option<f64>,
 }
 
 /// A manipulator as a polynomial system in the Study parameters `x0 … y3` of its platform
@@ -240,6 +312,7 @@ pub struct PositionSystem {
     chart: Chart,
     legs: Vec<LegConstraint>,
     inputs: Vec<usize>,
+    free: Vec<FreeRevolute>,
 }
 
 impl PositionSystem {
@@ -261,11 +334,22 @@ impl PositionSystem {
         &self.legs
     }
 
-    /// The variable index of each free input's `t_k = tan(θ_k / 2)`, in actuator order (empty
-    /// when the inputs are given).
+    /// The variable index of each free input's `t_k = tan(θ_k / 2)`, in actuator order: the
+    /// revolutes fixed in the ground (empty when the inputs are given). The other free inputs
+    /// are passive joints of their legs, with no variable.
     #[must_use]
     pub fn inputs(&self) -> &[usize] {
         &self.inputs
+    }
+
+    /// The variable of the free input `actuator` (an index into [`Manipulator::actuators`]),
+    /// `None` when it has none (given inputs, or a free input that is a passive joint).
+    #[must_use]
+    pub fn input_variable(&self, actuator: usize) -> Option<usize> {
+        self.free
+            .iter()
+            .find(|f| f.actuator == actuator)
+            .map(|f| f.variable)
     }
 
     /// The platform frame's displacement of a real solution `x0 … y3` (the free inputs'
@@ -299,8 +383,26 @@ impl PositionSystem {
             .iter()
             .map(|c| {
                 let b = pose.transform_point(&Point3::from(c.platform)).coords;
+                let moving = c.platform_axis.map(|m| pose.rotation * m);
+                let between = |n: Vector3<f64>, m: Vector3<f64>| n.dot(&m).clamp(-1.0, 1.0).acos();
+                let angle = match c.kind {
+                    LegKind::Planar
+                    | LegKind::PlanarDistance
+                    | LegKind::Parallel
+                    | LegKind::Revolute => c.axis.zip(moving).map(|(n, m)| between(n, m)),
+                    LegKind::SphericalAngle => c
+                        .axis
+                        .zip(moving)
+                        .zip(c.cosine)
+                        .map(|((n, m), cos)| between(n, m) - cos.clamp(-1.0, 1.0).acos()),
+                    _ => None,
+                };
                 let plane = match c.kind {
-                    LegKind::RevoluteSpherical => c.axis.map(|n| n.dot(&(b - c.base))),
+                    LegKind::RevoluteSpherical
+                    | LegKind::Plane
+                    | LegKind::Planar
+                    | LegKind::PlanarDistance => c.axis.map(|n| n.dot(&(b - c.base))),
+                    LegKind::MovingPlane => c.axis.map(|m| (pose.rotation * m).dot(&(c.base - b))),
                     LegKind::SphericalRevolute => {
                         c.axis.map(|m| (pose.rotation * m).dot(&(c.base - b)))
                     }
@@ -313,12 +415,25 @@ impl PositionSystem {
                             0.0
                         }
                     }),
-                    LegKind::Distance | LegKind::Coincident => None,
+                    _ => None,
+                };
+                let distance = match c.kind {
+                    LegKind::Free | LegKind::Plane | LegKind::MovingPlane | LegKind::Parallel => {
+                        0.0
+                    }
+                    LegKind::PlanarDistance => {
+                        // The distance within the plane of motion (normal to the axis).
+                        let n = c.axis.unwrap_or_default();
+                        let d = b - c.base;
+                        (d - n * n.dot(&d)).norm() - c.length
+                    }
+                    _ => (b - c.base).norm() - c.length,
                 };
                 LegResidual {
                     leg: c.leg,
-                    distance: (b - c.base).norm() - c.length,
+                    distance,
                     plane,
+                    angle,
                 }
             })
             .collect()
@@ -497,28 +612,28 @@ impl Manipulator {
                 }
             }
             InputValues::Free => {
+                let mut variable = 8;
                 for (k, act) in self.actuators.iter().enumerate() {
-                    let refuse = |reason: &str| PositionSystemError::FreeInput {
-                        label: act.label(),
-                        reason: reason.to_string(),
-                    };
                     let spec = &joints[act.joint];
-                    if spec.kind != Primitive::R {
-                        return Err(refuse("it is a prismatic joint"));
-                    }
-                    let leg = self
-                        .legs
-                        .iter()
-                        .position(|l| l.joints.start == act.joint)
-                        .ok_or_else(|| refuse("it is not the first joint of its leg"))?;
-                    // Locked at its reference value; the leg's ground side turns with `t`.
-                    value[act.joint] = Some(0.0);
-                    turned[leg] = Some(FreeRevolute {
-                        actuator: k,
-                        variable: 8 + k,
-                        point: spec.point,
-                        axis: spec.axis.normalize(),
+                    let leg = self.legs.iter().position(|l| l.joints.start == act.joint);
+                    // A free input is a passive joint of its leg, its value eliminated with
+                    // the leg's motion, wherever the leg is then of a kind recognised here.
+                    // Otherwise, a revolute fixed in the ground is locked at its reference
+                    // value, the leg's ground side turned by the unknown `t`.
+                    let eliminated = leg.is_none_or(|l| {
+                        self.leg_constraint(l, &value, 1e-6 * self.mechanism.scale())
+                            .is_ok()
                     });
+                    if let (Primitive::R, Some(leg), false) = (spec.kind, leg, eliminated) {
+                        value[act.joint] = Some(0.0);
+                        turned[leg] = Some(FreeRevolute {
+                            actuator: k,
+                            variable,
+                            point: spec.point,
+                            axis: spec.axis.normalize(),
+                        });
+                        variable += 1;
+                    }
                 }
             }
         }
@@ -529,8 +644,9 @@ impl Manipulator {
             c.turned_by = *turn;
             legs.push(c);
         }
-        let free = matches!(inputs, InputValues::Free);
-        let nvars = if free { 8 + self.actuators.len() } else { 8 };
+        let mut free: Vec<FreeRevolute> = turned.iter().flatten().copied().collect();
+        free.sort_by_key(|f| f.variable);
+        let nvars = 8 + free.len();
         let s = StudyVariables::leading(nvars);
         let mut equations = Vec::with_capacity(legs.len() * 2 + 2);
         for c in &legs {
@@ -545,15 +661,16 @@ impl Manipulator {
         equations.push(s.chart(chart));
         let mut names: Vec<String> = STUDY_NAMES.iter().map(|n| (*n).to_string()).collect();
         let mut input_variables = Vec::new();
-        if free {
-            names.extend((1..=self.actuators.len()).map(|k| format!("t{k}")));
-            input_variables.extend(8..nvars);
+        for turn in &free {
+            names.push(format!("t{}", turn.actuator + 1));
+            input_variables.push(turn.variable);
         }
         Ok(PositionSystem {
             system: System::new(names, equations).expect("distinct names, equations in their ring"),
             chart: *chart,
             legs,
             inputs: input_variables,
+            free,
         })
     }
 
@@ -583,101 +700,240 @@ impl Manipulator {
     }
 
     /// Leg `i`'s constraint with the joints of `value` locked there (the others at their
-    /// reference values, where their axes are read).
+    /// reference values, where their axes are read): the kinds of [`LegKind`], tried in turn —
+    /// parallel revolutes (planar legs), revolutes through one point (spherical legs), then
+    /// groups of concurrent revolutes at the two ends with at most one passive slider between.
     fn leg_constraint(
         &self,
         i: usize,
         value: &[Option<f64>],
         tolerance: f64,
     ) -> Result<LegConstraint, PositionSystemError> {
-        let leg = &self.legs[i];
-        let unsupported = |reason: String| PositionSystemError::UnsupportedLeg {
-            leg: i + 1,
-            chain: leg.chain.to_string(),
-            reason,
-        };
         let (passive, frame) = self.passive_lines(i, value);
-        if let Some((k, _)) = passive.iter().find(|(_, l)| l.kind == Primitive::P) {
-            let hint = self
-                .actuators
+        let lines: Vec<&Line> = passive.iter().map(|(_, l)| l).collect();
+        let to_platform = |v: &Vector3<f64>| frame.rotation.inverse() * v;
+        let constraint = |kind, base, platform| constraint_of(i, &frame, kind, base, platform);
+        if lines.is_empty() {
+            return Err(self.unsupported(
+                i,
+                "no passive joint: the leg is rigid at these inputs".to_string(),
+            ));
+        }
+        if let Some(kind) = planar_kind(&lines) {
+            // The first revolute's axis through `A`; `B` the foot of `A` on the last one.
+            let revolutes: Vec<&&Line> = lines.iter().filter(|l| l.kind == Primitive::R).collect();
+            let n = revolutes[0].direction;
+            let a = revolutes[0].point;
+            let b = foot(revolutes[revolutes.len() - 1], &a);
+            let mut c = constraint(kind, a, b);
+            if kind == LegKind::Revolute {
+                c.length = 0.0;
+            }
+            c.axis = Some(n);
+            c.platform_axis = Some(to_platform(&n));
+            return Ok(c);
+        }
+        if lines.len() == 2
+            && let Some(o) = common_point(&lines, tolerance)
+        {
+            let (n, m) = (lines[0].direction, lines[1].direction);
+            let mut c = constraint(LegKind::SphericalAngle, o, o);
+            c.length = 0.0;
+            c.axis = Some(n);
+            c.platform_axis = Some(to_platform(&m));
+            c.cosine = Some(n.dot(&m));
+            return Ok(c);
+        }
+        self.end_groups_constraint(i, &passive, &frame, tolerance)
+    }
+
+    /// [`PositionSystemError::UnsupportedLeg`] for leg `i`, with `reason`.
+    fn unsupported(&self, i: usize, reason: String) -> PositionSystemError {
+        PositionSystemError::UnsupportedLeg {
+            leg: i + 1,
+            chain: self.legs[i].chain.to_string(),
+            reason,
+        }
+    }
+
+    /// Leg `i`'s constraint from its `passive` lines (with their positions in the leg; the
+    /// platform `frame` its configuration carries) as groups of concurrent revolutes at its
+    /// two ends, with at most one passive slider between.
+    fn end_groups_constraint(
+        &self,
+        i: usize,
+        passive: &[(usize, Line)],
+        frame: &Displacement,
+        tolerance: f64,
+    ) -> Result<LegConstraint, PositionSystemError> {
+        let leg = &self.legs[i];
+        let unsupported = |reason: String| self.unsupported(i, reason);
+        let lines: Vec<&Line> = passive.iter().map(|(_, l)| l).collect();
+        let to_platform = |v: &Vector3<f64>| frame.rotation.inverse() * v;
+        let constraint = |kind, base, platform| constraint_of(i, frame, kind, base, platform);
+        let n = lines.len();
+        let (kb, a) = end_group(&lines, &mut (0..n), tolerance);
+        let (kp, b) = end_group(&lines, &mut (kb..n).rev(), tolerance);
+        let slider_hint = |k: usize| {
+            self.actuators
                 .iter()
-                .find(|a| a.joint == leg.joints.start + k)
+                .find(|a| a.joint == leg.joints.start + passive[k].0)
                 .map_or(String::new(), |a| {
                     format!(" (its input {} is not given)", a.label())
-                });
-            return Err(unsupported(format!(
-                "its joint {} is a passive P{hint}",
-                k + 1
-            )));
-        }
-        let lines: Vec<&Line> = passive.iter().map(|(_, l)| l).collect();
-        let n = lines.len();
-        let group = |range: &mut dyn Iterator<Item = usize>| {
-            let mut best = (0, None);
-            let mut picked = Vec::new();
-            for k in range.take(3) {
-                picked.push(lines[k]);
-                match common_point(&picked, tolerance) {
-                    Some(p) => best = (picked.len(), Some(p)),
-                    None => break,
-                }
-            }
-            best
+                })
         };
-        let (kb, a) = group(&mut (0..n));
-        let (kp, b) = group(&mut (kb..n).rev());
-        if kb + kp < n {
-            return Err(unsupported(format!(
-                "{} passive joints between the joints at its base and at its platform",
-                n - kb - kp
-            )));
-        }
-        let local = |p: &Vector3<f64>| frame.inverse_transform_point(&Point3::from(*p)).coords;
-        let mut platform_axis = None;
-        let (kind, base, platform_ground, axis) = match (kb, kp, a, b) {
-            (2 | 3, 2 | 3, Some(a), Some(b)) if kb + kp > 4 => (LegKind::Distance, a, b, None),
-            (2, 2, Some(a), Some(b)) => {
-                let [u, n] = u_u_axes(&lines, &a, &b, tolerance).map_err(|p| {
+        // At most one passive slider between the end groups, and nothing else.
+        let slider = match n - kb - kp {
+            0 => None,
+            1 if lines[kb].kind == Primitive::P => Some(lines[kb].direction),
+            1 => {
+                return Err(unsupported(
+                    "1 passive revolute between the joints at its base and at its platform"
+                        .to_string(),
+                ));
+            }
+            between => {
+                let sliders = lines[kb..n - kp]
+                    .iter()
+                    .position(|l| l.kind == Primitive::P)
+                    .map_or(String::new(), |k| slider_hint(kb + k));
+                return Err(unsupported(format!(
+                    "{between} passive joints between the joints at its base and at its platform{sliders}"
+                )));
+            }
+        };
+        let across =
+            |d: &Vector3<f64>, axis: &Vector3<f64>| d.dot(axis).abs() <= super::AXIS_TOLERANCE;
+        let refuse_groups = |extra: &str| {
+            unsupported(format!(
+                "its passive joints form {} at the base and {} at the platform{extra}",
+                describe(kb),
+                describe(kp)
+            ))
+        };
+        let mut c = match (kb, kp, a, b, slider) {
+            (2 | 3, 2 | 3, Some(a), Some(_), Some(_)) if kb + kp > 4 => {
+                constraint(LegKind::Free, a, a)
+            }
+            (1, 3, Some(_), Some(b), Some(d)) if across(&d, &lines[0].direction) => {
+                let mut c = constraint(LegKind::Plane, foot(lines[0], &b), b);
+                c.axis = Some(lines[0].direction);
+                c
+            }
+            (3, 1, Some(a), Some(_), Some(d)) if across(&d, &lines[n - 1].direction) => {
+                let line = lines[n - 1];
+                let mut c = constraint(LegKind::MovingPlane, a, foot(line, &a));
+                c.axis = Some(to_platform(&line.direction));
+                c
+            }
+            (_, _, _, _, Some(_)) => {
+                return Err(refuse_groups(&format!(
+                    " with a passive slider between{}",
+                    slider_hint(kb)
+                )));
+            }
+            (2 | 3, 2 | 3, Some(a), Some(b), None) if kb + kp > 4 => {
+                constraint(LegKind::Distance, a, b)
+            }
+            (2, 2, Some(a), Some(b), None) => {
+                let [u, nn] = u_u_axes(&lines, &a, &b, tolerance).map_err(|p| {
                     unsupported(format!(
                         "its passive joints form a universal joint (2 revolutes) at the base and at the platform with the {p}"
                     ))
                 })?;
-                platform_axis = Some(frame.rotation.inverse() * n);
-                (LegKind::CoplanarDistance, a, b, Some(u))
+                let mut c = constraint(LegKind::CoplanarDistance, a, b);
+                c.axis = Some(u);
+                c.platform_axis = Some(to_platform(&nn));
+                c
             }
-            (1, 3, Some(_), Some(b)) => {
+            (1, 3, Some(_), Some(b), None) => {
                 let line = lines[0];
-                (
-                    LegKind::RevoluteSpherical,
-                    foot(line, &b),
-                    b,
-                    Some(line.direction),
-                )
+                let mut c = constraint(LegKind::RevoluteSpherical, foot(line, &b), b);
+                c.axis = Some(line.direction);
+                c
             }
-            (3, 1, Some(a), Some(_)) => {
+            (3, 1, Some(a), Some(_), None) => {
                 let line = lines[n - 1];
-                let m = frame.rotation.inverse() * line.direction;
-                (LegKind::SphericalRevolute, a, foot(line, &a), Some(m))
+                let mut c = constraint(LegKind::SphericalRevolute, a, foot(line, &a));
+                c.axis = Some(to_platform(&line.direction));
+                c
             }
-            (3, 0, Some(a), None) => (LegKind::Coincident, a, a, None),
-            _ => {
-                return Err(unsupported(format!(
-                    "its passive joints form {} at the base and {} at the platform",
-                    describe(kb),
-                    describe(kp)
-                )));
-            }
+            (3, 0, Some(a), None, None) => constraint(LegKind::Coincident, a, a),
+            _ => return Err(refuse_groups("")),
         };
-        Ok(LegConstraint {
-            leg: i,
-            kind,
-            base,
-            platform: local(&platform_ground),
-            length: (platform_ground - base).norm(),
-            axis,
-            platform_axis,
-            turned_by: None,
-        })
+        if c.kind == LegKind::Free {
+            c.length = 0.0;
+        }
+        Ok(c)
+    }
+}
+
+/// The longest run of concurrent revolutes (at most three) among `lines` taken in the order of
+/// `range`, from its start: how many, and their common point.
+fn end_group(
+    lines: &[&Line],
+    range: &mut dyn Iterator<Item = usize>,
+    tolerance: f64,
+) -> (usize, Option<Vector3<f64>>) {
+    let mut best = (0, None);
+    let mut picked = Vec::new();
+    for k in range.take(3) {
+        picked.push(lines[k]);
+        match common_point(&picked, tolerance) {
+            Some(p) => best = (picked.len(), Some(p)),
+            None => break,
+        }
+    }
+    best
+}
+
+/// Leg `i`'s constraint of `kind` between the fixed point `base` and the point
+/// `platform_ground` (ground frame, at the configuration where the leg carries the platform
+/// frame `frame`), their distance its length; no axis yet.
+fn constraint_of(
+    i: usize,
+    frame: &Displacement,
+    kind: LegKind,
+    base: Vector3<f64>,
+    platform_ground: Vector3<f64>,
+) -> LegConstraint {
+    LegConstraint {
+        leg: i,
+        kind,
+        base,
+        platform: frame
+            .inverse_transform_point(&Point3::from(platform_ground))
+            .coords,
+        length: (platform_ground - base).norm(),
+        axis: None,
+        platform_axis: None,
+        cosine: None,
+        turned_by: None,
+    }
+}
+
+/// The planar kind of a leg's passive lines, if every revolute among them is parallel to the
+/// first and every slider runs across or along them ([`LegKind::Planar`],
+/// [`LegKind::PlanarDistance`], [`LegKind::Parallel`], [`LegKind::Revolute`]); `None` when they
+/// are not, or form a planar chain of another kind (an RP dyad, a cylindrical pair).
+fn planar_kind(lines: &[&Line]) -> Option<LegKind> {
+    let n = lines.iter().find(|l| l.kind == Primitive::R)?.direction;
+    let (mut revolutes, mut across, mut along) = (0, 0, 0);
+    for l in lines {
+        let c = l.direction.dot(&n);
+        match l.kind {
+            Primitive::R if l.direction.cross(&n).norm() <= super::AXIS_TOLERANCE => revolutes += 1,
+            Primitive::P if c.abs() <= super::AXIS_TOLERANCE => across += 1,
+            Primitive::P if l.direction.cross(&n).norm() <= super::AXIS_TOLERANCE => along += 1,
+            _ => return None,
+        }
+    }
+    match (revolutes, across, along) {
+        (1, 0, 0) => Some(LegKind::Revolute),
+        (2, 0, 0) => Some(LegKind::PlanarDistance),
+        (r, a, 0) if r + a >= 3 => Some(LegKind::Planar),
+        (r, a, _) if r + a >= 3 => Some(LegKind::Parallel),
+        _ => None,
     }
 }
 
@@ -736,6 +992,34 @@ fn fixed_leg_equations(s: &StudyVariables, c: &LegConstraint) -> Vec<Poly> {
                 &c.platform_axis.unwrap_or_default(),
             ),
         ],
+        LegKind::Planar | LegKind::PlanarDistance | LegKind::Parallel | LegKind::Revolute => {
+            let m = c.platform_axis.unwrap_or_default();
+            let mut e = s.vector_onto(&m, &axis).to_vec();
+            match c.kind {
+                LegKind::Planar => {
+                    e.push(s.moving_point_on_fixed_plane(&c.platform, &c.base, &axis));
+                }
+                LegKind::PlanarDistance => {
+                    e.push(s.moving_point_on_fixed_plane(&c.platform, &c.base, &axis));
+                    e.push(s.distance(&c.base, &c.platform, c.length));
+                }
+                LegKind::Revolute => e.extend(s.moving_point_at(&c.platform, &c.base)),
+                _ => {}
+            }
+            e
+        }
+        LegKind::SphericalAngle => {
+            let mut e = s.moving_point_at(&c.platform, &c.base).to_vec();
+            e.push(s.vectors_at_angle(
+                &axis,
+                &c.platform_axis.unwrap_or_default(),
+                c.cosine.unwrap_or_default(),
+            ));
+            e
+        }
+        LegKind::Free => Vec::new(),
+        LegKind::Plane => vec![s.moving_point_on_fixed_plane(&c.platform, &c.base, &axis)],
+        LegKind::MovingPlane => vec![s.fixed_point_on_moving_plane(&c.base, &c.platform, &axis)],
     }
 }
 
@@ -817,29 +1101,69 @@ fn turned_leg_equations(s: &StudyVariables, c: &LegConstraint, turn: &Turn) -> V
             - dot(&turn.point(a), &s.point(b)) * 2.0
     };
     let axis = c.axis.unwrap_or_default();
+    // w (n'·(M_R b + M_T) − Δ n'·a'), n'·a' = (R n)·p + n·(a − p): the moving point on the
+    // turned fixed plane.
+    let plane = || {
+        let wn = turn.direction(&axis);
+        let wna =
+            dot(&wn, &constant_vector(n, &turn.point)) + w.clone() * axis.dot(&(a - turn.point));
+        dot(&wn, &s.point(b)) - &delta * &wna
+    };
+    // w (M_R b + M_T − Δ a'): the moving point at the turned fixed point.
+    let coincident = || {
+        let p = s.point(b);
+        let wa = turn.point(a);
+        (0..3)
+            .map(|i| &w * &p[i] - &delta * &wa[i])
+            .collect::<Vec<_>>()
+    };
+    // x m = n' x with the turned axis n' (four equations, bilinear in x and t); two linear
+    // ones in x when the turn is about n itself, which leaves n' = n.
+    let onto = || {
+        let m = c.platform_axis.unwrap_or_default();
+        if turn.axis.cross(&axis).norm() <= super::AXIS_TOLERANCE {
+            s.vector_onto(&m, &axis).to_vec()
+        } else {
+            s.vector_onto_turned(&m, &turn.direction(&axis), &w)
+                .to_vec()
+        }
+    };
     match c.kind {
         LegKind::Distance => vec![distance()],
-        LegKind::RevoluteSpherical => {
-            // w (n'·(M_R b + M_T) − Δ n'·a'), n'·a' = (R n)·p + n·(a − p).
-            let wn = turn.direction(&axis);
-            let wna = dot(&wn, &constant_vector(n, &turn.point))
-                + w.clone() * axis.dot(&(a - turn.point));
-            vec![distance(), dot(&wn, &s.point(b)) - &delta * &wna]
+        LegKind::RevoluteSpherical => vec![distance(), plane()],
+        LegKind::Plane => vec![plane()],
+        LegKind::Planar | LegKind::PlanarDistance | LegKind::Parallel | LegKind::Revolute => {
+            let mut e = onto();
+            match c.kind {
+                LegKind::Planar => e.push(plane()),
+                LegKind::PlanarDistance => e.extend([plane(), distance()]),
+                LegKind::Revolute => e.extend(coincident()),
+                _ => {}
+            }
+            e
         }
-        LegKind::SphericalRevolute => {
+        LegKind::SphericalAngle => {
+            // w n'·(M_R m) − w cos α Δ.
+            let wn = turn.direction(&axis);
+            let angle = dot(&wn, &s.vector(&c.platform_axis.unwrap_or_default()))
+                - &w * &delta * c.cosine.unwrap_or_default();
+            let mut e = coincident();
+            e.push(angle);
+            e
+        }
+        LegKind::Free => Vec::new(),
+        LegKind::SphericalRevolute | LegKind::MovingPlane => {
             // The plane condition is affine in the fixed point: F(a') = F(0) + (M_R m)·a'.
             let m = axis;
-            vec![
-                distance(),
-                &w * &s.fixed_point_on_moving_plane(&zero, b, &m)
-                    + dot(&s.vector(&m), &turn.point(a)),
-            ]
+            let moving_plane = &w * &s.fixed_point_on_moving_plane(&zero, b, &m)
+                + dot(&s.vector(&m), &turn.point(a));
+            if c.kind == LegKind::MovingPlane {
+                vec![moving_plane]
+            } else {
+                vec![distance(), moving_plane]
+            }
         }
-        LegKind::Coincident => {
-            let p = s.point(b);
-            let wa = turn.point(a);
-            (0..3).map(|i| &w * &p[i] - &delta * &wa[i]).collect()
-        }
+        LegKind::Coincident => coincident(),
         LegKind::CoplanarDistance => {
             // Coplanarity is linear in the fixed line's Plücker coordinates (u', a' × u'):
             // u'·P − (M_R m)·(a' × u') with P_k = lines_coplanar(0, e_k, b, m).

@@ -60,6 +60,10 @@ pub type StudyParameters = [f64; 8];
 /// projective scale and of the unit of length.
 pub const QUADRIC_TOLERANCE: f64 = 1e-9;
 
+/// The length of `y` (with `|x| = 1`) below which [`to_displacement`] judges the quadric
+/// residual against this length rather than against `|y|`.
+pub const NEGLIGIBLE_DUAL: f64 = 1e-6;
+
 /// Why eight numbers are not the Study parameters of a displacement (paper 004 eq. 7).
 #[derive(Debug, Clone, Copy, PartialEq, thiserror::Error)]
 pub enum StudyError {
@@ -194,15 +198,15 @@ pub fn normalise(s: &StudyParameters) -> Result<StudyParameters, StudyError> {
 /// # Errors
 /// [`StudyError::NotFinite`], [`StudyError::ExceptionalGenerator`] as [`normalise`], and
 /// [`StudyError::OffQuadric`] when the relative residual `|x·y| / (|x| |y|)` exceeds
-/// `tolerance` ([`QUADRIC_TOLERANCE`] by default).
+/// `tolerance` ([`QUADRIC_TOLERANCE`] by default). With `|x| = 1`, a `y` shorter than
+/// [`NEGLIGIBLE_DUAL`] (a translation of the order of a numerical solver's noise at the
+/// parameters' scale) has no meaningful direction: its residual is taken relative to that
+/// length instead, so that a rotation about the origin computed with rounding errors in `y` is
+/// read as the rotation.
 pub fn to_displacement(s: &StudyParameters, tolerance: f64) -> Result<Displacement, StudyError> {
     let n = normalise(s)?;
     let y_norm = n[4..].iter().map(|c| c * c).sum::<f64>().sqrt();
-    let residual = if y_norm > 0.0 {
-        quadric_residual(&n).abs() / y_norm
-    } else {
-        0.0
-    };
+    let residual = quadric_residual(&n).abs() / y_norm.max(NEGLIGIBLE_DUAL);
     if residual > tolerance {
         return Err(StudyError::OffQuadric {
             residual,

@@ -350,7 +350,8 @@ fn gough_stewart_system_vanishes_at_the_pose_of_its_leg_lengths() {
 // ---- Manipulator::position_system ----
 
 use kinsyn::manipulator::{
-    LegKind, Manipulator, PlatformGoal, PositionRequest, PositionSystem, PositionSystemError,
+    InputValues, LegKind, Manipulator, PlatformGoal, PositionRequest, PositionSystem,
+    PositionSystemError,
 };
 
 fn manipulator(path: &str) -> Manipulator {
@@ -533,9 +534,22 @@ fn one_line(e: &PositionSystemError) -> String {
 
 #[test]
 fn unsupported_manipulators_get_one_clear_line() {
-    let planar = manipulator("mechanisms/3-rrr-planar.json");
-    let e = planar
-        .position_system(&inputs_at(&planar, &planar.reference()), &Chart::Unit)
+    // The planar 3-RRR with the last axis of leg 1 tilted: its two passive revolutes are
+    // neither parallel nor concurrent (a skew RR dyad).
+    let file = format!(
+        "{}/../../mechanisms/3-rrr-planar.json",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let mut v: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(file).unwrap()).unwrap();
+    v["legs"][0]["chain"] = serde_json::json!("RRR");
+    v["legs"][0]["axes"][2] = serde_json::json!([0.0, 0.6, 0.8]);
+    let skew = Manipulator::from_json(&v.to_string()).unwrap();
+    let e = skew
+        .constraint_system(
+            &InputValues::Given(&inputs_at(&skew, &skew.reference())),
+            &Chart::Unit,
+        )
         .unwrap_err();
     assert!(
         matches!(e, PositionSystemError::UnsupportedLeg { leg: 1, .. }),
@@ -543,18 +557,19 @@ fn unsupported_manipulators_get_one_clear_line() {
     );
     let text = one_line(&e);
     assert!(
-        text.starts_with("leg 1 (RaRaRa): ") && text.contains("supported"),
+        text.starts_with("leg 1 (RRR): ")
+            && text.contains("one revolute at the base and one revolute at the platform")
+            && text.contains("supported"),
         "{text}"
     );
 
-    let prrr = manipulator("mechanisms/3-prrr.json");
-    let e = prrr
-        .position_system(&inputs_at(&prrr, &prrr.reference()), &Chart::Unit)
+    // Planar legs give more equations than the platform's six dof: the square position
+    // system is refused, the constraint system is the over-constrained one.
+    let planar = manipulator("mechanisms/3-rrr-planar.json");
+    let e = planar
+        .position_system(&inputs_at(&planar, &planar.reference()), &Chart::Unit)
         .unwrap_err();
-    assert!(
-        matches!(e, PositionSystemError::UnsupportedLeg { leg: 1, .. }),
-        "{e}"
-    );
+    assert_eq!(e, PositionSystemError::Overdetermined(12));
     one_line(&e);
 
     let multi = manipulator("mechanisms/multibody/3-rps-3-spr.json");
@@ -586,15 +601,20 @@ fn missing_inputs_leave_degrees_of_freedom() {
         text.contains("3 dof left") && text.contains("R1.1 R2.1 R3.1"),
         "{text}"
     );
-    // Only the U's first revolutes given: the sliders are passive P joints.
+    // Only the U's first revolutes given: the sliders are passive, each leg an R–P–S (the
+    // U's second revolute, the slider across it, the S) that keeps the S centre in a plane —
+    // one constraint per leg, three dof left.
     let alphas: Vec<(usize, f64)> = ["R1.1", "R2.1", "R3.1"]
         .iter()
         .map(|l| (m.actuator_named(l).unwrap(), 0.0))
         .collect();
     let e = m.position_system(&alphas, &Chart::Unit).unwrap_err();
-    assert!(
-        one_line(&e).contains("passive P (its input P1.3 is not given)"),
-        "{e}"
+    assert_eq!(
+        e,
+        PositionSystemError::Underdetermined {
+            constraints: 3,
+            missing: vec!["P1.3".into(), "P2.3".into(), "P3.3".into()]
+        }
     );
     // Bad inputs.
     assert!(matches!(

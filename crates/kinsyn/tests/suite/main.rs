@@ -11,6 +11,7 @@ mod common;
 mod fuzz_corpus;
 mod generic_ranks;
 mod geometry_polynomials;
+mod global_analysis;
 mod invariance;
 mod library;
 mod linalg;

@@ -133,6 +133,28 @@ fn study_label(x: &[C64]) -> &'static str {
     }
 }
 
+/// How the free inputs enter the system: eliminated with their legs' motion (passive joints),
+/// or as the tangents `t_k` of their half angles.
+fn free_inputs_text(m: &Manipulator, system: &kinsyn::manipulator::PositionSystem) -> String {
+    let (variables, eliminated): (Vec<usize>, Vec<usize>) =
+        (0..m.actuators().len()).partition(|a| system.input_variable(*a).is_some());
+    let labels = |v: &[usize]| {
+        v.iter()
+            .map(|a| m.actuators()[*a].label())
+            .collect::<Vec<_>>()
+            .join(" ")
+    };
+    match (variables.is_empty(), eliminated.is_empty()) {
+        (true, _) => "inputs free (passive joints, eliminated with their legs' motion)".to_string(),
+        (false, true) => "inputs free (tangents of their half angles are unknowns)".to_string(),
+        (false, false) => format!(
+            "inputs free ({} as tangents of their half angles; {} passive, eliminated with their legs' motion)",
+            labels(&variables),
+            labels(&eliminated)
+        ),
+    }
+}
+
 /// The text report of the operation modes (or assemblies and self-motions) of `m`.
 fn manipulator_text(
     m: &Manipulator,
@@ -148,7 +170,7 @@ fn manipulator_text(
         "{}, {}: {} constraint equations in {} unknowns ({}); Study parameters with x0² + x1² + x2² + x3² = 1, so each pose is two points ±(x, y)",
         m.name(),
         if modes.free_inputs {
-            "inputs free (tangents of their half angles are unknowns)".to_string()
+            free_inputs_text(m, &modes.system)
         } else {
             format!("inputs {}", inputs.join(", "))
         },

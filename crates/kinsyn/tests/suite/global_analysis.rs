@@ -1,0 +1,344 @@
+//! Global analysis of descriptions through the general path — the constraint system of
+//! [`Manipulator::constraint_system`] solved by [`solve_overdetermined`], as
+//! `analyze --all-assemblies` does — on mechanisms written here: assembly counts from the
+//! literature (each cited), the real assemblies of planar ones against an independent
+//! one-dimensional scan, the same counts in another length unit and for other solver seeds.
+
+use kinsyn::geometry::Chart;
+use kinsyn::homotopy::{SolveSettings, solve_overdetermined};
+use kinsyn::manipulator::{InputValues, LegKind, Manipulator, OperationModeSettings};
+use kinsyn::spatial::Displacement;
+use nalgebra::{Rotation2, Vector2, Vector3};
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+use serde_json::json;
+
+/// Every isolated assembly of `m` with its inputs at their reference values: how many complex
+/// ones (regular solutions off the null cone `Δ = 0`) and the real ones' platform frames.
+fn assemblies(m: &Manipulator, seed: u64) -> (usize, Vec<Displacement>) {
+    let inputs: Vec<(usize, f64)> = (0..m.actuators().len()).map(|a| (a, 0.0)).collect();
+    let ps = m
+        .constraint_system(&InputValues::Given(&inputs), &Chart::random_linear(seed))
+        .unwrap();
+    let settings = SolveSettings {
+        seed,
+        ..SolveSettings::default()
+    };
+    let r = solve_overdetermined(ps.system(), &settings).unwrap();
+    let found: Vec<_> = r
+        .solutions()
+        .filter(|s| {
+            let delta: kinsyn::poly::C64 = s.x[..4].iter().map(|c| c * c).sum();
+            s.regular && delta.norm() > 1e-8
+        })
+        .collect();
+    let real = found
+        .iter()
+        .filter(|s| s.real)
+        .map(|s| {
+            let x: Vec<f64> = s.x.iter().map(|c| c.re).collect();
+            ps.displacement(&x).unwrap()
+        })
+        .collect();
+    (found.len(), real)
+}
+
+/// The angle of a planar platform frame about z (radians), and its origin in the plane.
+fn planar_pose(g: &Displacement) -> (f64, Vector2<f64>) {
+    let r = g.rotation.matrix();
+    let t = g.translation.vector;
+    (r[(1, 0)].atan2(r[(0, 0)]), Vector2::new(t.x, t.y))
+}
+
+/// A planar 3-RPR (`revolute_legs`: false) or 3-RRR (true) in the plane z = 0: base pivots
+/// `a`, platform pins `b` (platform frame), the platform at angle `phi` (degrees) and origin
+/// `p`; an RRR's middle joint sits at `elbow[i]`, its first (actuated) revolute at `a[i]`.
+fn planar(
+    a: &[Vector2<f64>; 3],
+    b: &[Vector2<f64>; 3],
+    elbow: Option<&[Vector2<f64>; 3]>,
+    phi: f64,
+    p: Vector2<f64>,
+    scale: f64,
+) -> Manipulator {
+    let r = Rotation2::new(phi.to_radians());
+    let legs: Vec<_> = (0..3)
+        .map(|i| {
+            let c = p + r * b[i];
+            let (chain, middle, axes) = match elbow {
+                None => (
+                    "RP!R",
+                    (a[i] + c) / 2.0,
+                    json!([[0, 0, 1], "leg", [0, 0, 1]]),
+                ),
+                Some(e) => ("R!RR", e[i], json!([[0, 0, 1], [0, 0, 1], [0, 0, 1]])),
+            };
+            json!({
+                "chain": chain,
+                "base": [a[i].x * scale, a[i].y * scale, 0.0],
+                "platform": [b[i].x * scale, b[i].y * scale, 0.0],
+                "points": [[middle.x * scale, middle.y * scale, 0.0]],
+                "axes": axes,
+            })
+        })
+        .collect();
+    let d = json!({
+        "format": "kinsyn-manipulator/1",
+        "name": "planar test",
+        "units": {"length": if scale > 1.0 { "mm" } else { "m" }, "angle": "deg"},
+        "platform": {"position": [p.x * scale, p.y * scale, 0.0], "orientation": [0.0, 0.0, phi], "point": [0.0, 0.0, 0.0]},
+        "legs": legs,
+    });
+    Manipulator::from_json(&d.to_string()).unwrap()
+}
+
+/// The real assemblies of a planar platform on three RR dyads (pivot `a[i]`, pin `b[i]` on the
+/// platform, `|a[i] − p − R b[i]| = rho[i]`), by a method that shares nothing with the
+/// homotopy: for each platform angle on a fine grid, dyads 1 and 2 place the platform at the
+/// two intersections of two circles; each root of dyad 3's residual along either branch is an
+/// assembly (refined by bisection).
+fn scanned_assemblies(
+    a: &[Vector2<f64>; 3],
+    b: &[Vector2<f64>; 3],
+    rho: &[f64; 3],
+) -> Vec<(f64, Vector2<f64>)> {
+    let place = |phi: f64, branch: f64| -> Option<(Vector2<f64>, f64)> {
+        let r = Rotation2::new(phi);
+        let (c1, c2) = (a[0] - r * b[0], a[1] - r * b[1]);
+        let d = (c2 - c1).norm();
+        if d == 0.0 || d > rho[0] + rho[1] || d < (rho[0] - rho[1]).abs() {
+            return None;
+        }
+        let e = (c2 - c1) / d;
+        let h = (rho[0] * rho[0] - rho[1] * rho[1] + d * d) / (2.0 * d);
+        let s = (rho[0] * rho[0] - h * h).max(0.0).sqrt();
+        let p = c1 + e * h + Vector2::new(-e.y, e.x) * (branch * s);
+        Some((p, (a[2] - p - r * b[2]).norm_squared() - rho[2] * rho[2]))
+    };
+    let n = 200_000;
+    let mut roots = Vec::new();
+    for branch in [1.0, -1.0] {
+        for k in 0..n {
+            let (lo, hi) = (
+                std::f64::consts::TAU * f64::from(k) / f64::from(n),
+                std::f64::consts::TAU * f64::from(k + 1) / f64::from(n),
+            );
+            let (Some((_, f0)), Some((_, f1))) = (place(lo, branch), place(hi, branch)) else {
+                continue;
+            };
+            if f0.signum() == f1.signum() {
+                continue;
+            }
+            let (mut l, mut h, mut fl) = (lo, hi, f0);
+            for _ in 0..60 {
+                let m = 0.5 * (l + h);
+                let Some((_, fm)) = place(m, branch) else {
+                    break;
+                };
+                if fm.signum() == fl.signum() {
+                    (l, fl) = (m, fm);
+                } else {
+                    h = m;
+                }
+            }
+            let (p, _) = place(l, branch).unwrap();
+            roots.push((l, p));
+        }
+    }
+    roots
+}
+
+/// The angle difference folded into (−π, π].
+fn angle_gap(a: f64, b: f64) -> f64 {
+    let d = (a - b).rem_euclid(std::f64::consts::TAU);
+    d.min(std::f64::consts::TAU - d)
+}
+
+/// Each scanned assembly is one of kinsyn's real assemblies and the other way round.
+fn assert_same_real(found: &[Displacement], scanned: &[(f64, Vector2<f64>)], scale: f64) {
+    assert_eq!(found.len(), scanned.len(), "{found:?} vs {scanned:?}");
+    for (phi, p) in scanned {
+        assert!(
+            found.iter().any(|g| {
+                let (f, q) = planar_pose(g);
+                angle_gap(f, *phi) < 1e-6 && (q / scale - p).norm() < 1e-6
+            }),
+            "the scan's assembly at {phi} rad, {p:?} is not found"
+        );
+    }
+}
+
+/// Three points of the plane.
+type Triangle = [Vector2<f64>; 3];
+
+/// A random planar platform: base pivots, platform pins, the reference angle (degrees) and
+/// origin.
+fn random_planar(rng: &mut ChaCha8Rng) -> (Triangle, Triangle, f64, Vector2<f64>) {
+    let mut v = |r: f64| Vector2::new(rng.random_range(-r..r), rng.random_range(-r..r));
+    let a = [v(1.0), v(1.0), v(1.0)];
+    let b = [v(0.4), v(0.4), v(0.4)];
+    let p = v(0.3);
+    let phi = rng.random_range(-60.0..60.0);
+    (a, b, phi, p)
+}
+
+#[test]
+fn a_general_planar_3_rpr_has_six_assemblies_and_its_real_ones_are_the_scans() {
+    // Gosselin, Sefrioui & Richard 1992 (Mech. Mach. Theory 27(2)); Hunt 1983: the forward
+    // problem of the general planar 3-RPR is a polynomial of degree 6 — six complex
+    // assemblies.
+    let mut rng = ChaCha8Rng::seed_from_u64(3);
+    for _ in 0..3 {
+        let (a, b, phi, p) = random_planar(&mut rng);
+        let r = Rotation2::new(phi.to_radians());
+        let rho = [0, 1, 2].map(|i| (a[i] - p - r * b[i]).norm());
+        let scanned = scanned_assemblies(&a, &b, &rho);
+        for scale in [1.0, 1000.0] {
+            let m = planar(&a, &b, None, phi, p, scale);
+            let (complex, real) = assemblies(&m, 1);
+            assert_eq!(complex, 6, "scale {scale}");
+            assert_same_real(&real, &scanned, scale);
+        }
+    }
+}
+
+#[test]
+fn a_general_planar_3_rrr_with_its_inputs_fixed_has_six_assemblies_for_every_seed() {
+    // With its first revolutes locked, each RRR leg is an RR dyad from its elbow: the 3-RPR's
+    // forward problem with fixed lengths, degree 6 (Gosselin, Sefrioui & Richard 1992).
+    let mut rng = ChaCha8Rng::seed_from_u64(11);
+    let (a, b, phi, p) = random_planar(&mut rng);
+    let elbow = [0, 1, 2]
+        .map(|i| a[i] + Vector2::new(rng.random_range(-0.5..0.5), rng.random_range(-0.5..0.5)));
+    let r = Rotation2::new(phi.to_radians());
+    let rho = [0, 1, 2].map(|i| (elbow[i] - p - r * b[i]).norm());
+    let scanned = scanned_assemblies(&elbow, &b, &rho);
+    let m = planar(&a, &b, Some(&elbow), phi, p, 1.0);
+    let ps = m
+        .constraint_system(
+            &InputValues::Given(&[(0, 0.0), (1, 0.0), (2, 0.0)]),
+            &Chart::Unit,
+        )
+        .unwrap();
+    assert!(ps.legs().iter().all(|c| c.kind == LegKind::PlanarDistance));
+    for seed in 1..=5 {
+        let (complex, real) = assemblies(&m, seed);
+        assert_eq!(complex, 6, "seed {seed}");
+        assert_same_real(&real, &scanned, 1.0);
+    }
+}
+
+#[test]
+fn a_general_spherical_3_rrr_has_eight_assemblies() {
+    // Gosselin, Sefrioui & Richard 1994 (ASME J. Mech. Design 116(2), "On the direct
+    // kinematics of spherical three-degree-of-freedom parallel manipulators of general
+    // architecture"): at most eight, generically eight complex solutions.
+    let mut rng = ChaCha8Rng::seed_from_u64(5);
+    let mut unit = || {
+        let v = Vector3::new(
+            rng.random_range(-1.0..1.0),
+            rng.random_range(-1.0..1.0),
+            rng.random_range(-1.0..1.0),
+        );
+        v.normalize()
+    };
+    let centre = Vector3::new(0.1, -0.2, 0.5);
+    let legs: Vec<_> = (0..3)
+        .map(|_| {
+            let (u, v, w) = (unit(), unit(), unit());
+            let at = |d: Vector3<f64>| centre + d;
+            json!({
+                "chain": "R!RR",
+                "base": at(u).as_slice(),
+                "platform": w.as_slice(),
+                "points": [at(v).as_slice()],
+                "axes": [u.as_slice(), v.as_slice(), w.as_slice()],
+            })
+        })
+        .collect();
+    let d = json!({
+        "format": "kinsyn-manipulator/1",
+        "name": "spherical test",
+        "units": {"length": "m", "angle": "deg"},
+        "platform": {"position": centre.as_slice(), "orientation": [0.0, 0.0, 0.0], "point": [0.0, 0.0, 0.0]},
+        "legs": legs,
+    });
+    let m = Manipulator::from_json(&d.to_string()).unwrap();
+    for seed in 1..=5 {
+        let (complex, real) = assemblies(&m, seed);
+        assert_eq!(complex, 8, "seed {seed}");
+        // The reference (the platform frame at the centre, unturned) is among the real ones,
+        // and every real one keeps the platform's origin, the centre, fixed.
+        assert!(
+            real.iter()
+                .any(|g| (g.rotation.matrix() - nalgebra::Matrix3::identity()).amax() < 1e-9)
+        );
+        for g in &real {
+            assert!((g.translation.vector - centre).norm() < 1e-9);
+        }
+    }
+}
+
+#[test]
+fn a_general_gough_stewart_description_has_forty_assemblies() {
+    // Raghavan 1993 (ASME J. Mech. Design 115(2)), Husty 1996 (Mech. Mach. Theory 31(4)): the
+    // general Gough–Stewart platform has 40 complex assemblies.
+    let mut rng = ChaCha8Rng::seed_from_u64(8);
+    let mut point = |r: f64, z: f64| {
+        [
+            rng.random_range(-r..r),
+            rng.random_range(-r..r),
+            rng.random_range(-z..z),
+        ]
+    };
+    let legs: Vec<_> = (0..6)
+        .map(|_| json!({"chain": "UP!S", "base": point(1.0, 0.2), "platform": point(0.5, 0.1)}))
+        .collect();
+    let d = json!({
+        "format": "kinsyn-manipulator/1",
+        "name": "general 6-UPS",
+        "units": {"length": "m", "angle": "deg"},
+        "platform": {"position": [0.05, -0.1, 1.0], "orientation": [5.0, -10.0, 20.0], "point": [0.0, 0.0, 0.0]},
+        "legs": legs,
+    });
+    let m = Manipulator::from_json(&d.to_string()).unwrap();
+    let (complex, real) = assemblies(&m, 2);
+    assert_eq!(complex, 40);
+    let reference = m.platform_frame(&m.reference());
+    assert!(
+        real.iter()
+            .any(|g| (g.to_homogeneous() - reference.to_homogeneous()).amax() < 1e-8)
+    );
+}
+
+#[test]
+fn the_3_rps_with_free_leg_lengths_has_the_two_operation_modes_x0_0_and_x3_0() {
+    // Schadlbauer, Walter & Husty 2014 (Mech. Mach. Theory 75, "The 3-RPS parallel manipulator
+    // from an algebraic viewpoint", §4): with the leg lengths free, the three plane conditions
+    // of the R joints and the Study quadric decompose into two components of dimension 3,
+    // x0 = 0 and x3 = 0 (base and platform frames at the centres, z normal to them, the R axes
+    // tangent to the circles, as in this description).
+    let m = Manipulator::from_json(
+        &std::fs::read_to_string(format!(
+            "{}/../../mechanisms/3-rps.json",
+            env!("CARGO_MANIFEST_DIR")
+        ))
+        .unwrap(),
+    )
+    .unwrap();
+    let modes = m
+        .operation_modes(&InputValues::Free, &OperationModeSettings::default())
+        .unwrap();
+    assert!(modes.system.legs().iter().all(|c| c.kind == LegKind::Plane));
+    let dims: Vec<usize> = modes.components.iter().map(|c| c.dimension).collect();
+    assert_eq!(dims, [3, 3]);
+    let vanishing = |k: usize| {
+        modes
+            .decomposition
+            .components
+            .iter()
+            .position(|w| w.witness_points.iter().all(|x| x[k].norm() < 1e-8))
+    };
+    let (x0, x3) = (vanishing(0), vanishing(3));
+    assert!(x0.is_some() && x3.is_some() && x0 != x3, "{x0:?} {x3:?}");
+}
