@@ -10,8 +10,8 @@ use kinsyn::homotopy::{
     decompose, decompose_paths, regenerate_with_progress, regeneration_paths,
 };
 use kinsyn::manipulator::{
-    DecompositionMethod, InputValues, LocalMotion, Manipulator, OperationModeError,
-    OperationModeSettings, OperationModes,
+    BlockModes, DecompositionMethod, InputValues, LocalMotion, Manipulator, OperationModeError,
+    OperationModeSettings,
 };
 use kinsyn::poly::{C64, System};
 use serde::Serialize;
@@ -132,8 +132,9 @@ pub enum Decomposed {
     Manipulator {
         /// The manipulator.
         m: Box<Manipulator>,
-        /// Its operation modes (or assemblies and self-motions at given inputs).
-        modes: Box<OperationModes>,
+        /// The operation modes (or assemblies and self-motions at given inputs) of each block
+        /// of its body tree, parents first: one block for a one-platform manipulator.
+        blocks: Vec<BlockModes>,
         /// Its inputs as `LABEL = value` ([`input_texts`]).
         inputs: Vec<String>,
     },
@@ -226,36 +227,124 @@ impl Components {
                     })
                     .collect(),
             }),
-            Decomposed::Manipulator { m, modes, inputs } => {
+            Decomposed::Manipulator { m, blocks, inputs } => {
+                let reports: Vec<BlockComponentsReport> = blocks
+                    .iter()
+                    .map(|b| BlockComponentsReport::new(m, b, options))
+                    .collect();
+                let free = blocks.first().is_some_and(|b| b.modes.free_inputs);
+                let (decomposition, components, blocks) = if let [one] = &reports[..] {
+                    (
+                        one.decomposition.clone(),
+                        one.components.clone(),
+                        Vec::new(),
+                    )
+                } else {
+                    (
+                        DecompositionReport::of_blocks(&reports),
+                        products(&reports),
+                        reports,
+                    )
+                };
                 ComponentsReport::Manipulator(ManipulatorComponentsReport {
                     manipulator: m.name().to_string(),
-                    inputs: if modes.free_inputs {
+                    inputs: if free {
                         ComponentInputs::Free
                     } else {
                         ComponentInputs::Given(inputs.clone())
                     },
-                    decomposition: DecompositionReport::new(
-                        modes.system.system(),
-                        &modes.decomposition,
-                        options,
-                    ),
-                    components: modes
-                        .components
-                        .iter()
-                        .map(|c| ModeComponentReport {
-                            component: ComponentSummary {
-                                dimension: c.dimension,
-                                degree: c.degree,
-                                trace_test_passed: c.trace_test_passed,
-                                sample_point: complex(&c.sample),
-                            },
-                            real_points: c.real_points.len(),
-                            motion: c.real.as_ref().map(|l| LocalMotionReport::new(m, l)),
-                            released: c.released.as_ref().map(|l| LocalMotionReport::new(m, l)),
-                        })
-                        .collect(),
+                    decomposition,
+                    components,
+                    blocks,
                 })
             }
+        }
+    }
+}
+
+/// The components of a mechanism of several blocks: the products of one component per block
+/// (dimensions add, degrees multiply, a point is the blocks' points side by side), each
+/// naming its factors; the motion is reported per block.
+fn products(blocks: &[BlockComponentsReport]) -> Vec<ModeComponentReport> {
+    let mut out = Vec::new();
+    if blocks.iter().any(|b| b.components.is_empty()) {
+        return out;
+    }
+    let mut pick = vec![0usize; blocks.len()];
+    loop {
+        let factors: Vec<&ModeComponentReport> = pick
+            .iter()
+            .zip(blocks)
+            .map(|(&k, b)| &b.components[k])
+            .collect();
+        out.push(ModeComponentReport {
+            component: ComponentSummary {
+                dimension: factors.iter().map(|f| f.component.dimension).sum(),
+                degree: factors
+                    .iter()
+                    .fold(1_usize, |d, f| d.saturating_mul(f.component.degree)),
+                trace_test_passed: factors.iter().all(|f| f.component.trace_test_passed),
+                sample_point: factors
+                    .iter()
+                    .flat_map(|f| f.component.sample_point.iter().copied())
+                    .collect(),
+            },
+            real_points: factors
+                .iter()
+                .fold(1_usize, |n, f| n.saturating_mul(f.real_points)),
+            motion: None,
+            released: None,
+            factors: pick.clone(),
+        });
+        let mut k = blocks.len();
+        loop {
+            if k == 0 {
+                return out;
+            }
+            k -= 1;
+            pick[k] += 1;
+            if pick[k] < blocks[k].components.len() {
+                break;
+            }
+            pick[k] = 0;
+        }
+    }
+}
+
+impl BlockComponentsReport {
+    /// The report of one block's components.
+    fn new(m: &Manipulator, b: &BlockModes, options: &ComponentsOptions) -> Self {
+        let modes = &b.modes;
+        let name = |k: Option<usize>| {
+            k.map_or_else(
+                || m.ground_name().to_string(),
+                |k| m.bodies()[k].name.clone(),
+            )
+        };
+        Self {
+            body: name(Some(b.body)),
+            parent: name(b.parent),
+            decomposition: DecompositionReport::new(
+                modes.system.system(),
+                &modes.decomposition,
+                options,
+            ),
+            components: modes
+                .components
+                .iter()
+                .map(|c| ModeComponentReport {
+                    component: ComponentSummary {
+                        dimension: c.dimension,
+                        degree: c.degree,
+                        trace_test_passed: c.trace_test_passed,
+                        sample_point: complex(&c.sample),
+                    },
+                    real_points: c.real_points.len(),
+                    motion: c.real.as_ref().map(|l| LocalMotionReport::new(m, l)),
+                    released: c.released.as_ref().map(|l| LocalMotionReport::new(m, l)),
+                    factors: Vec::new(),
+                })
+                .collect(),
         }
     }
 }
@@ -324,8 +413,8 @@ fn manipulator_components(
         method: options.method,
         ..OperationModeSettings::default()
     };
-    let modes = with_feedback(options.method, None, |progress| {
-        m.operation_modes_with_progress(&inputs, &settings, progress)
+    let blocks = with_feedback(options.method, None, |progress| {
+        m.block_operation_modes_with_progress(&inputs, &settings, progress)
     })
     .map_err(|e| match e {
         OperationModeError::Decompose(e) => {
@@ -340,7 +429,7 @@ fn manipulator_components(
         options: options.clone(),
         decomposed: Decomposed::Manipulator {
             m: Box::new(m),
-            modes: Box::new(modes),
+            blocks,
             inputs,
         },
     })
@@ -385,7 +474,27 @@ pub struct ManipulatorComponentsReport {
     #[serde(flatten)]
     pub decomposition: DecompositionReport,
     /// The components found: assemblies (dimension 0) and self-motions, or operation modes
-    /// with free inputs.
+    /// with free inputs. Of several moving bodies: the products of one component per block
+    /// (each naming its `factors`).
+    pub components: Vec<ModeComponentReport>,
+    /// Of several moving bodies: each block of the body tree (a body's frame relative to its
+    /// parent's), decomposed on its own, parents first; empty for one platform. The
+    /// decomposition's counts above are then the blocks' summed.
+    pub blocks: Vec<BlockComponentsReport>,
+}
+
+/// One block of a manipulator's body tree in [`ManipulatorComponentsReport::blocks`]: a moving
+/// body's frame relative to its parent's, and its components.
+#[derive(Debug, Clone, Serialize)]
+pub struct BlockComponentsReport {
+    /// The body's name.
+    pub body: String,
+    /// Its parent's name (the ground's for a body the ground holds).
+    pub parent: String,
+    /// Its constraint system and the decomposition's counts, at the top level of the entry.
+    #[serde(flatten)]
+    pub decomposition: DecompositionReport,
+    /// Its components, the motion that of the body relative to its parent.
     pub components: Vec<ModeComponentReport>,
 }
 
@@ -472,6 +581,9 @@ pub struct ModeComponentReport {
     /// At an assembly (dimension 0, given inputs): the platform's motion on the operation mode
     /// with the inputs released; `null` otherwise, or where it was not found.
     pub released: Option<LocalMotionReport>,
+    /// Of a product of the blocks' components (several moving bodies): the index of its
+    /// factor in each block's `components`; empty otherwise.
+    pub factors: Vec<usize>,
 }
 
 /// The platform's motion at a real point of a component.
@@ -495,6 +607,35 @@ pub struct LocalMotionReport {
 }
 
 impl DecompositionReport {
+    /// The counts of the blocks' decompositions together: their variables (each named after its
+    /// body) and equations side by side, the points, paths and times summed.
+    fn of_blocks(blocks: &[BlockComponentsReport]) -> Self {
+        let first = &blocks[0].decomposition;
+        Self {
+            variables: blocks
+                .iter()
+                .flat_map(|b| {
+                    b.decomposition
+                        .variables
+                        .iter()
+                        .map(move |v| format!("{}.{v}", b.body))
+                })
+                .collect(),
+            equations: blocks.iter().map(|b| b.decomposition.equations).sum(),
+            method: first.method,
+            seed: first.seed,
+            unresolved: Vec::new(),
+            junk: blocks.iter().map(|b| b.decomposition.junk).sum(),
+            paths: blocks.iter().map(|b| b.decomposition.paths).sum(),
+            estimated_paths: blocks
+                .iter()
+                .map(|b| b.decomposition.estimated_paths.parse::<u128>().unwrap_or(0))
+                .sum::<u128>()
+                .to_string(),
+            seconds: blocks.iter().map(|b| b.decomposition.seconds).sum(),
+        }
+    }
+
     /// The report of the decomposition `d` of `system`, run with `options`.
     fn new(system: &System, d: &Decomposition, options: &ComponentsOptions) -> Self {
         Self {

@@ -9,6 +9,7 @@ mod catalogue_site;
 mod cli;
 mod cli_components;
 mod cli_configurable;
+mod cli_global;
 mod cli_manipulator;
 mod cli_modes_cost;
 mod cli_paper003;

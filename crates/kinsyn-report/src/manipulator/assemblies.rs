@@ -7,20 +7,25 @@ use crate::Error;
 use crate::solve::{PathOption, solve_with_bar};
 use kinsyn::geometry::Chart;
 use kinsyn::homotopy::{SolveReport, SolveSettings, satisfying, square_randomisation};
-use kinsyn::manipulator::{InputValues, Manipulator, PositionRequest, PositionSystemError};
+use kinsyn::manipulator::{
+    BodyBlock, InputValues, LegConstraint, Manipulator, PositionRequest, PositionSystemError,
+};
 use kinsyn::mechanism::rotation_log;
 use kinsyn::spatial::Displacement;
 use serde::Serialize;
 use std::path::Path;
 
-/// One real assembly: the platform frame, the largest leg residual, and whether it is
-/// certified and the one continued from the reference.
+/// One real assembly: the frame of every moving body, the largest leg residual, and whether it
+/// is certified and the one continued from the reference.
 pub struct Assembly {
-    /// The platform frame.
+    /// The end-effector's frame (of a block: the body's frame relative to its parent's).
     pub pose: Displacement,
+    /// Every moving body's frame, in the description's order (ground frame); of a block, its
+    /// body's relative frame alone.
+    pub frames: Vec<Displacement>,
     /// The largest residual of the legs' constraints (length unit).
     pub residual: f64,
-    /// Whether the solution is certified (Krawczyk).
+    /// Whether the solution is certified (Krawczyk): of a combination, every block's.
     pub certified: bool,
     /// Whether it is the assembly reached by continuation from the reference configuration.
     pub current: bool,
@@ -63,36 +68,56 @@ pub fn all_assemblies(
     })
 }
 
-/// Every assembly of a manipulator at given inputs: the solve of its position system and the
-/// real assemblies found.
+/// The most real assemblies of a mechanism of several bodies listed (combinations of one real
+/// assembly per block of its body tree); the count is reported in full.
+pub const MAX_COMBINATIONS: usize = 4096;
+
+/// Every assembly of a manipulator at given inputs: one solve per block of its body tree (one
+/// block for a one-platform manipulator), and the real assemblies of the mechanism.
 pub struct AllAssemblies {
     /// The inputs, every one, by actuator index and value (radians or length unit; as text
     /// by [`input_texts`]).
     pub inputs: Vec<(usize, f64)>,
-    /// The seed of the chart and of the solve.
+    /// The seed of the charts and of the solves.
     pub seed: u64,
-    /// The variables, equations and degrees of the position system.
+    /// Each block's solve, parents first.
+    pub blocks: Vec<BlockAssemblies>,
+    /// The real assemblies of the mechanism: combinations of one real assembly per block (at
+    /// most [`MAX_COMBINATIONS`]).
+    pub assemblies: Vec<Assembly>,
+    /// How many real combinations there are (the product of the blocks' real counts).
+    pub combinations: u128,
+}
+
+/// The solve of one block of the body tree: a moving body's frame relative to its parent's.
+pub struct BlockAssemblies {
+    /// The body's name.
+    pub body: String,
+    /// Its parent's name (the ground's for a body the ground holds).
+    pub parent: String,
+    /// The variables, equations and degrees of its position system.
     pub system: kinsyn::poly::System,
     /// The system solved: [`Self::system`] itself when it is square; for an over-constrained
-    /// manipulator (more equations than unknowns) its square randomisation
+    /// block (more equations than unknowns) its square randomisation
     /// ([`kinsyn::homotopy::square_randomisation`]).
     pub solved: kinsyn::poly::System,
     /// The endpoints of the square randomisation that the original equations refuse (0 for a
     /// square system): they are not in [`Self::report`]'s solutions.
     pub spurious: usize,
-    /// What each leg contributes to the position system.
+    /// What each of its legs contributes to the position system.
     pub kinds: Vec<&'static str>,
     /// The solve.
     pub report: SolveReport,
-    /// The real assemblies.
-    pub assemblies: Vec<Assembly>,
+    /// Its real assemblies (the body's frame relative to its parent's).
+    pub real: Vec<Assembly>,
     /// How many singular endpoints lie on the null cone.
     pub null_cone: usize,
 }
 
 /// Every assembly of `m` at the inputs of `inputs_text` (`--inputs`; the inputs not named at
 /// their reference values), by homotopy continuation on the constraint polynomials in the
-/// Study parameters of the platform (a random linear chart and the solve seeded by `seed`). A
+/// Study parameters of each moving body relative to its parent in the body tree
+/// ([`Manipulator::body_blocks`]; random linear charts and the solves seeded by `seed`). A
 /// progress bar over the paths is drawn on stderr when it is a terminal.
 ///
 /// # Errors
@@ -106,15 +131,62 @@ pub fn all_assemblies_of(
 ) -> Result<AllAssemblies, Error> {
     let inputs = inputs_or_reference(m, inputs_text)?;
     let chart = Chart::random_linear(seed);
-    // More constraints than the platform's six dof (an over-constrained manipulator such as the
-    // 4-RUU): the whole system, solved through its square randomisation.
-    let ps = match m.position_system(&inputs, &chart) {
-        Err(PositionSystemError::Overdetermined(_)) => {
-            m.constraint_system(&InputValues::Given(&inputs), &chart)
-        }
-        other => other,
+    let refuse = |e: &dyn std::fmt::Display| Error::Input(format!("--all-assemblies: {e}"));
+    let blocks = m
+        .body_blocks(&InputValues::Given(&inputs), &chart)
+        .map_err(|e| refuse(&e))?;
+    // The configuration Newton continuation reaches from the reference, to mark its assembly.
+    let request = PositionRequest {
+        inputs: inputs.clone(),
+        ..PositionRequest::default()
+    };
+    let current: Option<Vec<Displacement>> =
+        m.solve_position(&m.reference(), &request).ok().map(|p| {
+            (0..m.bodies().len())
+                .map(|k| m.body_frame(k, &p.q))
+                .collect()
+        });
+    let mut solved = Vec::with_capacity(blocks.len());
+    for b in &blocks {
+        // The reference's frame of the body relative to its parent.
+        let reference = current.as_ref().map(|f| {
+            let parent = b.parent.map_or_else(kinsyn::spatial::identity, |p| f[p]);
+            parent.inverse() * f[b.body]
+        });
+        solved.push(solve_block(m, b, seed, reference.as_ref())?);
     }
-    .map_err(|e| Error::Input(format!("--all-assemblies: {e}")))?;
+    let combinations = solved
+        .iter()
+        .map(|b| b.real.len() as u128)
+        .product::<u128>();
+    let assemblies = combine(m, &blocks, &solved);
+    Ok(AllAssemblies {
+        inputs,
+        seed,
+        blocks: solved,
+        assemblies,
+        combinations,
+    })
+}
+
+/// The solve of one block: its square randomisation when over-constrained, the endpoints the
+/// original equations refuse removed, its real assemblies (`reference`: the body's relative
+/// frame reached by continuation from the reference configuration, to mark its assembly).
+fn solve_block(
+    m: &Manipulator,
+    block: &BodyBlock,
+    seed: u64,
+    reference: Option<&Displacement>,
+) -> Result<BlockAssemblies, Error> {
+    let ps = &block.system;
+    let constraints: usize = ps.legs().iter().map(LegConstraint::equations).sum();
+    if constraints < 6 {
+        let e = PositionSystemError::Underdetermined {
+            constraints,
+            missing: Vec::new(),
+        };
+        return Err(Error::Input(format!("--all-assemblies: {e}")));
+    }
     let solved = square_randomisation(ps.system(), seed)
         .map_err(|e| Error::Input(format!("--all-assemblies: {e}")))?;
     let settings = SolveSettings {
@@ -139,16 +211,7 @@ pub fn all_assemblies_of(
         let mut keep = keep.into_iter();
         report.solutions.retain(|_| keep.next().unwrap_or(false));
     }
-    // The assembly Newton continuation reaches from the reference, to mark it.
-    let request = PositionRequest {
-        inputs: inputs.clone(),
-        ..PositionRequest::default()
-    };
-    let current = m
-        .solve_position(&m.reference(), &request)
-        .ok()
-        .map(|p| m.platform_frame(&p.q));
-    let assemblies: Vec<Assembly> = report
+    let real: Vec<Assembly> = report
         .solutions
         .iter()
         .filter(|s| s.regular && s.real)
@@ -165,12 +228,13 @@ pub fn all_assemblies_of(
                         .max(r.angle.map_or(0.0, f64::abs))
                 })
                 .fold(0.0, f64::max);
-            let current = current.as_ref().is_some_and(|c| {
+            let current = reference.is_some_and(|c| {
                 (c.to_homogeneous() - pose.to_homogeneous()).amax()
                     < 1e-6 * (1.0 + c.translation.vector.norm())
             });
             Some(Assembly {
                 pose,
+                frames: vec![pose],
                 residual,
                 certified: s.is_certified(),
                 current,
@@ -188,28 +252,133 @@ pub fn all_assemblies_of(
             !s.regular && delta.norm() <= 1e-8 * size
         })
         .count();
-    let kinds: Vec<&'static str> = ps.legs().iter().map(|l| l.kind.describe()).collect();
-    Ok(AllAssemblies {
-        inputs,
-        seed,
+    let name = |k: Option<usize>| {
+        k.map_or_else(
+            || m.ground_name().to_string(),
+            |k| m.bodies()[k].name.clone(),
+        )
+    };
+    Ok(BlockAssemblies {
+        body: name(Some(block.body)),
+        parent: name(block.parent),
         system: ps.system().clone(),
         solved,
         spurious,
-        kinds,
+        kinds: ps.legs().iter().map(|l| l.kind.describe()).collect(),
         report,
-        assemblies,
+        real,
         null_cone,
     })
+}
+
+/// The real assemblies of the mechanism: each combination of one real assembly per block (at
+/// most [`MAX_COMBINATIONS`]), every body's frame composed along the body tree.
+fn combine(m: &Manipulator, blocks: &[BodyBlock], solved: &[BlockAssemblies]) -> Vec<Assembly> {
+    let mut out = Vec::new();
+    let mut pick = vec![0usize; solved.len()];
+    if solved.iter().any(|b| b.real.is_empty()) {
+        return out;
+    }
+    while out.len() < MAX_COMBINATIONS {
+        let chosen: Vec<&Assembly> = pick.iter().zip(solved).map(|(&k, b)| &b.real[k]).collect();
+        let relative: Vec<Displacement> = chosen.iter().map(|a| a.pose).collect();
+        let frames = m.body_frames(blocks, &relative);
+        out.push(Assembly {
+            pose: frames[m.end_effector()],
+            residual: chosen.iter().map(|a| a.residual).fold(0.0, f64::max),
+            certified: chosen.iter().all(|a| a.certified),
+            current: chosen.iter().all(|a| a.current),
+            frames,
+        });
+        // The next combination, the last block fastest.
+        let mut k = solved.len();
+        loop {
+            if k == 0 {
+                return out;
+            }
+            k -= 1;
+            pick[k] += 1;
+            if pick[k] < solved[k].real.len() {
+                break;
+            }
+            pick[k] = 0;
+        }
+    }
+    out
 }
 
 impl AllAssemblies {
     /// The report of `kinsyn analyze --all-assemblies --json` for `m`, with the leg `warnings`.
     #[must_use]
     pub fn report(&self, m: &Manipulator, warnings: &[String]) -> AssembliesReport {
-        let (report, system, solved) = (&self.report, &self.system, &self.solved);
+        let blocks: Vec<BlockReport> = self.blocks.iter().map(|b| b.report(m)).collect();
+        let sum = |f: &dyn Fn(&BlockReport) -> usize| blocks.iter().map(f).sum::<usize>();
+        let product = |f: &dyn Fn(&BlockReport) -> usize| {
+            blocks
+                .iter()
+                .fold(1_usize, |acc, b| acc.saturating_mul(f(b)))
+        };
+        let one = blocks.len() == 1;
+        let mut warnings = warnings.to_vec();
+        if self.combinations > self.assemblies.len() as u128 {
+            warnings.push(format!(
+                "{} real assemblies (combinations of the blocks' real assemblies): the first {} listed",
+                self.combinations,
+                self.assemblies.len()
+            ));
+        }
+        let names: Vec<String> = m.bodies().iter().map(|b| b.name.clone()).collect();
         AssembliesReport {
             manipulator: m.name().to_string(),
             inputs: input_texts(m, &self.inputs),
+            formulation: if one {
+                blocks[0].formulation.clone()
+            } else {
+                Formulation::of_blocks(&self.blocks, &blocks)
+            },
+            summary: if one {
+                self.blocks[0].report.summary()
+            } else {
+                format!(
+                    "{} blocks, one per moving body: {} paths in all; the mechanism's assemblies are the combinations of one per block",
+                    blocks.len(),
+                    sum(&|b| b.paths)
+                )
+            },
+            paths: sum(&|b| b.paths),
+            nonsingular: product(&|b| b.nonsingular),
+            real: product(&|b| b.real),
+            singular: sum(&|b| b.singular),
+            singular_on_null_cone: sum(&|b| b.singular_on_null_cone),
+            at_infinity: sum(&|b| b.at_infinity),
+            spurious: sum(&|b| b.spurious),
+            certified: product(&|b| b.certified),
+            certified_real: product(&|b| b.certified_real),
+            seconds: blocks.iter().map(|b| b.seconds).sum(),
+            seed: self.seed,
+            real_assemblies: self
+                .assemblies
+                .iter()
+                .map(|a| real_assembly(m, a, &names))
+                .collect(),
+            complex_assemblies: if one {
+                blocks[0].complex_assemblies.clone()
+            } else {
+                Vec::new()
+            },
+            blocks: if one { Vec::new() } else { blocks },
+            warnings,
+        }
+    }
+}
+
+impl BlockAssemblies {
+    /// This block's part of the report.
+    fn report(&self, m: &Manipulator) -> BlockReport {
+        let (report, system, solved) = (&self.report, &self.system, &self.solved);
+        BlockReport {
+            body: self.body.clone(),
+            parent: self.parent.clone(),
             formulation: Formulation {
                 variables: system.variables().to_vec(),
                 equations: system.len(),
@@ -218,33 +387,20 @@ impl AllAssemblies {
                 randomised: solved.len() < system.len(),
                 legs: self.kinds.clone(),
             },
-            spurious: self.spurious,
-            summary: report.summary(),
             paths: report.paths(),
             nonsingular: report.nonsingular(),
             real: report.real(),
             singular: report.singular(),
             singular_on_null_cone: self.null_cone,
             at_infinity: report.at_infinity(),
+            spurious: self.spurious,
             certified: report.certified(),
             certified_real: report.certified_real(),
             seconds: report.seconds,
-            seed: self.seed,
             real_assemblies: self
-                .assemblies
+                .real
                 .iter()
-                .map(|a| {
-                    let t = a.pose.translation.vector;
-                    let r = rotation_log(&a.pose.rotation);
-                    RealAssembly {
-                        pose: pose_text(m, &a.pose),
-                        position: [t.x, t.y, t.z],
-                        rotation_vector_rad: [r.x, r.y, r.z],
-                        largest_leg_residual: a.residual,
-                        certified: a.certified,
-                        continued_from_reference: a.current,
-                    }
-                })
+                .map(|a| real_assembly(m, a, std::slice::from_ref(&self.body)))
                 .collect(),
             complex_assemblies: report
                 .solutions
@@ -252,7 +408,57 @@ impl AllAssemblies {
                 .filter(|s| s.regular && !s.real)
                 .map(|s| s.x.iter().map(|c| [c.re, c.im]).collect())
                 .collect(),
-            warnings: warnings.to_vec(),
+        }
+    }
+}
+
+/// One real assembly as reported: the end-effector's pose, every body's (`names`, in the
+/// order of [`Assembly::frames`]).
+fn real_assembly(m: &Manipulator, a: &Assembly, names: &[String]) -> RealAssembly {
+    let t = a.pose.translation.vector;
+    let r = rotation_log(&a.pose.rotation);
+    RealAssembly {
+        pose: pose_text(m, &a.pose),
+        position: [t.x, t.y, t.z],
+        rotation_vector_rad: [r.x, r.y, r.z],
+        bodies: names
+            .iter()
+            .zip(&a.frames)
+            .map(|(name, g)| BodyPose {
+                body: name.clone(),
+                pose: pose_text(m, g),
+            })
+            .collect(),
+        largest_leg_residual: a.residual,
+        certified: a.certified,
+        continued_from_reference: a.current,
+    }
+}
+
+impl Formulation {
+    /// The formulation of a mechanism of several blocks: their variables (each named after
+    /// its body), equations and degrees side by side, the paths tracked in all (the sum of
+    /// the blocks' Bézout numbers: each block is solved on its own), and every leg's kind.
+    fn of_blocks(blocks: &[BlockAssemblies], reports: &[BlockReport]) -> Self {
+        Self {
+            variables: blocks
+                .iter()
+                .flat_map(|b| {
+                    b.system
+                        .variables()
+                        .iter()
+                        .map(move |v| format!("{}.{v}", b.body))
+                })
+                .collect(),
+            equations: blocks.iter().map(|b| b.system.len()).sum(),
+            degrees: blocks.iter().flat_map(|b| b.system.degrees()).collect(),
+            bezout_number: blocks
+                .iter()
+                .map(|b| b.solved.bezout_number())
+                .sum::<u128>()
+                .to_string(),
+            randomised: reports.iter().any(|r| r.formulation.randomised),
+            legs: blocks.iter().flat_map(|b| b.kinds.clone()).collect(),
         }
     }
 }
@@ -260,7 +466,11 @@ impl AllAssemblies {
 /// The report of `kinsyn analyze --all-assemblies --json` (and of Python's
 /// `Manipulator.all_assemblies`): the position system in the Study parameters of the platform,
 /// its solve by homotopy continuation, and the assemblies found. Lengths are in the
-/// description's length unit.
+/// description's length unit. For a description of several moving bodies, one system per body
+/// of its body tree (the body relative to its parent, [`BlockReport`]): the counts of
+/// assemblies (`nonsingular`, `real`, `certified`, `certified_real`) are then the products of
+/// the blocks' (the mechanism's assemblies are the combinations of one per block), the counts
+/// of endpoints and paths their sums.
 ///
 /// Printed through [`crate::sorted_value`]: its keys come in alphabetical order, as they did
 /// when the report was built with `serde_json::json!`, not in the order of these fields.
@@ -271,7 +481,7 @@ pub struct AssembliesReport {
     /// Every input's value, `LABEL = value` (angles in the description's angle unit, rounded
     /// to 1e-9): those of `--inputs`, the others at their reference values (0).
     pub inputs: Vec<String>,
-    /// The position system solved.
+    /// The position system solved (of several blocks: their systems side by side).
     pub formulation: Formulation,
     /// The solve's counts in words.
     pub summary: String,
@@ -303,10 +513,59 @@ pub struct AssembliesReport {
     /// The real assemblies.
     pub real_assemblies: Vec<RealAssembly>,
     /// The complex (non-real) assemblies: each the position system's variables (the Study
-    /// parameters in the chart) as `[re, im]` pairs.
+    /// parameters in the chart) as `[re, im]` pairs; of several blocks, in each block.
     pub complex_assemblies: Vec<Vec<[f64; 2]>>,
+    /// Of several moving bodies: each block's system, solve and assemblies, parents first
+    /// (empty for one platform).
+    pub blocks: Vec<BlockReport>,
     /// The leg warnings of the description (docs/mechanism-format.md, "Leg checks").
     pub warnings: Vec<String>,
+}
+
+/// One block of [`AssembliesReport::blocks`]: a moving body's frame relative to its parent's,
+/// its position system and solve, and its real and complex assemblies.
+#[derive(Debug, Clone, Serialize)]
+pub struct BlockReport {
+    /// The body's name.
+    pub body: String,
+    /// Its parent's name (the ground's for a body the ground holds).
+    pub parent: String,
+    /// Its position system.
+    pub formulation: Formulation,
+    /// The paths tracked.
+    pub paths: usize,
+    /// The non-singular endpoints: its isolated assemblies, real and complex.
+    pub nonsingular: usize,
+    /// Of those, the real ones.
+    pub real: usize,
+    /// The singular endpoints.
+    pub singular: usize,
+    /// Of those, the ones on the null cone.
+    pub singular_on_null_cone: usize,
+    /// The paths that went to infinity.
+    pub at_infinity: usize,
+    /// The endpoints of the square randomisation that the original equations refuse.
+    pub spurious: usize,
+    /// The non-singular endpoints certified.
+    pub certified: usize,
+    /// Of those, the ones certified real.
+    pub certified_real: usize,
+    /// The solve's wall-clock time (seconds).
+    pub seconds: f64,
+    /// Its real assemblies: the body's frame relative to its parent's.
+    pub real_assemblies: Vec<RealAssembly>,
+    /// Its complex assemblies, as the variables' `[re, im]` pairs.
+    pub complex_assemblies: Vec<Vec<[f64; 2]>>,
+}
+
+/// One body's frame in a real assembly.
+#[derive(Debug, Clone, Serialize)]
+pub struct BodyPose {
+    /// The body's name.
+    pub body: String,
+    /// Its frame as `--pose` takes it (`x,y,z,rx,ry,rz`; of a block's assembly, relative to
+    /// the parent's frame).
+    pub pose: String,
 }
 
 /// The position system of `analyze --all-assemblies`: the legs' constraints on the Study
@@ -342,6 +601,8 @@ pub struct RealAssembly {
     pub position: [f64; 3],
     /// The platform frame's orientation as a rotation vector (radians).
     pub rotation_vector_rad: [f64; 3],
+    /// Every moving body's frame (one entry for a one-platform manipulator).
+    pub bodies: Vec<BodyPose>,
     /// The largest residual of the legs' constraints there (their distances and planes missed,
     /// length unit).
     pub largest_leg_residual: f64,

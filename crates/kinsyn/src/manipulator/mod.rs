@@ -15,6 +15,7 @@
 //! assert_eq!((m.legs().len(), m.actuators().len()), (3, 6));
 //! ```
 
+mod body_tree;
 pub mod build;
 mod construction;
 pub mod file;
@@ -32,14 +33,15 @@ mod singularity;
 pub mod stacking;
 mod sub_mechanism;
 
+pub use body_tree::{BodyBlock, BodyNode};
 pub use jacobian::{Jacobians, RowKind, WrenchRow};
 pub use leg::{LegCheck, LegWarning, LegWarningKind};
 pub use lookup::{CatalogueChain, ChainLookup, CommittedChains};
 pub use modes::{MAX_INPUTS, Mode, Modes, PatternModes};
 pub use modes_cost::ModesCost;
 pub use operation_mode::{
-    DecompositionMethod, LocalMotion, ModeComponent, OperationModeError, OperationModeSettings,
-    OperationModes,
+    BlockModes, DecompositionMethod, LocalMotion, ModeComponent, OperationModeError,
+    OperationModeSettings, OperationModes,
 };
 pub use polynomial::{
     FreeRevolute, InputValues, LegConstraint, LegKind, LegResidual, PositionSystem,

@@ -120,6 +120,19 @@ pub struct ModeComponent {
     pub released: Option<LocalMotion>,
 }
 
+/// The operation modes of one block of a manipulator's body tree
+/// ([`Manipulator::block_operation_modes_with_progress`]).
+#[derive(Debug, Clone, PartialEq)]
+pub struct BlockModes {
+    /// The body: an index into [`Manipulator::bodies`].
+    pub body: usize,
+    /// Its parent: an index into [`Manipulator::bodies`]; `None` for the ground.
+    pub parent: Option<usize>,
+    /// The components of its constraint variety, in the Study parameters of its frame
+    /// relative to its parent's.
+    pub modes: OperationModes,
+}
+
 /// The components of a manipulator's constraint variety.
 #[derive(Debug, Clone, PartialEq)]
 pub struct OperationModes {
@@ -164,12 +177,61 @@ impl Manipulator {
         progress: &mut dyn FnMut(RegenerationProgress),
     ) -> Result<OperationModes, OperationModeError> {
         let system = self.constraint_system(inputs, &Chart::Unit)?;
-        let free = matches!(inputs, InputValues::Free);
-        let released = if free {
-            None
-        } else {
-            Some(self.constraint_system(&InputValues::Free, &Chart::Unit)?)
+        let released = match inputs {
+            InputValues::Free => None,
+            InputValues::Given(_) => {
+                Some(self.constraint_system(&InputValues::Free, &Chart::Unit)?)
+            }
         };
+        self.modes_of(system, released.as_ref(), inputs, settings, progress)
+    }
+
+    /// The operation modes of each block of the body tree ([`Manipulator::body_blocks`];
+    /// one block for a one-platform manipulator): each body's frame relative to its parent's,
+    /// decomposed on its own ([`Self::operation_modes_with_progress`] for each). The
+    /// components of the mechanism are the products of one component per block: their
+    /// dimensions add, their degrees multiply.
+    ///
+    /// # Errors
+    /// As [`Self::operation_modes`] and [`Manipulator::body_blocks`].
+    pub fn block_operation_modes_with_progress(
+        &self,
+        inputs: &InputValues,
+        settings: &OperationModeSettings,
+        progress: &mut dyn FnMut(RegenerationProgress),
+    ) -> Result<Vec<BlockModes>, OperationModeError> {
+        let blocks = self.body_blocks(inputs, &Chart::Unit)?;
+        let mut released = match inputs {
+            InputValues::Free => None,
+            InputValues::Given(_) => Some(
+                self.body_blocks(&InputValues::Free, &Chart::Unit)?
+                    .into_iter(),
+            ),
+        };
+        blocks
+            .into_iter()
+            .map(|b| {
+                let free = released.as_mut().and_then(Iterator::next).map(|r| r.system);
+                Ok(BlockModes {
+                    body: b.body,
+                    parent: b.parent,
+                    modes: self.modes_of(b.system, free.as_ref(), inputs, settings, progress)?,
+                })
+            })
+            .collect()
+    }
+
+    /// The components of the constraint variety of `system` (`released`: the same with the
+    /// inputs free, for the operation mode of each real assembly).
+    fn modes_of(
+        &self,
+        system: PositionSystem,
+        released: Option<&PositionSystem>,
+        inputs: &InputValues,
+        settings: &OperationModeSettings,
+        progress: &mut dyn FnMut(RegenerationProgress),
+    ) -> Result<OperationModes, OperationModeError> {
+        let free = matches!(inputs, InputValues::Free);
         let decomposition = match settings.method {
             DecompositionMethod::Regeneration => {
                 regenerate_with_progress(system.system(), &settings.decompose, progress)?
@@ -196,7 +258,7 @@ impl Manipulator {
                 let real = real_points
                     .first()
                     .and_then(|p| self.local_motion(&system, p, settings, &mut rng));
-                let released = match (&released, real_points.first()) {
+                let released = match (released, real_points.first()) {
                     (Some(free_system), Some(p)) if c.dimension == 0 => {
                         let q = released_point(free_system, p, &given, self.actuators.len());
                         q.and_then(|q| self.local_motion(free_system, &q, settings, &mut rng))

@@ -83,13 +83,28 @@ use nalgebra::{Matrix3, Point3, Vector3};
 /// Why a manipulator at given inputs has no square polynomial position system here.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum PositionSystemError {
-    /// Several moving bodies, or legs that do not run from the ground to the end-effector.
+    /// Several moving bodies, or legs that do not run from the ground to the end-effector:
+    /// not one system but one block per body ([`Manipulator::body_blocks`]); or a body that no
+    /// leg reaches.
     #[error(
-        "{manipulator}: polynomial position systems cover legs from the ground to one platform; descriptions with several moving bodies or legs between bodies are not supported yet"
+        "{manipulator}: several moving bodies, or a body no leg reaches: the constraints of a description with several bodies are one block per body of its body tree"
     )]
     Multibody {
         /// The manipulator's name.
         manipulator: String,
+    },
+    /// A leg that does not fit the body tree ([`Manipulator::body_tree`]): it closes a loop
+    /// between moving bodies, ends on the ground, or joins a body to itself.
+    #[error(
+        "leg {leg} (from {from} to {to}) closes a loop between moving bodies: global analysis covers bodies that each hang from one other body (the ground or a moving body) by all their legs, such as stacked modules; loops between moving bodies are not supported yet"
+    )]
+    BodyLoop {
+        /// 1-based leg number.
+        leg: usize,
+        /// The name of the body the leg starts on.
+        from: String,
+        /// The name of the body it ends on.
+        to: String,
     },
     /// An input index that names no actuator.
     #[error("input {index} names no actuator ({count} actuators)")]
@@ -265,6 +280,18 @@ pub struct LegConstraint {
 }
 
 impl LegConstraint {
+    /// The constraint with its ground-side data (the fixed point, and the fixed axis of the
+    /// kinds that have one) expressed in the frame `f` (given in the ground frame): the leg's
+    /// constraint on the displacement of its end body relative to a body whose frame is `f`.
+    #[must_use]
+    pub fn in_frame(mut self, f: &Displacement) -> Self {
+        self.base = f.inverse_transform_point(&Point3::from(self.base)).coords;
+        if !matches!(self.kind, LegKind::SphericalRevolute | LegKind::MovingPlane) {
+            self.axis = self.axis.map(|n| f.rotation.inverse() * n);
+        }
+        self
+    }
+
     /// The number of equations of the leg.
     #[must_use]
     pub fn equations(&self) -> usize {
@@ -586,6 +613,23 @@ impl Manipulator {
                 manipulator: self.name.clone(),
             });
         }
+        let legs: Vec<usize> = (0..self.legs.len()).collect();
+        self.block_system(0, None, &legs, inputs, chart)
+    }
+
+    /// The constraint system of the moving body `body` (an index into
+    /// [`Manipulator::bodies`]) on the legs `legs`, all from its `parent` (an index into the
+    /// bodies; `None`: the ground) to it, in the Study parameters of its frame **relative to
+    /// the parent's frame** (the ground-side data of the legs taken into the parent's frame at
+    /// its reference pose), as [`Manipulator::constraint_system`] describes.
+    pub(super) fn block_system(
+        &self,
+        body: usize,
+        parent: Option<usize>,
+        legs: &[usize],
+        inputs: &InputValues,
+        chart: &Chart,
+    ) -> Result<PositionSystem, PositionSystemError> {
         let joints = self.mechanism.joints();
         let mut value: Vec<Option<f64>> = vec![None; joints.len()];
         // The free revolute of each leg, if any.
@@ -614,6 +658,9 @@ impl Manipulator {
             InputValues::Free => {
                 let mut variable = 8;
                 for (k, act) in self.actuators.iter().enumerate() {
+                    if !legs.contains(&act.leg) {
+                        continue;
+                    }
                     let spec = &joints[act.joint];
                     let leg = self.legs.iter().position(|l| l.joints.start == act.joint);
                     // A free input is a passive joint of its leg, its value eliminated with
@@ -638,13 +685,29 @@ impl Manipulator {
             }
         }
         let tolerance = 1e-6 * self.mechanism.scale();
-        let mut legs = Vec::new();
-        for (i, turn) in turned.iter().enumerate() {
+        let parent_frame = parent.map_or_else(crate::spatial::identity, |p| self.bodies[p].frame);
+        let local = |p: &Vector3<f64>| {
+            parent_frame
+                .inverse_transform_point(&Point3::from(*p))
+                .coords
+        };
+        let mut constraints = Vec::new();
+        let mut free = Vec::new();
+        for &i in legs {
             let mut c = self.leg_constraint(i, &value, tolerance)?;
-            c.turned_by = *turn;
-            legs.push(c);
+            c.turned_by = turned[i].map(|t| FreeRevolute {
+                point: local(&t.point),
+                axis: parent_frame.rotation.inverse() * t.axis,
+                ..t
+            });
+            free.extend(c.turned_by);
+            constraints.push(c.in_frame(&parent_frame));
         }
-        let mut free: Vec<FreeRevolute> = turned.iter().flatten().copied().collect();
+        let legs = constraints;
+        debug_assert!(
+            legs.iter()
+                .all(|c| self.legs[c.leg].to == self.bodies[body].body)
+        );
         free.sort_by_key(|f| f.variable);
         let nvars = 8 + free.len();
         let s = StudyVariables::leading(nvars);
@@ -696,7 +759,12 @@ impl Manipulator {
                 )),
             }
         }
-        (passive, g * self.frame)
+        let frame = self
+            .bodies
+            .iter()
+            .find(|b| b.body == leg.to)
+            .map_or(self.frame, |b| b.frame);
+        (passive, g * frame)
     }
 
     /// Leg `i`'s constraint with the joints of `value` locked there (the others at their

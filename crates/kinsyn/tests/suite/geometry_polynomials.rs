@@ -577,7 +577,7 @@ fn unsupported_manipulators_get_one_clear_line() {
         .position_system(&inputs_at(&multi, &multi.reference()), &Chart::Unit)
         .unwrap_err();
     assert!(matches!(e, PositionSystemError::Multibody { .. }), "{e}");
-    assert!(one_line(&e).contains("not supported yet"));
+    assert!(one_line(&e).contains("one block per body"));
 }
 
 #[test]

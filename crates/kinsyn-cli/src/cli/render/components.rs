@@ -3,7 +3,7 @@
 
 use kinsyn::homotopy::Decomposition;
 use kinsyn::manipulator::{
-    DecompositionMethod, LocalMotion, Manipulator, ModeComponent, OperationModes,
+    BlockModes, DecompositionMethod, LocalMotion, Manipulator, ModeComponent, OperationModes,
 };
 use kinsyn::poly::{C64, System};
 use kinsyn_report::components::{Components, ComponentsOptions, Decomposed, method_name};
@@ -18,8 +18,12 @@ pub(in crate::cli) fn text(c: &Components) -> String {
             system,
             decomposition,
         } => system_text(source, system, decomposition, c.options.method),
-        Decomposed::Manipulator { m, modes, inputs } => {
-            manipulator_text(m, modes, inputs, &c.options)
+        Decomposed::Manipulator { m, blocks, inputs } => {
+            if let [one] = &blocks[..] {
+                manipulator_text(m, &one.modes, inputs, &c.options)
+            } else {
+                blocks_text(m, blocks, inputs, &c.options)
+            }
         }
     }
 }
@@ -163,7 +167,6 @@ fn manipulator_text(
     options: &ComponentsOptions,
 ) -> String {
     let system = modes.system.system();
-    let d = &modes.decomposition;
     let mut out = String::new();
     let _ = writeln!(
         out,
@@ -178,6 +181,80 @@ fn manipulator_text(
         system.nvars(),
         system.variables().join(", ")
     );
+    components_text(&mut out, m, modes, options, "platform");
+    out
+}
+
+/// The text report of a manipulator of several moving bodies: each block of its body tree,
+/// then the products of one component per block.
+fn blocks_text(
+    m: &Manipulator,
+    blocks: &[BlockModes],
+    inputs: &[String],
+    options: &ComponentsOptions,
+) -> String {
+    let mut out = String::new();
+    let free = blocks.first().is_some_and(|b| b.modes.free_inputs);
+    let name = |k: Option<usize>| {
+        k.map_or_else(
+            || m.ground_name().to_string(),
+            |k| m.bodies()[k].name.clone(),
+        )
+    };
+    let _ = writeln!(
+        out,
+        "{}, {}: body tree of {} blocks, each body's frame relative to its parent's, decomposed apart (their unknowns are separate); Study parameters with x0² + x1² + x2² + x3² = 1, so each relative pose is two points ±(x, y)",
+        m.name(),
+        if free {
+            "inputs free".to_string()
+        } else {
+            format!("inputs {}", inputs.join(", "))
+        },
+        blocks.len()
+    );
+    for (k, b) in blocks.iter().enumerate() {
+        let system = b.modes.system.system();
+        let _ = writeln!(
+            out,
+            "block {}: {} relative to {}{}: {} constraint equations in {} unknowns ({})",
+            k + 1,
+            name(Some(b.body)),
+            name(b.parent),
+            if free {
+                format!(", {}", free_inputs_text(m, &b.modes.system))
+            } else {
+                String::new()
+            },
+            system.len(),
+            system.nvars(),
+            system.variables().join(", ")
+        );
+        components_text(&mut out, m, &b.modes, options, &name(Some(b.body)));
+    }
+    let counts: Vec<usize> = blocks.iter().map(|b| b.modes.components.len()).collect();
+    let total: usize = counts.iter().product();
+    let _ = writeln!(
+        out,
+        "the mechanism's components: {total} products of one component per block ({}); dimensions add, degrees multiply",
+        counts
+            .iter()
+            .map(ToString::to_string)
+            .collect::<Vec<_>>()
+            .join(" × ")
+    );
+    out
+}
+
+/// The decomposition `modes` of one system (a one-platform manipulator, or one block whose
+/// moving body is `body`): its summary, then its components.
+fn components_text(
+    out: &mut String,
+    m: &Manipulator,
+    modes: &OperationModes,
+    options: &ComponentsOptions,
+    body: &str,
+) {
+    let d = &modes.decomposition;
     let _ = writeln!(out, "{}", summary(d, options.method));
     let (isolated, positive): (Vec<&ModeComponent>, Vec<&ModeComponent>) =
         modes.components.iter().partition(|c| c.dimension == 0);
@@ -191,7 +268,7 @@ fn manipulator_text(
             || "no real point found on 8 real slices: a complex component".to_string(),
             |l| {
                 format!(
-                    "platform motion {} at the pose {}",
+                    "{body} motion {} at the pose {}",
                     motion_text(l),
                     pose_text(m, &l.pose)
                 )
@@ -254,6 +331,5 @@ fn manipulator_text(
             );
         }
     }
-    unresolved_text(&mut out, d);
-    out
+    unresolved_text(out, d);
 }
