@@ -342,3 +342,23 @@ fn the_3_rps_with_free_leg_lengths_has_the_two_operation_modes_x0_0_and_x3_0() {
     let (x0, x3) = (vanishing(0), vanishing(3));
     assert!(x0.is_some() && x3.is_some() && x0 != x3, "{x0:?} {x3:?}");
 }
+
+#[test]
+fn the_committed_planar_3_rrr_has_the_real_assemblies_of_the_scan() {
+    // Its elbows (the middle joints, fixed with the cranks locked) and platform pins from the
+    // file; the platform frame at the origin, unturned, at the reference.
+    let file = format!(
+        "{}/../../mechanisms/3-rrr-planar.json",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let v: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&file).unwrap()).unwrap();
+    let xy = |p: &serde_json::Value| Vector2::new(p[0].as_f64().unwrap(), p[1].as_f64().unwrap());
+    let elbow: Triangle = [0, 1, 2].map(|i| xy(&v["legs"][i]["points"][0]));
+    let pin: Triangle = [0, 1, 2].map(|i| xy(&v["legs"][i]["platform"]));
+    let rho = [0, 1, 2].map(|i| (elbow[i] - pin[i]).norm());
+    let scanned = scanned_assemblies(&elbow, &pin, &rho);
+    let m = Manipulator::from_json(&std::fs::read_to_string(&file).unwrap()).unwrap();
+    let (_, real) = assemblies(&m, 1);
+    assert_same_real(&real, &scanned, 1.0);
+}
