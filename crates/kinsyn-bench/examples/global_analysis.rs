@@ -2,7 +2,8 @@
 //! kinsyn-bench --example global_analysis`): for `analyze --all-assemblies` at the reference
 //! inputs and for `components --free-inputs`, the blocks of the body tree, the unknowns and
 //! equations of each, the paths tracked and the wall time, one line per description. A
-//! description the body tree does not cover prints why.
+//! description the body tree does not cover prints why. `-- --regeneration` decomposes by
+//! regeneration instead of dimension by dimension.
 
 use kinsyn::geometry::Chart;
 use kinsyn::homotopy::{SolveSettings, solve_overdetermined};
@@ -31,7 +32,14 @@ fn main() {
     let root = concat!(env!("CARGO_MANIFEST_DIR"), "/../..");
     println!(
         "{:<46} {:>6} {:>16} {:>7} {:>9} | {:>16} {:>7} {:>9}",
-        "description", "blocks", "unknowns×eqs", "paths", "seconds", "free: unk×eqs", "paths", "seconds"
+        "description",
+        "blocks",
+        "unknowns×eqs",
+        "paths",
+        "seconds",
+        "free: unk×eqs",
+        "paths",
+        "seconds"
     );
     for f in FILES {
         let text = std::fs::read_to_string(format!("{root}/{f}")).expect("a committed file");
@@ -54,24 +62,36 @@ fn main() {
         };
         let start = Instant::now();
         let mut paths = 0;
+        let mut refused = None;
         for b in &blocks {
-            let r = solve_overdetermined(b.system.system(), &SolveSettings::default())
-                .expect("a solvable block");
-            paths += r.report.paths();
+            match solve_overdetermined(b.system.system(), &SolveSettings::default()) {
+                Ok(r) => paths += r.report.paths(),
+                Err(e) => refused = Some(e.to_string()),
+            }
         }
         let seconds = start.elapsed().as_secs_f64();
-        let systems: Vec<&kinsyn::poly::System> = blocks.iter().map(|b| b.system.system()).collect();
-        let given = format!(
-            "{name:<46} {:>6} {:>16} {paths:>7} {seconds:>9.3}",
-            blocks.len(),
-            shape(&systems)
-        );
+        let systems: Vec<&kinsyn::poly::System> =
+            blocks.iter().map(|b| b.system.system()).collect();
+        let given = match refused {
+            None => format!(
+                "{name:<46} {:>6} {:>16} {paths:>7} {seconds:>9.3}",
+                blocks.len(),
+                shape(&systems)
+            ),
+            Some(e) => format!(
+                "{name:<46} {:>6} {:>16} refused: {}",
+                blocks.len(),
+                shape(&systems),
+                e.chars().take(40).collect::<String>()
+            ),
+        };
         let start = Instant::now();
-        let free = m.block_operation_modes_with_progress(
-            &InputValues::Free,
-            &OperationModeSettings::default(),
-            &mut |_| {},
-        );
+        let mut settings = OperationModeSettings::default();
+        if std::env::args().any(|a| a == "--regeneration") {
+            settings.method = kinsyn::manipulator::DecompositionMethod::Regeneration;
+        }
+        let free =
+            m.block_operation_modes_with_progress(&InputValues::Free, &settings, &mut |_| {});
         let seconds = start.elapsed().as_secs_f64();
         match free {
             Ok(modes) => {

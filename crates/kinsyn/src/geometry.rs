@@ -509,6 +509,106 @@ fn vector_onto_coefficients(m: &Vector3<f64>, n: &Vector3<f64>) -> nalgebra::Mat
     )
 }
 
+/// Study parameters whose entries are polynomials `x0 … x3, y0 … y3` of one ring: a
+/// displacement that depends on unknowns (a body's frame relative to another through joints
+/// whose values are unknowns), up to a non-zero factor like the Study parameters themselves.
+pub type StudyPolys = [Poly; 8];
+
+/// The constant Study parameters `s` in a ring of `nvars` variables.
+#[must_use]
+pub fn study_constant(nvars: usize, s: &[f64; 8]) -> StudyPolys {
+    std::array::from_fn(|k| Poly::real(nvars, s[k]))
+}
+
+/// The quaternion product of `a` and `b` (scalar first).
+fn quaternion_product(a: &[Poly; 4], b: &[Poly; 4]) -> [Poly; 4] {
+    [
+        &a[0] * &b[0] - &a[1] * &b[1] - &a[2] * &b[2] - &a[3] * &b[3],
+        &a[0] * &b[1] + &a[1] * &b[0] + &a[2] * &b[3] - &a[3] * &b[2],
+        &a[0] * &b[2] + &a[2] * &b[0] + &a[3] * &b[1] - &a[1] * &b[3],
+        &a[0] * &b[3] + &a[3] * &b[0] + &a[1] * &b[2] - &a[2] * &b[1],
+    ]
+}
+
+/// The Study parameters of the composition `a ∘ b` (first `b`, then `a`; as frames, `b`
+/// relative to `a`'s): the dual-quaternion product `(x_a + ε y_a)(x_b + ε y_b)`, i.e.
+/// `x = x_a x_b`, `y = x_a y_b + y_a x_b` — with [`crate::spatial::study`]'s `y = −½ t x`,
+/// `R = R_a R_b` and `t = R_a t_b + t_a` give exactly these. Bilinear: the degrees add.
+#[must_use]
+pub fn study_product(a: &StudyPolys, b: &StudyPolys) -> StudyPolys {
+    let (xa, ya) = split(a);
+    let (xb, yb) = split(b);
+    let x = quaternion_product(&xa, &xb);
+    let y1 = quaternion_product(&xa, &yb);
+    let y2 = quaternion_product(&ya, &xb);
+    std::array::from_fn(|k| {
+        if k < 4 {
+            x[k].clone()
+        } else {
+            &y1[k - 4] + &y2[k - 4]
+        }
+    })
+}
+
+/// The Study parameters of the inverse displacement: the conjugate `(x̄, ȳ)` (on the Study
+/// quadric, `(x + εy)(x̄ + εȳ) = Δ`, a real number). Linear.
+#[must_use]
+pub fn study_inverse(a: &StudyPolys) -> StudyPolys {
+    std::array::from_fn(|k| {
+        if k % 4 == 0 {
+            a[k].clone()
+        } else {
+            -a[k].clone()
+        }
+    })
+}
+
+fn split(a: &StudyPolys) -> ([Poly; 4], [Poly; 4]) {
+    (
+        std::array::from_fn(|k| a[k].clone()),
+        std::array::from_fn(|k| a[4 + k].clone()),
+    )
+}
+
+/// The Study parameters of the turn by `θ` about the line through `p` along the unit `u`,
+/// with `t = tan(θ/2)` the variable `t` of a ring of `nvars`: `x = (1, t u)`,
+/// `y = (0, t u × p)` — `cos(θ/2)` times the normalised parameters (the translation of the
+/// turn is `p − R p`, and `−½ (p − R p) x = (0, sin(θ/2) u × p)`), **affine in `t`**.
+#[must_use]
+pub fn study_turn(nvars: usize, t: usize, u: &Vector3<f64>, p: &Vector3<f64>) -> StudyPolys {
+    let t = Poly::variable(nvars, t);
+    let m = u.cross(p);
+    let zero = Poly::zero(nvars);
+    [
+        Poly::real(nvars, 1.0),
+        t.clone() * u.x,
+        t.clone() * u.y,
+        t.clone() * u.z,
+        zero,
+        t.clone() * m.x,
+        t.clone() * m.y,
+        t * m.z,
+    ]
+}
+
+/// The Study parameters of the slide by `d` along the unit `u`, with `d` the variable `d` of a
+/// ring of `nvars`: `x = (1, 0)`, `y = (0, −½ d u)`. Affine in `d`.
+#[must_use]
+pub fn study_slide(nvars: usize, d: usize, u: &Vector3<f64>) -> StudyPolys {
+    let d = Poly::variable(nvars, d);
+    let zero = Poly::zero(nvars);
+    [
+        Poly::real(nvars, 1.0),
+        zero.clone(),
+        zero.clone(),
+        zero.clone(),
+        zero,
+        d.clone() * (-0.5 * u.x),
+        d.clone() * (-0.5 * u.y),
+        d * (-0.5 * u.z),
+    ]
+}
+
 /// The dot product of two quaternions as vectors of R⁴.
 fn dot4(a: &[Poly; 4], b: &[Poly; 4]) -> Poly {
     &a[0] * &b[0] + &a[1] * &b[1] + &a[2] * &b[2] + &a[3] * &b[3]

@@ -124,3 +124,55 @@ fn the_3_rps_3_spr_with_free_inputs_has_paper_002s_four_operation_modes() {
     assert_eq!(factors.len(), 4);
     assert!(products.iter().all(|c| c["dimension"] == 6));
 }
+
+/// The number after `mobility ` in `kinsyn analyze FILE`'s text: the local analysis's dof of
+/// the mechanism (the rank of its loop-closure Jacobian at the reference configuration).
+fn local_mobility(file: &str) -> u64 {
+    let o = kinsyn(&["analyze", file]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let text = stdout(&o);
+    let at = text.find("mobility ").expect("a mobility line") + "mobility ".len();
+    text[at..]
+        .split(|c: char| !c.is_ascii_digit())
+        .next()
+        .and_then(|n| n.parse().ok())
+        .expect("a number")
+}
+
+#[test]
+fn the_split_platforms_have_the_modes_and_self_motions_of_the_local_analysis() {
+    // The 3-RPS and 3-UPS with their platforms cut in two bodies joined by a revolute: one
+    // block, the second body merged into the first through the revolute's unknown angle. The
+    // local analysis (screw theory, a method that shares nothing with the polynomials) gives
+    // the mechanism's mobility with its inputs free, and 1 dof with them held: the global one
+    // must find one component of each dimension, with real points.
+    for f in [
+        "mechanisms/multibody/3-rps-split.json",
+        "mechanisms/multibody/3-ups-split.json",
+    ] {
+        let mobility = local_mobility(f);
+        let v = json(&["components", f, "--free-inputs", "--json"]);
+        let modes = v["components"].as_array().unwrap();
+        assert_eq!(modes.len(), 1, "{f}");
+        assert_eq!(modes[0]["dimension"].as_u64(), Some(mobility), "{f}");
+        assert!(modes[0]["real_points"].as_u64().unwrap() > 0, "{f}");
+        // With the inputs held: a self-motion of 1 dof through real configurations (by
+        // regeneration: seconds; by dimension the witness supersets take minutes).
+        let v = json(&["components", f, "--method", "regeneration", "--json"]);
+        let real_curves: Vec<&Value> = v["components"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .filter(|c| c["dimension"] == 1 && c["real_points"].as_u64().unwrap() > 0)
+            .collect();
+        assert_eq!(real_curves.len(), 1, "{f}: {v}");
+        assert_eq!(real_curves[0]["trace_test_passed"], true, "{f}");
+        // `--all-assemblies` names it rather than listing no assembly.
+        let o = kinsyn(&["analyze", f, "--all-assemblies"]);
+        assert_eq!(o.status.code(), Some(2), "{f}");
+        assert!(
+            stderr(&o).contains("a self-motion rather than isolated assemblies"),
+            "{f}"
+        );
+    }
+}

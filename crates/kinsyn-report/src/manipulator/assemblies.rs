@@ -29,6 +29,9 @@ pub struct Assembly {
     pub certified: bool,
     /// Whether it is the assembly reached by continuation from the reference configuration.
     pub current: bool,
+    /// Of a block: the solution (the block's unknowns) it is read from; empty for a
+    /// combination.
+    pub point: Vec<f64>,
 }
 
 /// The pose as `--pose` takes it: `x,y,z,rx,ry,rz`, lengths in the file's unit and the rotation
@@ -91,8 +94,10 @@ pub struct AllAssemblies {
 
 /// The solve of one block of the body tree: a moving body's frame relative to its parent's.
 pub struct BlockAssemblies {
-    /// The body's name.
+    /// The body's name (the block's root).
     pub body: String,
+    /// The names of the block's bodies: the root, then the members joined to it.
+    pub bodies: Vec<String>,
     /// Its parent's name (the ground's for a body the ground holds).
     pub parent: String,
     /// The variables, equations and degrees of its position system.
@@ -180,12 +185,20 @@ fn solve_block(
 ) -> Result<BlockAssemblies, Error> {
     let ps = &block.system;
     let constraints: usize = ps.legs().iter().map(LegConstraint::equations).sum();
-    if constraints < 6 {
+    if block.members.is_empty() && constraints < 6 {
         let e = PositionSystemError::Underdetermined {
             constraints,
             missing: Vec::new(),
         };
         return Err(Error::Input(format!("--all-assemblies: {e}")));
+    }
+    let (equations, unknowns) = (ps.system().len(), ps.system().nvars());
+    if equations < unknowns {
+        return Err(Error::Input(format!(
+            "--all-assemblies: the block of {} has {equations} equations in {unknowns} unknowns: at these inputs the mechanism keeps at least {} dof, a self-motion rather than isolated assemblies; `kinsyn components FILE --inputs …` decomposes it",
+            m.bodies()[block.body].name,
+            unknowns - equations
+        )));
     }
     let solved = square_randomisation(ps.system(), seed)
         .map_err(|e| Error::Input(format!("--all-assemblies: {e}")))?;
@@ -232,26 +245,24 @@ fn solve_block(
                 (c.to_homogeneous() - pose.to_homogeneous()).amax()
                     < 1e-6 * (1.0 + c.translation.vector.norm())
             });
+            let mut frames = vec![pose];
+            frames.extend(
+                ps.member_frames(&x)
+                    .ok()?
+                    .into_iter()
+                    .map(|(_, g)| pose * g),
+            );
             Some(Assembly {
                 pose,
-                frames: vec![pose],
+                frames,
                 residual,
                 certified: s.is_certified(),
                 current,
+                point: x,
             })
         })
         .collect();
-    // Singular endpoints where x0² + x1² + x2² + x3² = 0: the constraints were multiplied by
-    // this Δ (or vanish with it), so the null cone solves them without being a displacement.
-    let null_cone = report
-        .solutions
-        .iter()
-        .filter(|s| {
-            let delta: kinsyn::poly::C64 = s.x[..4].iter().map(|c| c * c).sum();
-            let size: f64 = s.x[..4].iter().map(kinsyn::poly::C64::norm_sqr).sum();
-            !s.regular && delta.norm() <= 1e-8 * size
-        })
-        .count();
+    let null_cone = null_cone_endpoints(&report);
     let name = |k: Option<usize>| {
         k.map_or_else(
             || m.ground_name().to_string(),
@@ -260,6 +271,10 @@ fn solve_block(
     };
     Ok(BlockAssemblies {
         body: name(Some(block.body)),
+        bodies: std::iter::once(block.body)
+            .chain(block.members.iter().copied())
+            .map(|k| name(Some(k)))
+            .collect(),
         parent: name(block.parent),
         system: ps.system().clone(),
         solved,
@@ -269,6 +284,20 @@ fn solve_block(
         real,
         null_cone,
     })
+}
+
+/// The singular endpoints where `x0² + x1² + x2² + x3² = 0`: the constraints were multiplied
+/// by this `Δ` (or vanish with it), so the null cone solves them without being a displacement.
+fn null_cone_endpoints(report: &SolveReport) -> usize {
+    report
+        .solutions
+        .iter()
+        .filter(|s| {
+            let delta: kinsyn::poly::C64 = s.x[..4].iter().map(|c| c * c).sum();
+            let size: f64 = s.x[..4].iter().map(kinsyn::poly::C64::norm_sqr).sum();
+            !s.regular && delta.norm() <= 1e-8 * size
+        })
+        .count()
 }
 
 /// The real assemblies of the mechanism: each combination of one real assembly per block (at
@@ -281,15 +310,17 @@ fn combine(m: &Manipulator, blocks: &[BodyBlock], solved: &[BlockAssemblies]) ->
     }
     while out.len() < MAX_COMBINATIONS {
         let chosen: Vec<&Assembly> = pick.iter().zip(solved).map(|(&k, b)| &b.real[k]).collect();
-        let relative: Vec<Displacement> = chosen.iter().map(|a| a.pose).collect();
-        let frames = m.body_frames(blocks, &relative);
-        out.push(Assembly {
-            pose: frames[m.end_effector()],
-            residual: chosen.iter().map(|a| a.residual).fold(0.0, f64::max),
-            certified: chosen.iter().all(|a| a.certified),
-            current: chosen.iter().all(|a| a.current),
-            frames,
-        });
+        let points: Vec<&[f64]> = chosen.iter().map(|a| a.point.as_slice()).collect();
+        if let Ok(frames) = m.body_frames(blocks, &points) {
+            out.push(Assembly {
+                pose: frames[m.end_effector()],
+                residual: chosen.iter().map(|a| a.residual).fold(0.0, f64::max),
+                certified: chosen.iter().all(|a| a.certified),
+                current: chosen.iter().all(|a| a.current),
+                frames,
+                point: Vec::new(),
+            });
+        }
         // The next combination, the last block fastest.
         let mut k = solved.len();
         loop {
@@ -400,7 +431,7 @@ impl BlockAssemblies {
             real_assemblies: self
                 .real
                 .iter()
-                .map(|a| real_assembly(m, a, std::slice::from_ref(&self.body)))
+                .map(|a| real_assembly(m, a, &self.bodies))
                 .collect(),
             complex_assemblies: report
                 .solutions

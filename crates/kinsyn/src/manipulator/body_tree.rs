@@ -1,58 +1,90 @@
 //! The **body tree** of a manipulator's global analysis: the moving bodies of a description
-//! with several (`/2`: stacked modules), each hanging from one other body — its **parent**, the
-//! ground or a moving body — by all of its legs. Each body's constraints are then those of a
-//! one-platform manipulator on its legs, in the Study parameters of its frame **relative to its
-//! parent's** ([`BodyBlock`]): the blocks share no unknown, so that the constraint variety of
-//! the mechanism is the product of the blocks' varieties. Its assemblies are the combinations of
-//! one assembly per block (their numbers multiply), its operation modes the products of one
-//! component per block (their dimensions add): a stack of modules costs the sum of its modules'
-//! paths, not the product.
+//! with several (`/2`: stacked modules, split platforms), in **blocks**, each hanging from one
+//! **parent** — the ground or a moving body — by all the legs that reach it from outside.
 //!
-//! A leg that closes a loop between moving bodies (two bodies both held by the ground and
-//! joined to each other, a ring of bodies) does not fit a tree and is refused
-//! ([`PositionSystemError::BodyLoop`]).
+//! - Bodies joined by a **one-joint leg** (a revolute or a slider between two moving bodies)
+//!   are one block: its **root** has Study parameters, each other **member** is the root
+//!   composed with the joints on its path from the root, whose values are unknowns of the
+//!   block (`h<leg>`, the tangent of a revolute's half turn from the reference; `d<leg>`, a
+//!   slider's displacement) or given inputs. A leg from the parent to a member, or between two
+//!   bodies of the block (a loop inside it), gives the equations of its kind in the Study
+//!   parameters of its end relative to its start, written as polynomials of the block's
+//!   unknowns by dual-quaternion products ([`crate::geometry::study_product`]).
+//! - Each block's constraints are those of a one-platform manipulator on its legs, in the
+//!   Study parameters of its root's frame **relative to its parent's** ([`BodyBlock`]): the
+//!   blocks share no unknown, so that the constraint variety of the mechanism is the product
+//!   of the blocks' varieties. Its assemblies are the combinations of one assembly per block
+//!   (their numbers multiply), its operation modes the products of one component per block
+//!   (their dimensions add): a stack of modules costs the sum of its modules' paths, not the
+//!   product.
+//!
+//! Blocks that hang from two bodies, or from each other in a cycle, do not fit a tree and are
+//! refused ([`PositionSystemError::BodyLoop`]): the HEXA's limbs, whose parallelogram bars
+//! join the sub-platforms from two cranks.
 
 use super::Manipulator;
-use super::construction::MechanismBuilder;
 use super::polynomial::{InputValues, PositionSystem, PositionSystemError};
 use crate::geometry::Chart;
 use crate::spatial::Displacement;
 
-/// One moving body of the body tree: its parent and the legs that hold it.
+/// One block of the body tree: a body, the bodies merged into it through one-joint legs, its
+/// parent and the legs that hold it.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct BodyNode {
-    /// The body: an index into [`Manipulator::bodies`].
+    /// The block's root body: an index into [`Manipulator::bodies`].
     pub body: usize,
     /// Its parent: an index into [`Manipulator::bodies`]; `None` for the ground.
     pub parent: Option<usize>,
-    /// Its legs (0-based), all from the parent to it.
+    /// Its legs (0-based), all from the parent to the root or a member.
     pub legs: Vec<usize>,
+    /// The other bodies of the block, each joined to the root by a path of one-joint legs.
+    pub members: Vec<Member>,
+    /// The legs between bodies of the block that are not on the members' paths: each closes a
+    /// loop inside the block.
+    pub internal: Vec<usize>,
 }
 
-/// One moving body's block of a manipulator's constraint system (module documentation).
+/// A body merged into a block: its frame is the root's composed with the joints of its path,
+/// whose values are unknowns of the block (or given inputs).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Member {
+    /// The body: an index into [`Manipulator::bodies`].
+    pub body: usize,
+    /// The one-joint legs from the root to it, each with whether it is crossed from its first
+    /// body to its last (`true`) or back.
+    pub path: Vec<(usize, bool)>,
+}
+
+/// One block of a manipulator's constraint system (module documentation).
 #[derive(Debug, Clone, PartialEq)]
 pub struct BodyBlock {
-    /// The body: an index into [`Manipulator::bodies`].
+    /// The root body: an index into [`Manipulator::bodies`].
     pub body: usize,
     /// Its parent: an index into [`Manipulator::bodies`]; `None` for the ground.
     pub parent: Option<usize>,
-    /// Its legs (0-based), all from the parent to it.
+    /// Its legs (0-based), from the parent to the root or a member.
     pub legs: Vec<usize>,
-    /// Its constraint system, in the Study parameters of its frame relative to the parent's
+    /// The other bodies of the block (indices into [`Manipulator::bodies`]).
+    pub members: Vec<usize>,
+    /// Its constraint system, in the Study parameters of the root's frame relative to the
+    /// parent's and the unknown values of the joints that join the members
     /// ([`Manipulator::constraint_system`]'s form; a solution's
-    /// [`PositionSystem::displacement`] is the body's frame in the parent's frame).
+    /// [`PositionSystem::displacement`] is the root's frame in the parent's frame,
+    /// [`PositionSystem::member_frames`] the members' in the root's).
     pub system: PositionSystem,
 }
 
 impl Manipulator {
-    /// The body tree (module documentation): for each moving body, parents first, its parent
-    /// and its legs.
+    /// The body tree (module documentation): for each block, parents first, its root body,
+    /// its parent, the legs that hold it, the bodies merged into it through one-joint legs, and
+    /// the legs that close loops inside it.
     ///
     /// # Errors
     /// [`PositionSystemError::BodyLoop`] for a leg that ends on the ground, joins a body to
-    /// itself, or reaches a body that another body already holds (a loop between moving
-    /// bodies); [`PositionSystemError::Multibody`] for a body no leg reaches.
+    /// itself, or reaches a block that another body already holds (a loop between blocks);
+    /// [`PositionSystemError::Multibody`] for a body no leg reaches.
     pub fn body_tree(&self) -> Result<Vec<BodyNode>, PositionSystemError> {
+        let n = self.bodies.len();
         let index = |body: usize| self.bodies.iter().position(|b| b.body == body);
         let name = |body: usize| {
             index(body).map_or_else(|| self.ground.clone(), |k| self.bodies[k].name.clone())
@@ -62,51 +94,130 @@ impl Manipulator {
             from: name(self.legs[i].from),
             to: name(self.legs[i].to),
         };
-        // The parent of each body: the one body all its legs come from.
-        let mut parent: Vec<Option<usize>> = vec![None; self.bodies.len()];
         for (i, leg) in self.legs.iter().enumerate() {
-            let to = index(leg.to).ok_or_else(|| looped(i))?;
-            if leg.from == leg.to {
+            if leg.from == leg.to || index(leg.to).is_none() {
                 return Err(looped(i));
             }
-            match parent[to] {
-                None => parent[to] = Some(leg.from),
-                Some(p) if p == leg.from => {}
-                Some(_) => return Err(looped(i)),
+        }
+        // Groups of bodies joined by one-joint legs (union–find).
+        let joins = |i: usize| {
+            let l = &self.legs[i];
+            l.joints.len() == 1 && index(l.from).is_some()
+        };
+        let mut group: Vec<usize> = (0..n).collect();
+        for i in (0..self.legs.len()).filter(|&i| joins(i)) {
+            let (a, b) = (
+                index(self.legs[i].from).unwrap_or(0),
+                index(self.legs[i].to).unwrap_or(0),
+            );
+            let (ra, rb) = (union_root(&mut group, a), union_root(&mut group, b));
+            group[ra] = rb;
+        }
+        let group: Vec<usize> = (0..n).map(|k| union_root(&mut group, k)).collect();
+        let in_group = |g: usize, body: usize| index(body).is_some_and(|k| group[k] == g);
+        // Each group: the one body all its incoming legs come from, its root (the first member
+        // such a leg reaches), its members' paths from the root, the loops inside.
+        let mut order: Vec<BodyNode> = Vec::new();
+        let mut placed = vec![false; n];
+        let mut roots: Vec<usize> = (0..n).filter(|&k| group[k] == k).collect();
+        while !roots.is_empty() {
+            let mut progressed = false;
+            for g in roots.clone() {
+                let incoming: Vec<usize> = (0..self.legs.len())
+                    .filter(|&i| in_group(g, self.legs[i].to) && !in_group(g, self.legs[i].from))
+                    .collect();
+                let Some(&first) = incoming.first() else {
+                    return Err(PositionSystemError::Multibody {
+                        manipulator: self.name.clone(),
+                    });
+                };
+                let parent_body = self.legs[first].from;
+                if let Some(&i) = incoming.iter().find(|&&i| self.legs[i].from != parent_body) {
+                    return Err(looped(i));
+                }
+                let parent = index(parent_body);
+                if parent.is_some_and(|p| !placed[p]) {
+                    continue;
+                }
+                let root = index(self.legs[first].to).unwrap_or(g);
+                let (members, internal) = self.group_paths(root, |k| group[k] == g);
+                for k in (0..n).filter(|&k| group[k] == g) {
+                    placed[k] = true;
+                }
+                order.push(BodyNode {
+                    body: root,
+                    parent,
+                    legs: incoming,
+                    members,
+                    internal,
+                });
+                roots.retain(|&r| r != g);
+                progressed = true;
+            }
+            if !progressed {
+                // Groups that hang from each other in a cycle.
+                let g = roots[0];
+                let i = (0..self.legs.len())
+                    .find(|&i| in_group(g, self.legs[i].to) && !in_group(g, self.legs[i].from))
+                    .unwrap_or(0);
+                return Err(looped(i));
             }
         }
-        // Parents first, from the ground: a body whose chain of parents does not reach the
-        // ground (a cycle of bodies) is never placed.
-        let mut order: Vec<BodyNode> = Vec::new();
-        let mut placed = vec![false; self.bodies.len()];
-        while order.len() < self.bodies.len() {
-            let next = (0..self.bodies.len()).find(|&k| {
-                !placed[k]
-                    && parent[k].is_some_and(|p| {
-                        p == MechanismBuilder::GROUND || index(p).is_some_and(|q| placed[q])
-                    })
-            });
-            let Some(k) = next else {
-                let stuck = (0..self.bodies.len()).find(|&k| !placed[k]).unwrap_or(0);
-                return match self.legs.iter().position(|l| index(l.to) == Some(stuck)) {
-                    Some(i) => Err(looped(i)),
-                    None => Err(PositionSystemError::Multibody {
-                        manipulator: self.name.clone(),
-                    }),
-                };
-            };
-            placed[k] = true;
-            let p = parent[k].and_then(index);
-            let legs = (0..self.legs.len())
-                .filter(|&i| index(self.legs[i].to) == Some(k))
-                .collect();
-            order.push(BodyNode {
-                body: k,
-                parent: p,
-                legs,
-            });
-        }
         Ok(order)
+    }
+
+    /// The members of the group of `root` (the bodies `member` accepts) other than the root,
+    /// each with its path of one-joint legs from the root (breadth first), and the legs inside
+    /// the group that are not on those paths.
+    fn group_paths(
+        &self,
+        root: usize,
+        member: impl Fn(usize) -> bool,
+    ) -> (Vec<Member>, Vec<usize>) {
+        let index = |body: usize| self.bodies.iter().position(|b| b.body == body);
+        let inside = |i: usize| {
+            let l = &self.legs[i];
+            index(l.from).is_some_and(&member) && index(l.to).is_some_and(&member)
+        };
+        let mut paths: Vec<Option<Vec<(usize, bool)>>> = vec![None; self.bodies.len()];
+        paths[root] = Some(Vec::new());
+        let mut used = Vec::new();
+        let mut queue = std::collections::VecDeque::from([root]);
+        while let Some(k) = queue.pop_front() {
+            for i in (0..self.legs.len()).filter(|&i| inside(i) && self.legs[i].joints.len() == 1) {
+                let l = &self.legs[i];
+                let (from, to) = (index(l.from), index(l.to));
+                let next = if from == Some(k) {
+                    to.map(|t| (t, true))
+                } else if to == Some(k) {
+                    from.map(|f| (f, false))
+                } else {
+                    None
+                };
+                if let Some((next, along)) = next
+                    && paths[next].is_none()
+                {
+                    let mut path = paths[k].clone().unwrap_or_default();
+                    path.push((i, along));
+                    paths[next] = Some(path);
+                    used.push(i);
+                    queue.push_back(next);
+                }
+            }
+        }
+        let members = paths
+            .into_iter()
+            .enumerate()
+            .filter(|(k, p)| *k != root && p.is_some())
+            .map(|(body, path)| Member {
+                body,
+                path: path.unwrap_or_default(),
+            })
+            .collect();
+        let internal = (0..self.legs.len())
+            .filter(|&i| inside(i) && !used.contains(&i))
+            .collect();
+        (members, internal)
     }
 
     /// The manipulator's constraint system as one block per moving body of its body tree
@@ -123,11 +234,12 @@ impl Manipulator {
         self.body_tree()?
             .into_iter()
             .map(|n| {
-                let system = self.block_system(n.body, n.parent, &n.legs, inputs, chart)?;
+                let system = self.block_system(&n, inputs, chart)?;
                 Ok(BodyBlock {
                     body: n.body,
                     parent: n.parent,
                     legs: n.legs,
+                    members: n.members.iter().map(|m| m.body).collect(),
                     system,
                 })
             })
@@ -135,21 +247,39 @@ impl Manipulator {
     }
 
     /// The frame of every moving body (in [`Manipulator::bodies`] order, ground frame) from
-    /// one relative displacement per block of `blocks` (in their order): each body's frame is
-    /// its parent's composed with its block's displacement.
-    #[must_use]
+    /// one real solution per block of `blocks` (in their order): each root's frame is its
+    /// parent's composed with the block's displacement, each member's the root's composed with
+    /// its joints'.
+    ///
+    /// # Errors
+    /// A solution that is no displacement ([`crate::spatial::study::StudyError`]).
     pub fn body_frames(
         &self,
         blocks: &[BodyBlock],
-        relative: &[Displacement],
-    ) -> Vec<Displacement> {
+        solutions: &[&[f64]],
+    ) -> Result<Vec<Displacement>, crate::spatial::study::StudyError> {
         let mut frames = vec![crate::spatial::identity(); self.bodies.len()];
-        for (b, g) in blocks.iter().zip(relative) {
+        for (b, x) in blocks.iter().zip(solutions) {
             let parent = b
                 .parent
                 .map_or_else(crate::spatial::identity, |p| frames[p]);
-            frames[b.body] = parent * g;
+            let root = parent * b.system.displacement(x)?;
+            frames[b.body] = root;
+            for (member, g) in b.system.member_frames(x)? {
+                frames[member] = root * g;
+            }
         }
-        frames
+        Ok(frames)
     }
+}
+
+/// The representative of `k` in the union–find forest `g` (its parent links), the path to it
+/// shortened.
+fn union_root(g: &mut [usize], k: usize) -> usize {
+    let mut r = k;
+    while g[r] != r {
+        r = g[r];
+    }
+    g[k] = r;
+    r
 }

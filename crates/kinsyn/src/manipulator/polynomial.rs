@@ -71,9 +71,11 @@
 //! leg's equations is multiplied by `1 + t²`, which makes it a polynomial of degree 2 in `t`
 //! (as paper 004's `g1 … g8`, there with the absolute angle's tangent).
 
+use super::body_tree::BodyNode;
 use super::{Manipulator, construction::MechanismBuilder};
 use crate::geometry::{
-    Chart, PolyVector, STUDY_NAMES, StudyVariables, constant_vector, cross, dot,
+    Chart, PolyVector, STUDY_NAMES, StudyPolys, StudyVariables, constant_vector, cross, dot,
+    study_constant, study_inverse, study_product, study_slide, study_turn,
 };
 use crate::notation::Primitive;
 use crate::poly::{Poly, System};
@@ -280,15 +282,30 @@ pub struct LegConstraint {
 }
 
 impl LegConstraint {
-    /// The constraint with its ground-side data (the fixed point, and the fixed axis of the
-    /// kinds that have one) expressed in the frame `f` (given in the ground frame): the leg's
-    /// constraint on the displacement of its end body relative to a body whose frame is `f`.
+    /// The constraint with the free revolute `turn` (ground frame) turning its ground-side
+    /// data.
+    #[must_use]
+    pub fn turned(mut self, turn: Option<FreeRevolute>) -> Self {
+        self.turned_by = turn;
+        self
+    }
+
+    /// The constraint with its ground-side data (the fixed point, the fixed axis of the kinds
+    /// that have one, the free revolute that turns them) expressed in the frame `f` (given in
+    /// the ground frame): the leg's constraint on the displacement of its end body relative
+    /// to a body whose frame is `f`.
     #[must_use]
     pub fn in_frame(mut self, f: &Displacement) -> Self {
-        self.base = f.inverse_transform_point(&Point3::from(self.base)).coords;
+        let local = |p: &Vector3<f64>| f.inverse_transform_point(&Point3::from(*p)).coords;
+        self.base = local(&self.base);
         if !matches!(self.kind, LegKind::SphericalRevolute | LegKind::MovingPlane) {
             self.axis = self.axis.map(|n| f.rotation.inverse() * n);
         }
+        self.turned_by = self.turned_by.map(|t| FreeRevolute {
+            point: local(&t.point),
+            axis: f.rotation.inverse() * t.axis,
+            ..t
+        });
         self
     }
 
@@ -340,6 +357,9 @@ pub struct PositionSystem {
     legs: Vec<LegConstraint>,
     inputs: Vec<usize>,
     free: Vec<FreeRevolute>,
+    /// The members of a block of the body tree, each with its Study parameters relative to the
+    /// root as polynomials of the system's unknowns.
+    members: Vec<(usize, StudyPolys)>,
 }
 
 impl PositionSystem {
@@ -393,6 +413,36 @@ impl PositionSystem {
             .try_into()
             .map_err(|_| study::StudyError::NotFinite)?;
         study::to_displacement(&s, study::QUADRIC_TOLERANCE)
+    }
+
+    /// Whether the system is a block with members (bodies joined to its root by joints whose
+    /// values are unknowns): [`Self::displacement`] is then its root body's frame.
+    #[must_use]
+    pub fn has_members(&self) -> bool {
+        !self.members.is_empty()
+    }
+
+    /// The frames of the block's members (indices into [`Manipulator::bodies`]) relative to its
+    /// root's at the real solution `solution` (the joints' unknowns read from it); empty for a
+    /// block of one body.
+    ///
+    /// # Errors
+    /// Values that are no displacement ([`study::StudyError`]).
+    pub fn member_frames(
+        &self,
+        solution: &[f64],
+    ) -> Result<Vec<(usize, Displacement)>, study::StudyError> {
+        let z: Vec<crate::poly::C64> = solution
+            .iter()
+            .map(|v| crate::poly::C64::new(*v, 0.0))
+            .collect();
+        self.members
+            .iter()
+            .map(|(b, g)| {
+                let s: [f64; 8] = std::array::from_fn(|k| g[k].eval(&z).re);
+                study::to_displacement(&s, study::QUADRIC_TOLERANCE).map(|d| (*b, d))
+            })
+            .collect()
     }
 
     /// The solution vector of the platform pose `pose` on this system's chart, `None` when the
@@ -613,26 +663,208 @@ impl Manipulator {
                 manipulator: self.name.clone(),
             });
         }
-        let legs: Vec<usize> = (0..self.legs.len()).collect();
-        self.block_system(0, None, &legs, inputs, chart)
+        let node = BodyNode {
+            body: 0,
+            parent: None,
+            legs: (0..self.legs.len()).collect(),
+            members: Vec::new(),
+            internal: Vec::new(),
+        };
+        self.block_system(&node, inputs, chart)
     }
 
-    /// The constraint system of the moving body `body` (an index into
-    /// [`Manipulator::bodies`]) on the legs `legs`, all from its `parent` (an index into the
-    /// bodies; `None`: the ground) to it, in the Study parameters of its frame **relative to
-    /// the parent's frame** (the ground-side data of the legs taken into the parent's frame at
-    /// its reference pose), as [`Manipulator::constraint_system`] describes.
+    /// The constraint system of one block of the body tree (`node`,
+    /// [`Manipulator::body_tree`]): in the Study parameters of its root body's frame **relative
+    /// to its parent's frame** (the ground-side data of the legs taken into the parent's frame
+    /// at its reference pose), then the free inputs' tangents, then one unknown per joint that
+    /// joins a member to the block (`h<leg>` the tangent of a revolute's half turn from the
+    /// reference, `d<leg>` a slider's displacement). The legs to a member, and the legs that
+    /// close loops inside the block, are the equations of their kinds in the Study parameters
+    /// of the member relative to the parent (or to the leg's first body), written as
+    /// polynomials of the block's unknowns by composing the joints' displacements
+    /// ([`crate::geometry::study_product`]).
     pub(super) fn block_system(
         &self,
-        body: usize,
-        parent: Option<usize>,
-        legs: &[usize],
+        node: &BodyNode,
         inputs: &InputValues,
         chart: &Chart,
     ) -> Result<PositionSystem, PositionSystemError> {
+        let legs: Vec<usize> = node.legs.iter().chain(&node.internal).copied().collect();
+        let (value, turned) = self.input_values(inputs, &legs)?;
+        let tolerance = 1e-6 * self.mechanism.scale();
+        let frame_of =
+            |k: Option<usize>| k.map_or_else(crate::spatial::identity, |k| self.bodies[k].frame);
+        let index = |body: usize| self.bodies.iter().position(|b| b.body == body);
+        let parent_frame = frame_of(node.parent);
+        let mut free: Vec<FreeRevolute> = turned.iter().flatten().copied().collect();
+        free.sort_by_key(|f| f.variable);
+        // The joints that join the members: an unknown each, unless given.
+        let mut names: Vec<String> = STUDY_NAMES.iter().map(|n| (*n).to_string()).collect();
+        names.extend(free.iter().map(|f| format!("t{}", f.actuator + 1)));
+        let joint_variable = self.joint_variables(node, &value, &mut names);
+        let nb = names.len();
+        // A ring of the block's unknowns and eight more for the Study parameters of a leg's
+        // end relative to its start, substituted away.
+        let nr = nb + 8;
+        let study = |g: &Displacement| study_constant(nr, &study::from_displacement(g));
+        let member_study = self.member_studies(node, &value, &joint_variable, nr);
+        let of_body = |k: usize| -> StudyPolys {
+            if k == node.body {
+                study(&crate::spatial::identity())
+            } else {
+                member_study
+                    .iter()
+                    .find(|(b, _)| *b == k)
+                    .map_or_else(|| study(&crate::spatial::identity()), |(_, g)| g.clone())
+            }
+        };
+        let root = StudyVariables::new(nr, [0, 1, 2, 3, 4, 5, 6, 7]);
+        let root_study: StudyPolys = std::array::from_fn(|k| Poly::variable(nr, k));
+        let virtual_study = StudyVariables::new(nr, std::array::from_fn(|k| nb + k));
+        let mut constraints = Vec::new();
+        let mut equations = Vec::new();
+        for &i in &legs {
+            let leg = &self.legs[i];
+            let external = node.legs.contains(&i);
+            let start_frame = if external {
+                parent_frame
+            } else {
+                frame_of(index(leg.from))
+            };
+            let c = self
+                .leg_constraint(i, &value, tolerance)?
+                .turned(turned[i])
+                .in_frame(&start_frame);
+            let to = index(leg.to).unwrap_or(node.body);
+            // The Study parameters of the leg's end relative to its start.
+            let end: Option<StudyPolys> = match (external, to == node.body) {
+                (true, true) => None,
+                (true, false) => Some(study_product(&root_study, &of_body(to))),
+                (false, _) => {
+                    let from = index(leg.from).unwrap_or(node.body);
+                    Some(study_product(&study_inverse(&of_body(from)), &of_body(to)))
+                }
+            };
+            let s = if end.is_some() { &virtual_study } else { &root };
+            let leg_equations = match &c.turned_by {
+                None => fixed_leg_equations(s, &c),
+                Some(turn) => turned_leg_equations(s, &c, &Turn::new(nr, turn)),
+            };
+            for e in leg_equations {
+                let e = match &end {
+                    None => e,
+                    Some(g) => (0..8).fold(e, |e, k| e.substitute(nb + k, &g[k])),
+                };
+                equations.push(e);
+            }
+            constraints.push(c);
+        }
+        equations.push(root.quadric());
+        equations.push(root.chart(chart));
+        let map: Vec<usize> = (0..nr).map(|k| if k < nb { k } else { 0 }).collect();
+        let equations: Vec<Poly> = equations
+            .into_iter()
+            .map(|e| e.relabel(nb, &map))
+            .filter(|e| !e.is_empty())
+            .collect();
+        let members = member_study
+            .into_iter()
+            .map(|(b, g)| (b, g.map(|p| p.relabel(nb, &map))))
+            .collect();
+        Ok(PositionSystem {
+            system: System::new(names, equations).expect("distinct names, equations in their ring"),
+            chart: *chart,
+            legs: constraints,
+            inputs: free.iter().map(|f| f.variable).collect(),
+            free,
+            members,
+        })
+    }
+
+    /// One unknown per one-joint leg of the members' paths in `node` whose joint is not given
+    /// (`value`), named `h<leg>` (a revolute) or `d<leg>` (a slider) after `names`: each leg
+    /// with its variable's index.
+    fn joint_variables(
+        &self,
+        node: &BodyNode,
+        value: &[Option<f64>],
+        names: &mut Vec<String>,
+    ) -> Vec<(usize, usize)> {
+        let joints = self.mechanism.joints();
+        let mut out: Vec<(usize, usize)> = Vec::new();
+        for &(i, _) in node.members.iter().flat_map(|m| &m.path) {
+            let j = self.legs[i].joints.start;
+            if value[j].is_none() && !out.iter().any(|(l, _)| *l == i) {
+                let letter = if joints[j].kind == Primitive::R {
+                    'h'
+                } else {
+                    'd'
+                };
+                out.push((i, names.len()));
+                names.push(format!("{letter}{}", i + 1));
+            }
+        }
+        out
+    }
+
+    /// The Study parameters of each member of the block `node` relative to its root, in a
+    /// ring of `nr` variables: the displacements of the one-joint legs of its path composed,
+    /// each joint's value an unknown (`joint_variable`: leg, variable) or given (`value`).
+    fn member_studies(
+        &self,
+        node: &BodyNode,
+        value: &[Option<f64>],
+        joint_variable: &[(usize, usize)],
+        nr: usize,
+    ) -> Vec<(usize, StudyPolys)> {
+        let joints = self.mechanism.joints();
+        let index = |body: usize| self.bodies.iter().position(|b| b.body == body);
+        let frame_of =
+            |k: Option<usize>| k.map_or_else(crate::spatial::identity, |k| self.bodies[k].frame);
+        let study = |g: &Displacement| study_constant(nr, &study::from_displacement(g));
+        // The frame of a leg's last body relative to its first, through its one joint (turned
+        // about, or slid along, its axis at the reference configuration).
+        let relative = |i: usize| -> StudyPolys {
+            let leg = &self.legs[i];
+            let j = leg.joints.start;
+            let spec = &joints[j];
+            let joint = match joint_variable.iter().find(|(l, _)| *l == i) {
+                None => study(&spec.primitive().displacement(value[j].unwrap_or(0.0))),
+                Some((_, v)) => match spec.kind {
+                    Primitive::R => study_turn(nr, *v, &spec.axis.normalize(), &spec.point),
+                    Primitive::P => study_slide(nr, *v, &spec.axis.normalize()),
+                },
+            };
+            let from = frame_of(index(leg.from));
+            let to = frame_of(index(leg.to));
+            study_product(&study_product(&study(&from.inverse()), &joint), &study(&to))
+        };
+        node.members
+            .iter()
+            .map(|m| {
+                let g = m
+                    .path
+                    .iter()
+                    .fold(study(&crate::spatial::identity()), |g, &(i, along)| {
+                        let r = relative(i);
+                        study_product(&g, &if along { r } else { study_inverse(&r) })
+                    });
+                (m.body, g)
+            })
+            .collect()
+    }
+
+    /// The values of the given inputs by joint, and (free inputs) the leg each free revolute
+    /// at the ground of one of `legs` turns, with its unknown's index (from 8): a free input is
+    /// a passive joint of its leg wherever the leg is then of a kind recognised here.
+    #[allow(clippy::type_complexity)]
+    fn input_values(
+        &self,
+        inputs: &InputValues,
+        legs: &[usize],
+    ) -> Result<(Vec<Option<f64>>, Vec<Option<FreeRevolute>>), PositionSystemError> {
         let joints = self.mechanism.joints();
         let mut value: Vec<Option<f64>> = vec![None; joints.len()];
-        // The free revolute of each leg, if any.
         let mut turned: Vec<Option<FreeRevolute>> = vec![None; self.legs.len()];
         match inputs {
             InputValues::Given(given) => {
@@ -684,57 +916,7 @@ impl Manipulator {
                 }
             }
         }
-        let tolerance = 1e-6 * self.mechanism.scale();
-        let parent_frame = parent.map_or_else(crate::spatial::identity, |p| self.bodies[p].frame);
-        let local = |p: &Vector3<f64>| {
-            parent_frame
-                .inverse_transform_point(&Point3::from(*p))
-                .coords
-        };
-        let mut constraints = Vec::new();
-        let mut free = Vec::new();
-        for &i in legs {
-            let mut c = self.leg_constraint(i, &value, tolerance)?;
-            c.turned_by = turned[i].map(|t| FreeRevolute {
-                point: local(&t.point),
-                axis: parent_frame.rotation.inverse() * t.axis,
-                ..t
-            });
-            free.extend(c.turned_by);
-            constraints.push(c.in_frame(&parent_frame));
-        }
-        let legs = constraints;
-        debug_assert!(
-            legs.iter()
-                .all(|c| self.legs[c.leg].to == self.bodies[body].body)
-        );
-        free.sort_by_key(|f| f.variable);
-        let nvars = 8 + free.len();
-        let s = StudyVariables::leading(nvars);
-        let mut equations = Vec::with_capacity(legs.len() * 2 + 2);
-        for c in &legs {
-            match &c.turned_by {
-                None => equations.extend(fixed_leg_equations(&s, c)),
-                Some(turn) => {
-                    equations.extend(turned_leg_equations(&s, c, &Turn::new(nvars, turn)));
-                }
-            }
-        }
-        equations.push(s.quadric());
-        equations.push(s.chart(chart));
-        let mut names: Vec<String> = STUDY_NAMES.iter().map(|n| (*n).to_string()).collect();
-        let mut input_variables = Vec::new();
-        for turn in &free {
-            names.push(format!("t{}", turn.actuator + 1));
-            input_variables.push(turn.variable);
-        }
-        Ok(PositionSystem {
-            system: System::new(names, equations).expect("distinct names, equations in their ring"),
-            chart: *chart,
-            legs,
-            inputs: input_variables,
-            free,
-        })
+        Ok((value, turned))
     }
 
     /// Leg `i`'s serial chain with the joints of `value` locked there, the passive joints at

@@ -20,7 +20,7 @@ pub(in crate::cli) fn text(c: &Components) -> String {
         } => system_text(source, system, decomposition, c.options.method),
         Decomposed::Manipulator { m, blocks, inputs } => {
             if let [one] = &blocks[..] {
-                manipulator_text(m, &one.modes, inputs, &c.options)
+                manipulator_text(m, one, inputs, &c.options)
             } else {
                 blocks_text(m, blocks, inputs, &c.options)
             }
@@ -162,10 +162,11 @@ fn free_inputs_text(m: &Manipulator, system: &kinsyn::manipulator::PositionSyste
 /// The text report of the operation modes (or assemblies and self-motions) of `m`.
 fn manipulator_text(
     m: &Manipulator,
-    modes: &OperationModes,
+    block: &BlockModes,
     inputs: &[String],
     options: &ComponentsOptions,
 ) -> String {
+    let modes = &block.modes;
     let system = modes.system.system();
     let mut out = String::new();
     let _ = writeln!(
@@ -181,7 +182,13 @@ fn manipulator_text(
         system.nvars(),
         system.variables().join(", ")
     );
-    components_text(&mut out, m, modes, options, "platform");
+    // A block with members: the motion classified is its root body's.
+    let body = if modes.system.has_members() {
+        m.bodies()[block.body].name.clone()
+    } else {
+        "platform".to_string()
+    };
+    components_text(&mut out, m, modes, options, &body);
     out
 }
 
