@@ -176,3 +176,21 @@ fn the_split_platforms_have_the_modes_and_self_motions_of_the_local_analysis() {
         );
     }
 }
+
+#[test]
+fn the_configurable_4_rrr_with_free_inputs_has_the_rhombus_three_modes() {
+    // Paper 003's platform is a rhombus: four links of 120 mm hinged in a ring. An equilateral
+    // four-bar moves in three ways — as a parallelogram, and folded onto either diagonal
+    // (C1 = C3 or C2 = C4) — so with the cranks free (passive RRR legs constrain nothing in
+    // the plane) the mechanism has three operation modes, each of the local analysis's
+    // mobility (the rhombus's 1 dof and the plane's 3).
+    let f = "mechanisms/4-rrr-configurable.json";
+    let mobility = local_mobility(f);
+    let v = json(&["components", f, "--free-inputs", "--json"]);
+    let modes = v["components"].as_array().unwrap();
+    assert_eq!(modes.len(), 3, "{v}");
+    for c in modes {
+        assert_eq!(c["dimension"].as_u64(), Some(mobility));
+        assert!(c["real_points"].as_u64().unwrap() > 0);
+    }
+}

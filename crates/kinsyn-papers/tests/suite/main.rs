@@ -17,6 +17,7 @@ mod common {
 
 mod appendix;
 mod configurable;
+mod configurable_general;
 mod configurable_mechanism;
 mod configurable_methods;
 mod configurable_position;

@@ -106,8 +106,9 @@ pub struct BlockAssemblies {
     /// block (more equations than unknowns) its square randomisation
     /// ([`kinsyn::homotopy::square_randomisation`]).
     pub solved: kinsyn::poly::System,
-    /// The endpoints of the square randomisation that the original equations refuse (0 for a
-    /// square system): they are not in [`Self::report`]'s solutions.
+    /// The endpoints that are no assembly, not in [`Self::report`]'s solutions: those of the
+    /// square randomisation that the original equations refuse (0 for a square system), and
+    /// the regular ones that put a member body on the null cone.
     pub spurious: usize,
     /// What each of its legs contributes to the position system.
     pub kinds: Vec<&'static str>,
@@ -184,22 +185,7 @@ fn solve_block(
     reference: Option<&Displacement>,
 ) -> Result<BlockAssemblies, Error> {
     let ps = &block.system;
-    let constraints: usize = ps.legs().iter().map(LegConstraint::equations).sum();
-    if block.members.is_empty() && constraints < 6 {
-        let e = PositionSystemError::Underdetermined {
-            constraints,
-            missing: Vec::new(),
-        };
-        return Err(Error::Input(format!("--all-assemblies: {e}")));
-    }
-    let (equations, unknowns) = (ps.system().len(), ps.system().nvars());
-    if equations < unknowns {
-        return Err(Error::Input(format!(
-            "--all-assemblies: the block of {} has {equations} equations in {unknowns} unknowns: at these inputs the mechanism keeps at least {} dof, a self-motion rather than isolated assemblies; `kinsyn components FILE --inputs …` decomposes it",
-            m.bodies()[block.body].name,
-            unknowns - equations
-        )));
-    }
+    check_isolated(m, block)?;
     let solved = square_randomisation(ps.system(), seed)
         .map_err(|e| Error::Input(format!("--all-assemblies: {e}")))?;
     let settings = SolveSettings {
@@ -224,6 +210,15 @@ fn solve_block(
         let mut keep = keep.into_iter();
         report.solutions.retain(|_| keep.next().unwrap_or(false));
     }
+    // Regular endpoints with a member body on the null cone (a joint's tan(θ/2) = ±i): they
+    // solve the equations without being an assembly.
+    if ps.has_members() {
+        let before = report.solutions.len();
+        report
+            .solutions
+            .retain(|s| !(s.regular && ps.on_null_cone(&s.x)));
+        spurious += before - report.solutions.len();
+    }
     let real: Vec<Assembly> = report
         .solutions
         .iter()
@@ -232,7 +227,7 @@ fn solve_block(
             let x: Vec<f64> = s.x.iter().map(|c| c.re).collect();
             let pose = ps.displacement(&x).ok()?;
             let residual = ps
-                .leg_residuals(&pose)
+                .residuals_at(&x)?
                 .iter()
                 .map(|r| {
                     r.distance
@@ -262,7 +257,7 @@ fn solve_block(
             })
         })
         .collect();
-    let null_cone = null_cone_endpoints(&report);
+    let null_cone = null_cone_endpoints(ps, &report);
     let name = |k: Option<usize>| {
         k.map_or_else(
             || m.ground_name().to_string(),
@@ -286,17 +281,36 @@ fn solve_block(
     })
 }
 
+/// Refuses a block whose legs leave its bodies degrees of freedom at the inputs (fewer
+/// equations than unknowns): it has no isolated assemblies, and the message says so.
+fn check_isolated(m: &Manipulator, block: &BodyBlock) -> Result<(), Error> {
+    let ps = &block.system;
+    let constraints: usize = ps.legs().iter().map(LegConstraint::equations).sum();
+    if block.members.is_empty() && constraints < 6 {
+        let e = PositionSystemError::Underdetermined {
+            constraints,
+            missing: Vec::new(),
+        };
+        return Err(Error::Input(format!("--all-assemblies: {e}")));
+    }
+    let (equations, unknowns) = (ps.system().len(), ps.system().nvars());
+    if equations < unknowns {
+        return Err(Error::Input(format!(
+            "--all-assemblies: the block of {} has {equations} equations in {unknowns} unknowns: at these inputs the mechanism keeps at least {} dof, a self-motion rather than isolated assemblies; `kinsyn components FILE --inputs …` decomposes it",
+            m.bodies()[block.body].name,
+            unknowns - equations
+        )));
+    }
+    Ok(())
+}
+
 /// The singular endpoints where `x0² + x1² + x2² + x3² = 0`: the constraints were multiplied
 /// by this `Δ` (or vanish with it), so the null cone solves them without being a displacement.
-fn null_cone_endpoints(report: &SolveReport) -> usize {
+fn null_cone_endpoints(ps: &kinsyn::manipulator::PositionSystem, report: &SolveReport) -> usize {
     report
         .solutions
         .iter()
-        .filter(|s| {
-            let delta: kinsyn::poly::C64 = s.x[..4].iter().map(|c| c * c).sum();
-            let size: f64 = s.x[..4].iter().map(kinsyn::poly::C64::norm_sqr).sum();
-            !s.regular && delta.norm() <= 1e-8 * size
-        })
+        .filter(|s| !s.regular && ps.on_null_cone(&s.x))
         .count()
 }
 

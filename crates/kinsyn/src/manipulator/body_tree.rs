@@ -139,7 +139,15 @@ impl Manipulator {
                 if parent.is_some_and(|p| !placed[p]) {
                     continue;
                 }
-                let root = index(self.legs[first].to).unwrap_or(g);
+                // The root: the body whose paths to the others are shortest in all (each joint
+                // of a path raises the degree of the legs beyond it).
+                let root = (0..n)
+                    .filter(|&k| group[k] == g)
+                    .min_by_key(|&k| {
+                        let (members, _) = self.group_paths(k, |b| group[b] == g);
+                        members.iter().map(|m| m.path.len()).sum::<usize>()
+                    })
+                    .unwrap_or(g);
                 let (members, internal) = self.group_paths(root, |k| group[k] == g);
                 for k in (0..n).filter(|&k| group[k] == g) {
                     placed[k] = true;

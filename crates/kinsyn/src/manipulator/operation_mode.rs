@@ -243,6 +243,12 @@ impl Manipulator {
             InputValues::Given(g) => g.to_vec(),
             InputValues::Free => Vec::new(),
         };
+        // Components on which a body of the block lies on the null cone (a member's joint at
+        // tan(θ/2) = ±i) solve the equations without being configurations: dropped.
+        let mut decomposition = decomposition;
+        decomposition
+            .components
+            .retain(|c| !c.witness_points.iter().all(|x| system.on_null_cone(x)));
         let components = decomposition
             .components
             .iter()
@@ -260,7 +266,8 @@ impl Manipulator {
                     .and_then(|p| self.local_motion(&system, p, settings, &mut rng));
                 let released = match (released, real_points.first()) {
                     (Some(free_system), Some(p)) if c.dimension == 0 => {
-                        let q = released_point(free_system, p, &given, self.actuators.len());
+                        let q =
+                            released_point(&system, free_system, p, &given, self.actuators.len());
                         q.and_then(|q| self.local_motion(free_system, &q, settings, &mut rng))
                     }
                     _ => None,
@@ -294,7 +301,7 @@ impl Manipulator {
         rng: &mut ChaCha8Rng,
     ) -> Option<LocalMotion> {
         let program = system.system().program();
-        let (twists, dof) = self.tangent_twists(&program, p)?;
+        let (twists, dof) = self.tangent_twists(system, &program, p)?;
         let pose = system.displacement(p).ok()?;
         let mut spans = vec![twists];
         let mut poses = vec![pose];
@@ -303,9 +310,10 @@ impl Manipulator {
                 let Some(q) = walk(&program, p, settings.step, rng) else {
                     continue;
                 };
-                if let (Some((t, d)), Ok(g)) =
-                    (self.tangent_twists(&program, &q), system.displacement(&q))
-                    && d == dof
+                if let (Some((t, d)), Ok(g)) = (
+                    self.tangent_twists(system, &program, &q),
+                    system.displacement(&q),
+                ) && d == dof
                 {
                     spans.push(t);
                     poses.push(g);
@@ -329,7 +337,12 @@ impl Manipulator {
 
     /// The platform's twists (dimensionless, [`crate::mechanism::Mechanism::unitless_twists`])
     /// along the tangent space of the constraint variety at `p`, and its dimension.
-    fn tangent_twists(&self, program: &Program, p: &[f64]) -> Option<(DMatrix<f64>, usize)> {
+    fn tangent_twists(
+        &self,
+        system: &PositionSystem,
+        program: &Program,
+        p: &[f64],
+    ) -> Option<(DMatrix<f64>, usize)> {
         let null = tangent_space(program, p)?;
         let dof = null.ncols();
         let h = 1e-6;
@@ -341,7 +354,8 @@ impl Manipulator {
                     .enumerate()
                     .map(|(i, x)| x + sign * h * null[(i, k)])
                     .collect();
-                let s: [f64; 8] = q[..8].try_into().ok()?;
+                let z: Vec<C64> = q.iter().map(|v| C64::new(*v, 0.0)).collect();
+                let s = system.study(&z)?.map(|c| c.re);
                 study::to_displacement(&study::normalise(&s).ok()?, 1e-6).ok()
             };
             let (plus, minus) = (shifted(1.0)?, shifted(-1.0)?);
@@ -410,13 +424,21 @@ fn real_slices(
 /// The point of the free-input variety of an assembly `p` at the given inputs: the Study
 /// parameters, then `tan(δ/2)` of each input's displacement (0 for those not given).
 fn released_point(
+    fixed: &PositionSystem,
     free: &PositionSystem,
     p: &[f64],
     given: &[(usize, f64)],
     actuators: usize,
 ) -> Option<Vec<f64>> {
-    let mut q = p[..8].to_vec();
-    q.resize(free.system().nvars(), 0.0);
+    // The unknowns both systems share (the Study parameters, the joints of a block's members)
+    // by name; the free inputs' tangents below.
+    let names = fixed.system().variables();
+    let mut q: Vec<f64> = free
+        .system()
+        .variables()
+        .iter()
+        .map(|v| names.iter().position(|n| n == v).map_or(0.0, |k| p[k]))
+        .collect();
     for a in 0..actuators {
         let delta = given.iter().find(|(i, _)| *i == a).map_or(0.0, |(_, v)| *v);
         // A free input that is a passive joint of its leg has no variable to set.

@@ -360,6 +360,13 @@ pub struct PositionSystem {
     /// The members of a block of the body tree, each with its Study parameters relative to the
     /// root as polynomials of the system's unknowns.
     members: Vec<(usize, StudyPolys)>,
+    /// For each leg, the body it starts on (`None`: the block's parent; else an index into
+    /// [`Manipulator::bodies`]) and the body it ends on.
+    ends: Vec<(Option<usize>, usize)>,
+    /// For a planar mechanism, the plane's normal `n` and two unit vectors `u`, `v` across it:
+    /// the root's Study parameters are then `x = (s0, s1 n)`, `y = (0, s2 u + s3 v)` in the
+    /// system's first four unknowns ([`Self::study`]).
+    planar: Option<[Vector3<f64>; 3]>,
 }
 
 impl PositionSystem {
@@ -407,12 +414,66 @@ impl PositionSystem {
     /// Not eight numbers ([`study::StudyError::NotFinite`] stands for that too), or parameters
     /// that are no displacement ([`study::StudyError`]).
     pub fn displacement(&self, solution: &[f64]) -> Result<Displacement, study::StudyError> {
-        let s: [f64; 8] = solution
-            .get(..8)
-            .ok_or(study::StudyError::NotFinite)?
-            .try_into()
-            .map_err(|_| study::StudyError::NotFinite)?;
-        study::to_displacement(&s, study::QUADRIC_TOLERANCE)
+        let z: Vec<crate::poly::C64> = solution
+            .iter()
+            .map(|v| crate::poly::C64::new(*v, 0.0))
+            .collect();
+        let s = self.study(&z).ok_or(study::StudyError::NotFinite)?;
+        study::to_displacement(&s.map(|c| c.re), study::QUADRIC_TOLERANCE)
+    }
+
+    /// The Study parameters `x0 … y3` of the root's frame at a point of the system (complex or
+    /// real): its first eight unknowns, or for a planar mechanism the embedding of its first
+    /// four (`x = (s0, s1 n)`, `y = (0, s2 u + s3 v)`); `None` for a point too short.
+    #[must_use]
+    pub fn study(&self, point: &[crate::poly::C64]) -> Option<[crate::poly::C64; 8]> {
+        match &self.planar {
+            None => point.get(..8)?.try_into().ok(),
+            Some([n, u, v]) => {
+                let s = point.get(..4)?;
+                let xn = |k: usize| s[1] * n[k];
+                let yv = |k: usize| s[2] * u[k] + s[3] * v[k];
+                Some([
+                    s[0],
+                    xn(0),
+                    xn(1),
+                    xn(2),
+                    crate::poly::C64::new(0.0, 0.0),
+                    yv(0),
+                    yv(1),
+                    yv(2),
+                ])
+            }
+        }
+    }
+
+    /// The Study parameters of the block's members relative to its root at a point of the
+    /// system (complex or real): each member (an index into [`Manipulator::bodies`]) with its
+    /// eight parameters; empty for a block of one body.
+    #[must_use]
+    pub fn member_study(&self, point: &[crate::poly::C64]) -> Vec<(usize, [crate::poly::C64; 8])> {
+        self.members
+            .iter()
+            .map(|(b, g)| (*b, std::array::from_fn(|k| g[k].eval(point))))
+            .collect()
+    }
+
+    /// Whether the point (complex or real) puts a body of the block — its root, or a member
+    /// through its joints — on the null cone `x0² + x1² + x2² + x3² = 0` (to `1e-8` of
+    /// `Σ |x_k|²`): the equations hold there without the point being a displacement (a joint's
+    /// `tan(θ/2) = ±i`, say).
+    #[must_use]
+    pub fn on_null_cone(&self, point: &[crate::poly::C64]) -> bool {
+        let null = |x: &[crate::poly::C64]| {
+            let delta: crate::poly::C64 = x[..4].iter().map(|c| c * c).sum();
+            let size: f64 = x[..4].iter().map(crate::poly::C64::norm_sqr).sum();
+            delta.norm() <= 1e-8 * size
+        };
+        self.study(point).is_some_and(|x| null(&x))
+            || self.members.iter().any(|(_, g)| {
+                let x: Vec<crate::poly::C64> = g[..4].iter().map(|p| p.eval(point)).collect();
+                null(&x)
+            })
     }
 
     /// Whether the system is a block with members (bodies joined to its root by joints whose
@@ -448,72 +509,104 @@ impl PositionSystem {
     /// The solution vector of the platform pose `pose` on this system's chart, `None` when the
     /// chart misses it ([`Chart::representative`]).
     #[must_use]
-    pub fn solution_of(&self, pose: &Displacement) -> Option<[f64; 8]> {
-        self.chart.representative(&study::from_displacement(pose))
+    pub fn solution_of(&self, pose: &Displacement) -> Option<Vec<f64>> {
+        let s = self.chart.representative(&study::from_displacement(pose))?;
+        Some(match &self.planar {
+            None => s.to_vec(),
+            Some([n, u, v]) => {
+                let xv = Vector3::new(s[1], s[2], s[3]);
+                let yv = Vector3::new(s[5], s[6], s[7]);
+                vec![s[0], xv.dot(n), yv.dot(u), yv.dot(v)]
+            }
+        })
     }
 
     /// Each leg's residuals at the platform pose `pose`: zero for every leg exactly when the
     /// pose is an assembly at the given inputs (free inputs at their reference values).
     #[must_use]
     pub fn leg_residuals(&self, pose: &Displacement) -> Vec<LegResidual> {
-        self.legs
-            .iter()
-            .map(|c| {
-                let b = pose.transform_point(&Point3::from(c.platform)).coords;
-                let moving = c.platform_axis.map(|m| pose.rotation * m);
-                let between = |n: Vector3<f64>, m: Vector3<f64>| n.dot(&m).clamp(-1.0, 1.0).acos();
-                let angle = match c.kind {
-                    LegKind::Planar
-                    | LegKind::PlanarDistance
-                    | LegKind::Parallel
-                    | LegKind::Revolute => c.axis.zip(moving).map(|(n, m)| between(n, m)),
-                    LegKind::SphericalAngle => c
-                        .axis
-                        .zip(moving)
-                        .zip(c.cosine)
-                        .map(|((n, m), cos)| between(n, m) - cos.clamp(-1.0, 1.0).acos()),
-                    _ => None,
-                };
-                let plane = match c.kind {
-                    LegKind::RevoluteSpherical
-                    | LegKind::Plane
-                    | LegKind::Planar
-                    | LegKind::PlanarDistance => c.axis.map(|n| n.dot(&(b - c.base))),
-                    LegKind::MovingPlane => c.axis.map(|m| (pose.rotation * m).dot(&(c.base - b))),
-                    LegKind::SphericalRevolute => {
-                        c.axis.map(|m| (pose.rotation * m).dot(&(c.base - b)))
-                    }
-                    LegKind::CoplanarDistance => c.axis.zip(c.platform_axis).map(|(u, n)| {
-                        let normal = u.cross(&(pose.rotation * n));
-                        let norm = normal.norm();
-                        if norm > super::AXIS_TOLERANCE {
-                            (b - c.base).dot(&normal) / norm
-                        } else {
-                            0.0
-                        }
-                    }),
-                    _ => None,
-                };
-                let distance = match c.kind {
-                    LegKind::Free | LegKind::Plane | LegKind::MovingPlane | LegKind::Parallel => {
-                        0.0
-                    }
-                    LegKind::PlanarDistance => {
-                        // The distance within the plane of motion (normal to the axis).
-                        let n = c.axis.unwrap_or_default();
-                        let d = b - c.base;
-                        (d - n * n.dot(&d)).norm() - c.length
-                    }
-                    _ => (b - c.base).norm() - c.length,
-                };
-                LegResidual {
-                    leg: c.leg,
-                    distance,
-                    plane,
-                    angle,
-                }
-            })
-            .collect()
+        self.legs.iter().map(|c| leg_residual(c, pose)).collect()
+    }
+
+    /// Each leg's residuals at the real solution `solution` of the system: every leg's at the
+    /// displacement of its last body relative to its first (or to the block's parent), the
+    /// block's members placed by their joints' values; `None` where the solution is no
+    /// displacement.
+    #[must_use]
+    pub fn residuals_at(&self, solution: &[f64]) -> Option<Vec<LegResidual>> {
+        let root = self.displacement(solution).ok()?;
+        let members = self.member_frames(solution).ok()?;
+        let of = |body: usize| {
+            members
+                .iter()
+                .find(|(b, _)| *b == body)
+                .map_or_else(crate::spatial::identity, |(_, g)| *g)
+        };
+        Some(
+            self.legs
+                .iter()
+                .zip(&self.ends)
+                .map(|(c, &(start, end))| {
+                    let pose = match start {
+                        None => root * of(end),
+                        Some(s) => of(s).inverse() * of(end),
+                    };
+                    leg_residual(c, &pose)
+                })
+                .collect(),
+        )
+    }
+}
+
+/// One leg's residuals at the displacement `pose` of its last body relative to its first
+/// ([`PositionSystem::leg_residuals`]).
+fn leg_residual(c: &LegConstraint, pose: &Displacement) -> LegResidual {
+    let b = pose.transform_point(&Point3::from(c.platform)).coords;
+    let moving = c.platform_axis.map(|m| pose.rotation * m);
+    let between = |n: Vector3<f64>, m: Vector3<f64>| n.dot(&m).clamp(-1.0, 1.0).acos();
+    let angle = match c.kind {
+        LegKind::Planar | LegKind::PlanarDistance | LegKind::Parallel | LegKind::Revolute => {
+            c.axis.zip(moving).map(|(n, m)| between(n, m))
+        }
+        LegKind::SphericalAngle => c
+            .axis
+            .zip(moving)
+            .zip(c.cosine)
+            .map(|((n, m), cos)| between(n, m) - cos.clamp(-1.0, 1.0).acos()),
+        _ => None,
+    };
+    let plane = match c.kind {
+        LegKind::RevoluteSpherical | LegKind::Plane | LegKind::Planar | LegKind::PlanarDistance => {
+            c.axis.map(|n| n.dot(&(b - c.base)))
+        }
+        LegKind::MovingPlane => c.axis.map(|m| (pose.rotation * m).dot(&(c.base - b))),
+        LegKind::SphericalRevolute => c.axis.map(|m| (pose.rotation * m).dot(&(c.base - b))),
+        LegKind::CoplanarDistance => c.axis.zip(c.platform_axis).map(|(u, n)| {
+            let normal = u.cross(&(pose.rotation * n));
+            let norm = normal.norm();
+            if norm > super::AXIS_TOLERANCE {
+                (b - c.base).dot(&normal) / norm
+            } else {
+                0.0
+            }
+        }),
+        _ => None,
+    };
+    let distance = match c.kind {
+        LegKind::Free | LegKind::Plane | LegKind::MovingPlane | LegKind::Parallel => 0.0,
+        LegKind::PlanarDistance => {
+            // The distance within the plane of motion (normal to the axis).
+            let n = c.axis.unwrap_or_default();
+            let d = b - c.base;
+            (d - n * n.dot(&d)).norm() - c.length
+        }
+        _ => (b - c.base).norm() - c.length,
+    };
+    LegResidual {
+        leg: c.leg,
+        distance,
+        plane,
+        angle,
     }
 }
 
@@ -708,20 +801,18 @@ impl Manipulator {
         let nr = nb + 8;
         let study = |g: &Displacement| study_constant(nr, &study::from_displacement(g));
         let member_study = self.member_studies(node, &value, &joint_variable, nr);
+        // A body's Study parameters relative to the root (the identity for the root).
         let of_body = |k: usize| -> StudyPolys {
-            if k == node.body {
-                study(&crate::spatial::identity())
-            } else {
-                member_study
-                    .iter()
-                    .find(|(b, _)| *b == k)
-                    .map_or_else(|| study(&crate::spatial::identity()), |(_, g)| g.clone())
-            }
+            member_study
+                .iter()
+                .find(|(b, _)| *b == k)
+                .map_or_else(|| study(&crate::spatial::identity()), |(_, g)| g.clone())
         };
         let root = StudyVariables::new(nr, [0, 1, 2, 3, 4, 5, 6, 7]);
         let root_study: StudyPolys = std::array::from_fn(|k| Poly::variable(nr, k));
         let virtual_study = StudyVariables::new(nr, std::array::from_fn(|k| nb + k));
         let mut constraints = Vec::new();
+        let mut ends = Vec::new();
         let mut equations = Vec::new();
         for &i in &legs {
             let leg = &self.legs[i];
@@ -758,19 +849,33 @@ impl Manipulator {
                 equations.push(e);
             }
             constraints.push(c);
+            ends.push((
+                (!external).then(|| index(leg.from).unwrap_or(node.body)),
+                to,
+            ));
         }
         equations.push(root.quadric());
         equations.push(root.chart(chart));
         let map: Vec<usize> = (0..nr).map(|k| if k < nb { k } else { 0 }).collect();
-        let equations: Vec<Poly> = equations
+        let mut equations: Vec<Poly> = equations
             .into_iter()
             .map(|e| e.relabel(nb, &map))
             .filter(|e| !e.is_empty())
             .collect();
-        let members = member_study
+        let mut members: Vec<(usize, StudyPolys)> = member_study
             .into_iter()
             .map(|(b, g)| (b, g.map(|p| p.relabel(nb, &map))))
             .collect();
+        // A planar mechanism: the root's displacement in the plane's group, four unknowns.
+        let planar = self.planar_frame(node);
+        if let Some(frame) = &planar {
+            equations = planar_restriction(&equations, frame);
+            members = shifted_members(members, nb);
+            names.splice(0..8, planar_names(frame));
+            for f in &mut free {
+                f.variable -= 4;
+            }
+        }
         Ok(PositionSystem {
             system: System::new(names, equations).expect("distinct names, equations in their ring"),
             chart: *chart,
@@ -778,7 +883,50 @@ impl Manipulator {
             inputs: free.iter().map(|f| f.variable).collect(),
             free,
             members,
+            ends,
+            planar,
         })
+    }
+
+    /// The plane of a planar block: when every joint of the mechanism is a revolute parallel to
+    /// one `n` or a slider across it, and the root's frame at the reference is a planar
+    /// displacement of its parent's, every displacement of the root relative to its parent lies
+    /// in the planar group `G(n)`: `[n, u, v]` in the parent's frame (`u`, `v` across `n`).
+    fn planar_frame(&self, node: &BodyNode) -> Option<[Vector3<f64>; 3]> {
+        let joints = self.mechanism.joints();
+        let n = joints
+            .iter()
+            .find(|j| j.kind == Primitive::R)?
+            .axis
+            .normalize();
+        let planar = joints.iter().all(|j| {
+            let a = j.axis.normalize();
+            match j.kind {
+                Primitive::R => a.cross(&n).norm() <= super::AXIS_TOLERANCE,
+                Primitive::P => a.dot(&n).abs() <= super::AXIS_TOLERANCE,
+            }
+        });
+        if !planar {
+            return None;
+        }
+        let parent = node
+            .parent
+            .map_or_else(crate::spatial::identity, |p| self.bodies[p].frame);
+        let n_local = parent.rotation.inverse() * n;
+        let relative = parent.inverse() * self.bodies[node.body].frame;
+        let turned = (relative.rotation * n_local - n_local).norm() > super::AXIS_TOLERANCE;
+        let lifted =
+            relative.translation.vector.dot(&n_local).abs() > 1e-9 * self.mechanism.scale();
+        if turned || lifted {
+            return None;
+        }
+        let u = if n_local.x.abs() < 0.9 {
+            Vector3::x().cross(&n_local).cross(&n_local).normalize() * -1.0
+        } else {
+            Vector3::y().cross(&n_local).cross(&n_local).normalize() * -1.0
+        };
+        let v = n_local.cross(&u);
+        Some([n_local, u, v])
     }
 
     /// One unknown per one-joint leg of the members' paths in `node` whose joint is not given
@@ -1116,6 +1264,70 @@ impl Manipulator {
         }
         Ok(c)
     }
+}
+
+/// The members' Study parameters (polynomials in a ring of `nb` whose first eight unknowns,
+/// the root's, they do not involve) in the ring of a planar block, four unknowns fewer.
+fn shifted_members(members: Vec<(usize, StudyPolys)>, nb: usize) -> Vec<(usize, StudyPolys)> {
+    let map: Vec<usize> = (0..nb).map(|k| if k < 8 { 0 } else { k - 4 }).collect();
+    members
+        .into_iter()
+        .map(|(b, g)| (b, g.map(|p| p.relabel(nb - 4, &map))))
+        .collect()
+}
+
+/// The names of a planar block's four Study unknowns (`x = (x0, x3 n)`, `y = (0, y1 u + y2 v)`
+/// along the frame `[n, u, v]`): `x0, x3, y1, y2` for `n = z` (`u = x`, `v = y`), where they are
+/// the Study parameters themselves; `x0, xn, yu, yv` otherwise.
+fn planar_names(frame: &[Vector3<f64>; 3]) -> Vec<String> {
+    let [n, u, _] = frame;
+    let names = if (n - Vector3::z()).norm() < 1e-12 && (u - Vector3::x()).norm() < 1e-12 {
+        ["x0", "x3", "y1", "y2"]
+    } else {
+        ["x0", "xn", "yu", "yv"]
+    };
+    names.iter().map(|s| (*s).to_string()).collect()
+}
+
+/// The equations with the root's Study parameters (the first eight unknowns) restricted to the
+/// planar group of `frame` (`x = (s0, s1 n)`, `y = (0, s2 u + s3 v)`, `s` four new unknowns
+/// placed after the others, whose indices are kept): the equations that vanish on the group
+/// (the Study quadric, the axis and plane conditions of planar legs) are dropped — those whose
+/// coefficients all fall below `1e-12` of the largest before the restriction.
+fn planar_restriction(equations: &[Poly], frame: &[Vector3<f64>; 3]) -> Vec<Poly> {
+    let [n, u, v] = frame;
+    let nb = equations.first().map_or(0, Poly::nvars);
+    let ring = nb + 4;
+    let s = |k: usize| Poly::variable(ring, nb + k);
+    let zero = Poly::zero(ring);
+    let study: [Poly; 8] = [
+        s(0),
+        s(1) * n.x,
+        s(1) * n.y,
+        s(1) * n.z,
+        zero,
+        s(2) * u.x + s(3) * v.x,
+        s(2) * u.y + s(3) * v.y,
+        s(2) * u.z + s(3) * v.z,
+    ];
+    let largest = |p: &Poly| p.terms().map(|(_, c)| c.norm()).fold(0.0, f64::max);
+    // Variables 0..8 leave; the four new ones take their place at the front.
+    let map: Vec<usize> = (0..ring)
+        .map(|k| match k {
+            k if k < 8 => 0,
+            k if k < nb => k - 4,
+            k => k - nb,
+        })
+        .collect();
+    equations
+        .iter()
+        .filter_map(|e| {
+            let before = largest(e);
+            let widened = e.relabel(ring, &(0..nb).collect::<Vec<_>>());
+            let restricted = (0..8).fold(widened, |p, k| p.substitute(k, &study[k]));
+            (largest(&restricted) > 1e-12 * before).then(|| restricted.relabel(nb - 4, &map))
+        })
+        .collect()
 }
 
 /// The longest run of concurrent revolutes (at most three) among `lines` taken in the order of
