@@ -362,3 +362,143 @@ fn the_committed_planar_3_rrr_has_the_real_assemblies_of_the_scan() {
     let (_, real) = assemblies(&m, 1);
     assert_same_real(&real, &scanned, 1.0);
 }
+
+/// The description at `path` (under the repository) with every length multiplied by `k`: the
+/// points of both formats (`position`, `point`, `base`, `platform` when a point, `first`,
+/// `last`, `points`); orientations and axes unchanged.
+fn scaled_file(path: &str, k: f64) -> Manipulator {
+    fn scale(v: &mut serde_json::Value, k: f64) {
+        match v {
+            serde_json::Value::Object(map) => {
+                for (key, value) in map.iter_mut() {
+                    let point = |v: &serde_json::Value| {
+                        v.as_array().is_some_and(|a| {
+                            a.len() == 3 && a.iter().all(serde_json::Value::is_number)
+                        })
+                    };
+                    match key.as_str() {
+                        "position" | "point" | "base" | "platform" | "first" | "last"
+                            if point(value) =>
+                        {
+                            for x in value.as_array_mut().unwrap() {
+                                *x = json!(x.as_f64().unwrap() * k);
+                            }
+                        }
+                        "points" => {
+                            for p in value.as_array_mut().unwrap() {
+                                for x in p.as_array_mut().unwrap() {
+                                    *x = json!(x.as_f64().unwrap() * k);
+                                }
+                            }
+                        }
+                        _ => scale(value, k),
+                    }
+                }
+            }
+            serde_json::Value::Array(items) => items.iter_mut().for_each(|i| scale(i, k)),
+            _ => {}
+        }
+    }
+    let file = format!("{}/../../{path}", env!("CARGO_MANIFEST_DIR"));
+    let mut v: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(file).unwrap()).unwrap();
+    scale(&mut v, k);
+    Manipulator::from_json(&v.to_string()).unwrap()
+}
+
+/// Each block's count of complex and real assemblies at the reference inputs, solved with
+/// `seed`.
+fn block_counts(m: &Manipulator, seed: u64) -> Vec<(usize, usize)> {
+    let inputs: Vec<(usize, f64)> = (0..m.actuators().len()).map(|a| (a, 0.0)).collect();
+    m.body_blocks(&InputValues::Given(&inputs), &Chart::random_linear(seed))
+        .unwrap()
+        .iter()
+        .map(|b| {
+            let ps = &b.system;
+            let settings = SolveSettings {
+                seed,
+                ..SolveSettings::default()
+            };
+            let r = solve_overdetermined(ps.system(), &settings).unwrap();
+            let found: Vec<_> = r
+                .solutions()
+                .filter(|s| s.regular && !ps.on_null_cone(&s.x))
+                .collect();
+            (found.len(), found.iter().filter(|s| s.real).count())
+        })
+        .collect()
+}
+
+#[test]
+fn every_assembly_count_is_the_same_in_other_length_units_and_for_five_seeds() {
+    // A unit change multiplies every length by 10^±3 and changes no count; nor may the seed of
+    // the charts and of the solve. The stack of paper 002 (two blocks), the spherical 3-RRR
+    // (randomised) and the planar 3-RRR (the planar restriction).
+    for (path, expected) in [
+        (
+            "mechanisms/multibody/3-rps-3-spr.json",
+            vec![(16, 8), (16, 8)],
+        ),
+        ("mechanisms/3-rrr-spherical.json", vec![(8, 2)]),
+        ("mechanisms/3-rrr-planar.json", vec![(2, 2)]),
+    ] {
+        for k in [1e-3, 1.0, 1e3] {
+            assert_eq!(
+                block_counts(&scaled_file(path, k), 1),
+                expected,
+                "{path} ×{k}"
+            );
+        }
+        for seed in 2..=5 {
+            assert_eq!(
+                block_counts(&scaled_file(path, 1.0), seed),
+                expected,
+                "{path} seed {seed}"
+            );
+        }
+    }
+}
+
+#[test]
+fn operation_modes_are_the_same_in_other_length_units() {
+    // The 3-RPS's two modes (Schadlbauer et al. 2014) and the stack's two per block, in
+    // millimetres and kilometres: the same dimensions and degrees.
+    for path in [
+        "mechanisms/3-rps.json",
+        "mechanisms/multibody/3-rps-3-spr.json",
+    ] {
+        let signature = |k: f64| -> Vec<Vec<(usize, usize)>> {
+            scaled_file(path, k)
+                .block_operation_modes_with_progress(
+                    &InputValues::Free,
+                    &OperationModeSettings::default(),
+                    &mut |_| {},
+                )
+                .unwrap()
+                .iter()
+                .map(|b| {
+                    let mut s: Vec<(usize, usize)> = b
+                        .modes
+                        .components
+                        .iter()
+                        .map(|c| (c.dimension, c.degree))
+                        .collect();
+                    s.sort_unstable();
+                    s
+                })
+                .collect()
+        };
+        // Two modes of dimension 3 per block (Schadlbauer et al. 2014; paper 002 §5); their
+        // degrees must not move with the unit.
+        let metres = signature(1.0);
+        assert!(
+            metres
+                .iter()
+                .all(|b| b.len() == 2 && b.iter().all(|(d, _)| *d == 3)),
+            "{path}: {metres:?}"
+        );
+        for k in [1e-3, 1e3] {
+            assert_eq!(signature(k), metres, "{path} ×{k}");
+        }
+    }
+}
