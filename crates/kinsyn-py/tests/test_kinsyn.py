@@ -206,6 +206,21 @@ def test_six_ups_assemblies_are_the_cli_s():
     )
 
 
+def test_a_stack_of_two_modules_has_the_products_of_their_assemblies():
+    # Paper 002's 3-RPS-3-SPR: each module has the 3-RPS's 16 assemblies (Schadlbauer, Walter
+    # & Husty 2014; the 3-SPR is its inversion), the stack their 16 × 16 pairs, each real one
+    # with both bodies' poses; the end-effector's pose is that of the last body.
+    f = UPS6.parent / "multibody" / "3-rps-3-spr.json"
+    s = kinsyn.Manipulator.from_file(f).assemblies()
+    blocks = s.report["blocks"]
+    assert [b["nonsingular"] for b in blocks] == [16, 16]
+    assert s.nonsingular == 256
+    assert len(s.real) == blocks[0]["real"] * blocks[1]["real"]
+    for a in s.report["real_assemblies"]:
+        assert [b["body"] for b in a["bodies"]] == ["coupler", "end-effector"]
+        assert a["bodies"][1]["pose"] == a["pose"]
+
+
 # --- polynomial systems ---------------------------------------------------------------------
 
 
