@@ -194,3 +194,27 @@ fn the_configurable_4_rrr_with_free_inputs_has_the_rhombus_three_modes() {
         assert!(c["real_points"].as_u64().unwrap() > 0);
     }
 }
+
+#[test]
+#[ignore = "exhaustive: the distal block's quadrics of revolution, about 15 s"]
+fn the_3_rps_3_rps_with_free_inputs_has_the_mobility_of_the_local_analysis() {
+    // Its distal RPS legs have their sliders off the planes normal to their revolutes, so each
+    // keeps its S centre on a quadric of revolution: one block of three such legs, whose
+    // operation mode's dimension, added to the proximal block's, must be the mobility that
+    // the local analysis (screw theory) gives.
+    let f = "mechanisms/multibody/3-rps-3-rps.json";
+    let mobility = local_mobility(f);
+    let v = json(&["components", f, "--free-inputs", "--json"]);
+    let products = v["components"].as_array().unwrap();
+    assert!(!products.is_empty());
+    assert!(
+        products
+            .iter()
+            .any(|c| c["dimension"].as_u64() == Some(mobility))
+    );
+    assert!(
+        products
+            .iter()
+            .all(|c| c["dimension"].as_u64() <= Some(mobility))
+    );
+}

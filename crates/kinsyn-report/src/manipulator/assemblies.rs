@@ -356,7 +356,7 @@ impl AllAssemblies {
     /// The report of `kinsyn analyze --all-assemblies --json` for `m`, with the leg `warnings`.
     #[must_use]
     pub fn report(&self, m: &Manipulator, warnings: &[String]) -> AssembliesReport {
-        let blocks: Vec<BlockReport> = self.blocks.iter().map(|b| b.report(m)).collect();
+        let blocks: Vec<BlockReport> = self.blocks.iter().map(|b| b.block_report(m)).collect();
         let sum = |f: &dyn Fn(&BlockReport) -> usize| blocks.iter().map(f).sum::<usize>();
         let product = |f: &dyn Fn(&BlockReport) -> usize| {
             blocks
@@ -419,7 +419,7 @@ impl AllAssemblies {
 
 impl BlockAssemblies {
     /// This block's part of the report.
-    fn report(&self, m: &Manipulator) -> BlockReport {
+    fn block_report(&self, m: &Manipulator) -> BlockReport {
         let (report, system, solved) = (&self.report, &self.system, &self.solved);
         BlockReport {
             body: self.body.clone(),

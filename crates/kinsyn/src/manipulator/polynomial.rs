@@ -227,6 +227,12 @@ pub enum LegKind {
     /// A spherical group at the base, a passive slider across the platform revolute's axis
     /// (an SPR with its slider free): `(R m)·(A − B) = 0` only.
     MovingPlane,
+    /// A revolute at the base (axis `n` through `A`), a passive slider not across it
+    /// (direction `d` at the reference, turning with the revolute) and a spherical group at
+    /// the platform: `B` stays on the quadric of revolution swept by the slider's line,
+    /// `|B − A|² = |b₀|² + 2 (b₀·d / c) h + (|d|² / c²) h²` with `h = n·(B − A)`,
+    /// `c = n·d` and `b₀ = B − A` at the reference (a cone when the line meets the axis).
+    Cone,
 }
 
 impl LegKind {
@@ -247,6 +253,7 @@ impl LegKind {
             Self::Free => "none (passive slider)",
             Self::Plane => "plane",
             Self::MovingPlane => "moving plane",
+            Self::Cone => "quadric of revolution",
         }
     }
 }
@@ -276,6 +283,10 @@ pub struct LegConstraint {
     /// `cos α`, the angle between the fixed and the moving axis, for
     /// [`LegKind::SphericalAngle`].
     pub cosine: Option<f64>,
+    /// For [`LegKind::Cone`], the coefficients `[k0, k1, k2]` of the quadric of revolution
+    /// `|B − A|² = k0 + k1 h + k2 h²`, `h = n·(B − A)`: `k0 = |b₀|²`, `k1 = 2 b₀·d / c`,
+    /// `k2 = |d|² / c²` (module documentation of the kind).
+    pub revolution: Option<[f64; 3]>,
     /// The free input that turns `base` and `axis` (ground frame), with
     /// [`InputValues::Free`]; they are given at its reference value.
     pub turned_by: Option<FreeRevolute>,
@@ -314,7 +325,7 @@ impl LegConstraint {
     pub fn equations(&self) -> usize {
         match self.kind {
             LegKind::Free => 0,
-            LegKind::Distance | LegKind::Plane | LegKind::MovingPlane => 1,
+            LegKind::Distance | LegKind::Plane | LegKind::MovingPlane | LegKind::Cone => 1,
             LegKind::RevoluteSpherical
             | LegKind::SphericalRevolute
             | LegKind::CoplanarDistance
@@ -594,6 +605,13 @@ fn leg_residual(c: &LegConstraint, pose: &Displacement) -> LegResidual {
     };
     let distance = match c.kind {
         LegKind::Free | LegKind::Plane | LegKind::MovingPlane | LegKind::Parallel => 0.0,
+        LegKind::Cone => {
+            // |B − A| against the quadric of revolution's radius at B's height.
+            let n = c.axis.unwrap_or_default();
+            let [k0, k1, k2] = c.revolution.unwrap_or_default();
+            let h = n.dot(&(b - c.base));
+            (b - c.base).norm() - (k0 + k1 * h + k2 * h * h).max(0.0).sqrt()
+        }
         LegKind::PlanarDistance => {
             // The distance within the plane of motion (normal to the axis).
             let n = c.axis.unwrap_or_default();
@@ -1213,11 +1231,7 @@ impl Manipulator {
             (2 | 3, 2 | 3, Some(a), Some(_), Some(_)) if kb + kp > 4 => {
                 constraint(LegKind::Free, a, a)
             }
-            (1, 3, Some(_), Some(b), Some(d)) if across(&d, &lines[0].direction) => {
-                let mut c = constraint(LegKind::Plane, foot(lines[0], &b), b);
-                c.axis = Some(lines[0].direction);
-                c
-            }
+            (1, 3, Some(_), Some(b), Some(d)) => revolute_slider(i, frame, lines[0], &b, &d),
             (3, 1, Some(a), Some(_), Some(d)) if across(&d, &lines[n - 1].direction) => {
                 let line = lines[n - 1];
                 let mut c = constraint(LegKind::MovingPlane, a, foot(line, &a));
@@ -1330,6 +1344,35 @@ fn planar_restriction(equations: &[Poly], frame: &[Vector3<f64>; 3]) -> Vec<Poly
         .collect()
 }
 
+/// Leg `i`'s constraint as an R–P–S: the revolute `line` at the base, a passive slider of
+/// direction `d` after it, the spherical group's centre `b` (ground frame, at the
+/// configuration that carries the platform frame `frame`): [`LegKind::Plane`] with the slider
+/// across the axis, else [`LegKind::Cone`] with its quadric of revolution.
+fn revolute_slider(
+    i: usize,
+    frame: &Displacement,
+    line: &Line,
+    b: &Vector3<f64>,
+    d: &Vector3<f64>,
+) -> LegConstraint {
+    let (n, d) = (line.direction, d.normalize());
+    let cn = n.dot(&d);
+    let across = cn.abs() <= super::AXIS_TOLERANCE;
+    let kind = if across {
+        LegKind::Plane
+    } else {
+        LegKind::Cone
+    };
+    let a = foot(line, b);
+    let mut c = constraint_of(i, frame, kind, a, *b);
+    c.axis = Some(n);
+    if !across {
+        let b0 = b - a;
+        c.revolution = Some([b0.norm_squared(), 2.0 * b0.dot(&d) / cn, 1.0 / (cn * cn)]);
+    }
+    c
+}
+
 /// The longest run of concurrent revolutes (at most three) among `lines` taken in the order of
 /// `range`, from its start: how many, and their common point.
 fn end_group(
@@ -1370,6 +1413,7 @@ fn constraint_of(
         axis: None,
         platform_axis: None,
         cosine: None,
+        revolution: None,
         turned_by: None,
     }
 }
@@ -1481,8 +1525,25 @@ fn fixed_leg_equations(s: &StudyVariables, c: &LegConstraint) -> Vec<Poly> {
         }
         LegKind::Free => Vec::new(),
         LegKind::Plane => vec![s.moving_point_on_fixed_plane(&c.platform, &c.base, &axis)],
+        LegKind::Cone => vec![cone_equation(s, c)],
         LegKind::MovingPlane => vec![s.fixed_point_on_moving_plane(&c.base, &c.platform, &axis)],
     }
+}
+
+/// The equation of a [`LegKind::Cone`] leg (degree 4): with `D = Δ |B − A|²` (the distance
+/// quadric at length 0, [`StudyVariables::distance`], on the Study quadric) and
+/// `H = Δ n·(B − A)` (the plane condition), `Δ D − k2 H² − k1 Δ H − k0 Δ² = 0`: the leg's
+/// relation `|B − A|² = k0 + k1 h + k2 h²` times `Δ²`. (`B = A + R(θ)(b₀ + s d)`: `h = s c`,
+/// `|B − A|² = |b₀|² + 2 s b₀·d + s² |d|²`, `s = h / c`.)
+fn cone_equation(s: &StudyVariables, c: &LegConstraint) -> Poly {
+    let n = c.axis.unwrap_or_default();
+    let [k0, k1, k2] = c.revolution.unwrap_or_default();
+    let delta = s.delta();
+    let h = s.moving_point_on_fixed_plane(&c.platform, &c.base, &n);
+    &delta * &s.distance(&c.base, &c.platform, 0.0)
+        - &h * &h * k2
+        - &delta * &h * k1
+        - &delta * &delta * k0
 }
 
 /// The turn of a free ground revolute (axis `n` through `p`, unknown `t = tan(θ/2)`) acting on
@@ -1614,6 +1675,16 @@ fn turned_leg_equations(s: &StudyVariables, c: &LegConstraint, turn: &Turn) -> V
             e
         }
         LegKind::Free => Vec::new(),
+        LegKind::Cone => {
+            // The relation times (w Δ)²: with D_w = w Δ |B − a'|² and H_w = w Δ n'·(B − a'),
+            // Δ w D_w − k2 H_w² − k1 Δ w H_w − k0 w² Δ².
+            let [k0, k1, k2] = c.revolution.unwrap_or_default();
+            let d_w = &w * &s.distance(&zero, b, 0.0) + &delta * &turn.norm_squared(a)
+                - dot(&turn.point(a), &s.point(b)) * 2.0;
+            let h_w = plane();
+            let dw = &delta * &w;
+            vec![&dw * &d_w - &h_w * &h_w * k2 - &dw * &h_w * k1 - &dw * &dw * k0]
+        }
         LegKind::SphericalRevolute | LegKind::MovingPlane => {
             // The plane condition is affine in the fixed point: F(a') = F(0) + (M_R m)·a'.
             let m = axis;
