@@ -233,6 +233,11 @@ pub enum LegKind {
     /// `|B − A|² = |b₀|² + 2 (b₀·d / c) h + (|d|² / c²) h²` with `h = n·(B − A)`,
     /// `c = n·d` and `b₀ = B − A` at the reference (a cone when the line meets the axis).
     Cone,
+    /// A spherical group at the base, a passive slider not across the platform revolute's
+    /// axis `m` and the revolute: the base point `A` stays on the platform's quadric of
+    /// revolution about `(B, R m)`, `|A − B|² = k0 + k1 h + k2 h²` with `h = (R m)·(A − B)`
+    /// ([`LegKind::Cone`] seen from the platform).
+    MovingCone,
 }
 
 impl LegKind {
@@ -254,6 +259,7 @@ impl LegKind {
             Self::Plane => "plane",
             Self::MovingPlane => "moving plane",
             Self::Cone => "quadric of revolution",
+            Self::MovingCone => "moving quadric of revolution",
         }
     }
 }
@@ -309,7 +315,10 @@ impl LegConstraint {
     pub fn in_frame(mut self, f: &Displacement) -> Self {
         let local = |p: &Vector3<f64>| f.inverse_transform_point(&Point3::from(*p)).coords;
         self.base = local(&self.base);
-        if !matches!(self.kind, LegKind::SphericalRevolute | LegKind::MovingPlane) {
+        if !matches!(
+            self.kind,
+            LegKind::SphericalRevolute | LegKind::MovingPlane | LegKind::MovingCone
+        ) {
             self.axis = self.axis.map(|n| f.rotation.inverse() * n);
         }
         self.turned_by = self.turned_by.map(|t| FreeRevolute {
@@ -325,7 +334,11 @@ impl LegConstraint {
     pub fn equations(&self) -> usize {
         match self.kind {
             LegKind::Free => 0,
-            LegKind::Distance | LegKind::Plane | LegKind::MovingPlane | LegKind::Cone => 1,
+            LegKind::Distance
+            | LegKind::Plane
+            | LegKind::MovingPlane
+            | LegKind::Cone
+            | LegKind::MovingCone => 1,
             LegKind::RevoluteSpherical
             | LegKind::SphericalRevolute
             | LegKind::CoplanarDistance
@@ -605,11 +618,15 @@ fn leg_residual(c: &LegConstraint, pose: &Displacement) -> LegResidual {
     };
     let distance = match c.kind {
         LegKind::Free | LegKind::Plane | LegKind::MovingPlane | LegKind::Parallel => 0.0,
-        LegKind::Cone => {
-            // |B − A| against the quadric of revolution's radius at B's height.
+        LegKind::Cone | LegKind::MovingCone => {
+            // |B − A| against the quadric of revolution's radius at the height h.
             let n = c.axis.unwrap_or_default();
             let [k0, k1, k2] = c.revolution.unwrap_or_default();
-            let h = n.dot(&(b - c.base));
+            let h = if c.kind == LegKind::Cone {
+                n.dot(&(b - c.base))
+            } else {
+                (pose.rotation * n).dot(&(c.base - b))
+            };
             (b - c.base).norm() - (k0 + k1 * h + k2 * h * h).max(0.0).sqrt()
         }
         LegKind::PlanarDistance => {
@@ -1218,8 +1235,6 @@ impl Manipulator {
                 )));
             }
         };
-        let across =
-            |d: &Vector3<f64>, axis: &Vector3<f64>| d.dot(axis).abs() <= super::AXIS_TOLERANCE;
         let refuse_groups = |extra: &str| {
             unsupported(format!(
                 "its passive joints form {} at the base and {} at the platform{extra}",
@@ -1232,12 +1247,7 @@ impl Manipulator {
                 constraint(LegKind::Free, a, a)
             }
             (1, 3, Some(_), Some(b), Some(d)) => revolute_slider(i, frame, lines[0], &b, &d),
-            (3, 1, Some(a), Some(_), Some(d)) if across(&d, &lines[n - 1].direction) => {
-                let line = lines[n - 1];
-                let mut c = constraint(LegKind::MovingPlane, a, foot(line, &a));
-                c.axis = Some(to_platform(&line.direction));
-                c
-            }
+            (3, 1, Some(a), Some(_), Some(d)) => slider_revolute(i, frame, lines[n - 1], &a, &d),
             (_, _, _, _, Some(_)) => {
                 return Err(refuse_groups(&format!(
                     " with a passive slider between{}",
@@ -1370,6 +1380,31 @@ fn revolute_slider(
         let b0 = b - a;
         c.revolution = Some([b0.norm_squared(), 2.0 * b0.dot(&d) / cn, 1.0 / (cn * cn)]);
     }
+    c
+}
+
+/// Leg `i`'s constraint as an S–P–R: the spherical group's centre `a` at the base, a passive
+/// slider of direction `d`, the platform's revolute `line` ([`revolute_slider`] seen from the
+/// platform): [`LegKind::MovingPlane`] with the slider across its axis, else
+/// [`LegKind::MovingCone`]; the axis in the platform frame.
+fn slider_revolute(
+    i: usize,
+    frame: &Displacement,
+    line: &Line,
+    a: &Vector3<f64>,
+    d: &Vector3<f64>,
+) -> LegConstraint {
+    let mut c = revolute_slider(i, frame, line, a, d);
+    c.base = *a;
+    c.platform = frame
+        .inverse_transform_point(&Point3::from(foot(line, a)))
+        .coords;
+    c.kind = if c.kind == LegKind::Plane {
+        LegKind::MovingPlane
+    } else {
+        LegKind::MovingCone
+    };
+    c.axis = Some(frame.rotation.inverse() * line.direction);
     c
 }
 
@@ -1525,24 +1560,32 @@ fn fixed_leg_equations(s: &StudyVariables, c: &LegConstraint) -> Vec<Poly> {
         }
         LegKind::Free => Vec::new(),
         LegKind::Plane => vec![s.moving_point_on_fixed_plane(&c.platform, &c.base, &axis)],
-        LegKind::Cone => vec![cone_equation(s, c)],
+        LegKind::Cone => vec![revolution_equation(
+            s,
+            c,
+            &s.moving_point_on_fixed_plane(&c.platform, &c.base, &axis),
+        )],
+        LegKind::MovingCone => vec![revolution_equation(
+            s,
+            c,
+            &s.fixed_point_on_moving_plane(&c.base, &c.platform, &axis),
+        )],
         LegKind::MovingPlane => vec![s.fixed_point_on_moving_plane(&c.base, &c.platform, &axis)],
     }
 }
 
-/// The equation of a [`LegKind::Cone`] leg (degree 4): with `D = Δ |B − A|²` (the distance
-/// quadric at length 0, [`StudyVariables::distance`], on the Study quadric) and
-/// `H = Δ n·(B − A)` (the plane condition), `Δ D − k2 H² − k1 Δ H − k0 Δ² = 0`: the leg's
+/// The equation of a [`LegKind::Cone`] or [`LegKind::MovingCone`] leg (degree 4): with
+/// `D = Δ |B − A|²` (the distance quadric at length 0, [`StudyVariables::distance`], on the
+/// Study quadric) and `h` the plane condition `H = Δ n·(B − A)` (or `Δ (R m)·(A − B)`),
+/// `Δ D − k2 H² − k1 Δ H − k0 Δ² = 0`: the leg's
 /// relation `|B − A|² = k0 + k1 h + k2 h²` times `Δ²`. (`B = A + R(θ)(b₀ + s d)`: `h = s c`,
 /// `|B − A|² = |b₀|² + 2 s b₀·d + s² |d|²`, `s = h / c`.)
-fn cone_equation(s: &StudyVariables, c: &LegConstraint) -> Poly {
-    let n = c.axis.unwrap_or_default();
+fn revolution_equation(s: &StudyVariables, c: &LegConstraint, h: &Poly) -> Poly {
     let [k0, k1, k2] = c.revolution.unwrap_or_default();
     let delta = s.delta();
-    let h = s.moving_point_on_fixed_plane(&c.platform, &c.base, &n);
     &delta * &s.distance(&c.base, &c.platform, 0.0)
-        - &h * &h * k2
-        - &delta * &h * k1
+        - h * h * k2
+        - &delta * h * k1
         - &delta * &delta * k0
 }
 
@@ -1682,6 +1725,16 @@ fn turned_leg_equations(s: &StudyVariables, c: &LegConstraint, turn: &Turn) -> V
             let d_w = &w * &s.distance(&zero, b, 0.0) + &delta * &turn.norm_squared(a)
                 - dot(&turn.point(a), &s.point(b)) * 2.0;
             let h_w = plane();
+            let dw = &delta * &w;
+            vec![&dw * &d_w - &h_w * &h_w * k2 - &dw * &h_w * k1 - &dw * &dw * k0]
+        }
+        LegKind::MovingCone => {
+            // As the cone, with the moving plane's condition affine in the turned fixed point.
+            let [k0, k1, k2] = c.revolution.unwrap_or_default();
+            let d_w = &w * &s.distance(&zero, b, 0.0) + &delta * &turn.norm_squared(a)
+                - dot(&turn.point(a), &s.point(b)) * 2.0;
+            let h_w = &w * &s.fixed_point_on_moving_plane(&zero, b, &axis)
+                + dot(&s.vector(&axis), &turn.point(a));
             let dw = &delta * &w;
             vec![&dw * &d_w - &h_w * &h_w * k2 - &dw * &h_w * k1 - &dw * &dw * k0]
         }

@@ -554,3 +554,80 @@ fn a_slider_not_across_its_revolute_keeps_the_sphere_centre_on_a_quadric_of_revo
     }
     assert!(value(b_ref + n * 0.1) > 1e-4);
 }
+
+#[test]
+fn a_slider_not_across_the_platform_revolute_keeps_the_base_point_on_a_moving_quadric() {
+    // A 3-SPR with leg 1's slider tilted out of the plane normal to its platform revolute:
+    // the base point A stays on a quadric of revolution about the platform's axis. Platform
+    // poses that the leg's own motion (θ, s) reaches satisfy its equation; a platform moved
+    // along that axis without sliding does not.
+    let d = Vector3::new(-0.5, 0.3, 1.0).normalize();
+    let legs: Vec<_> = (0..3)
+        .map(|k| {
+            let r = nalgebra::Rotation3::from_axis_angle(&Vector3::z_axis(), f64::from(k) * 2.0944);
+            let base = r * Vector3::new(1.0, 0.0, 0.0);
+            let top = r * Vector3::new(0.5, 0.0, 1.0);
+            let m = r * Vector3::new(0.0, 1.0, 0.0);
+            let slider = if k == 0 { d } else { (top - base).normalize() };
+            let mid = (base + top) / 2.0;
+            let platform = r * Vector3::new(0.5, 0.0, 0.0);
+            json!({
+                "chain": "SP!R",
+                "base": base.as_slice(),
+                "platform": platform.as_slice(),
+                "points": [mid.as_slice()],
+                "axes": [[1, 0, 0], [0, 1, 0], [0, 0, 1], slider.as_slice(), m.as_slice()],
+            })
+        })
+        .collect();
+    let v = json!({
+        "format": "kinsyn-manipulator/1",
+        "name": "3-SPR with a tilted slider",
+        "units": {"length": "m", "angle": "deg"},
+        "platform": {"position": [0.0, 0.0, 1.0], "orientation": [0.0, 0.0, 0.0], "point": [0.0, 0.0, 0.0]},
+        "legs": legs,
+    });
+    let m = Manipulator::from_json(&v.to_string()).unwrap();
+    let ps = m
+        .constraint_system(&InputValues::Free, &kinsyn::geometry::Chart::Unit)
+        .unwrap();
+    let kinds: Vec<LegKind> = ps.legs().iter().map(|c| c.kind).collect();
+    assert_eq!(
+        kinds,
+        [
+            LegKind::MovingCone,
+            LegKind::MovingPlane,
+            LegKind::MovingPlane
+        ]
+    );
+    let a = Vector3::new(1.0, 0.0, 0.0);
+    let foot = Vector3::new(0.5, 0.0, 1.0);
+    let axis = Vector3::new(0.0, 1.0, 0.0);
+    let reference = m.platform_frame(&m.reference());
+    let f = &ps.system().equations()[0];
+    // The platform translated so that A, seen from it, is at `seen` of its reference.
+    let value = |seen: Vector3<f64>| {
+        let pose = kinsyn::spatial::displacement(
+            reference.rotation,
+            reference.translation.vector + (a - seen),
+        );
+        let z: Vec<kinsyn::poly::C64> = ps
+            .solution_of(&pose)
+            .unwrap()
+            .iter()
+            .map(|x| kinsyn::poly::C64::new(*x, 0.0))
+            .collect();
+        let size: Vec<kinsyn::poly::C64> = z
+            .iter()
+            .map(|x| kinsyn::poly::C64::new(x.norm(), 0.0))
+            .collect();
+        f.eval(&z).norm() / f.magnitudes().eval(&size).norm()
+    };
+    for (theta, s) in [(0.3, 0.2), (-0.7, -0.4), (1.2, 0.5)] {
+        let turn =
+            nalgebra::Rotation3::from_axis_angle(&nalgebra::Unit::new_normalize(axis), theta);
+        let seen = foot + turn * (a - foot + d * s);
+        assert!(value(seen) < 1e-12, "θ = {theta}, s = {s}: {}", value(seen));
+    }
+    assert!(value(a + axis * 0.1) > 1e-4);
+}
