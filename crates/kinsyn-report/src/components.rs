@@ -5,6 +5,7 @@
 use crate::manipulator::{input_texts, inputs_or_reference, load, pose_text};
 use crate::solve::{paths_text, read_input, weighted_paths};
 use crate::{Error, terminal};
+use itertools::Itertools;
 use kinsyn::homotopy::{
     DecomposeError, DecomposeSettings, Decomposition, MAX_DECOMPOSE_PATHS, RegenerationProgress,
     decompose, decompose_paths, regenerate_with_progress, regeneration_paths,
@@ -266,49 +267,37 @@ impl Components {
 /// (dimensions add, degrees multiply, a point is the blocks' points side by side), each
 /// naming its factors; the motion is reported per block.
 fn products(blocks: &[BlockComponentsReport]) -> Vec<ModeComponentReport> {
-    let mut out = Vec::new();
-    if blocks.iter().any(|b| b.components.is_empty()) {
-        return out;
-    }
-    let mut pick = vec![0usize; blocks.len()];
-    loop {
-        let factors: Vec<&ModeComponentReport> = pick
-            .iter()
-            .zip(blocks)
-            .map(|(&k, b)| &b.components[k])
-            .collect();
-        out.push(ModeComponentReport {
-            component: ComponentSummary {
-                dimension: factors.iter().map(|f| f.component.dimension).sum(),
-                degree: factors
-                    .iter()
-                    .fold(1_usize, |d, f| d.saturating_mul(f.component.degree)),
-                trace_test_passed: factors.iter().all(|f| f.component.trace_test_passed),
-                sample_point: factors
-                    .iter()
-                    .flat_map(|f| f.component.sample_point.iter().copied())
-                    .collect(),
-            },
-            real_points: factors
+    blocks
+        .iter()
+        .map(|b| 0..b.components.len())
+        .multi_cartesian_product()
+        .map(|pick| {
+            let factors: Vec<&ModeComponentReport> = pick
                 .iter()
-                .fold(1_usize, |n, f| n.saturating_mul(f.real_points)),
-            motion: None,
-            released: None,
-            factors: pick.clone(),
-        });
-        let mut k = blocks.len();
-        loop {
-            if k == 0 {
-                return out;
+                .zip(blocks)
+                .map(|(&k, b)| &b.components[k])
+                .collect();
+            ModeComponentReport {
+                component: ComponentSummary {
+                    dimension: factors.iter().map(|f| f.component.dimension).sum(),
+                    degree: factors
+                        .iter()
+                        .fold(1_usize, |d, f| d.saturating_mul(f.component.degree)),
+                    trace_test_passed: factors.iter().all(|f| f.component.trace_test_passed),
+                    sample_point: factors
+                        .iter()
+                        .flat_map(|f| f.component.sample_point.iter().copied())
+                        .collect(),
+                },
+                real_points: factors
+                    .iter()
+                    .fold(1_usize, |n, f| n.saturating_mul(f.real_points)),
+                motion: None,
+                released: None,
+                factors: pick,
             }
-            k -= 1;
-            pick[k] += 1;
-            if pick[k] < blocks[k].components.len() {
-                break;
-            }
-            pick[k] = 0;
-        }
-    }
+        })
+        .collect()
 }
 
 impl BlockComponentsReport {

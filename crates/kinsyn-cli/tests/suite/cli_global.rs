@@ -90,6 +90,43 @@ fn the_3_rps_3_spr_has_sixteen_assemblies_per_module_and_their_products() {
         assert_eq!(bodies.len(), 2);
         assert_eq!(bodies[1]["pose"], a["pose"]);
     }
+    // The one continued from the reference puts both bodies at the description's own frames
+    // (position, rotation vector in degrees): the composition of the relative solves gives
+    // back the absolute poses written in the file.
+    let file: Value = serde_json::from_str(
+        &std::fs::read_to_string(
+            std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+                .join("../../mechanisms/multibody/3-rps-3-spr.json"),
+        )
+        .unwrap(),
+    )
+    .unwrap();
+    let current: Vec<&Value> = v["real_assemblies"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|a| a["continued_from_reference"] == true)
+        .collect();
+    assert_eq!(current.len(), 1);
+    for (k, b) in current[0]["bodies"].as_array().unwrap().iter().enumerate() {
+        let pose: Vec<f64> = b["pose"]
+            .as_str()
+            .unwrap()
+            .split(',')
+            .map(|x| x.parse().unwrap())
+            .collect();
+        let body = &file["bodies"][k];
+        for i in 0..3 {
+            assert!(
+                (pose[i] - body["position"][i].as_f64().unwrap()).abs() < 1e-6,
+                "{b}"
+            );
+            assert!(
+                (pose[3 + i] - body["orientation"][i].as_f64().unwrap()).abs() < 1e-6,
+                "{b}"
+            );
+        }
+    }
 }
 
 #[test]

@@ -5,6 +5,7 @@
 use super::{Loaded, clean, input_texts, inputs_or_reference, leg_warnings, load_with_body};
 use crate::Error;
 use crate::solve::{PathOption, solve_with_bar};
+use itertools::Itertools;
 use kinsyn::geometry::Chart;
 use kinsyn::homotopy::{SolveReport, SolveSettings, satisfying, square_randomisation};
 use kinsyn::manipulator::{
@@ -317,39 +318,24 @@ fn null_cone_endpoints(ps: &kinsyn::manipulator::PositionSystem, report: &SolveR
 /// The real assemblies of the mechanism: each combination of one real assembly per block (at
 /// most [`MAX_COMBINATIONS`]), every body's frame composed along the body tree.
 fn combine(m: &Manipulator, blocks: &[BodyBlock], solved: &[BlockAssemblies]) -> Vec<Assembly> {
-    let mut out = Vec::new();
-    let mut pick = vec![0usize; solved.len()];
-    if solved.iter().any(|b| b.real.is_empty()) {
-        return out;
-    }
-    while out.len() < MAX_COMBINATIONS {
-        let chosen: Vec<&Assembly> = pick.iter().zip(solved).map(|(&k, b)| &b.real[k]).collect();
-        let points: Vec<&[f64]> = chosen.iter().map(|a| a.point.as_slice()).collect();
-        if let Ok(frames) = m.body_frames(blocks, &points) {
-            out.push(Assembly {
+    solved
+        .iter()
+        .map(|b| b.real.iter())
+        .multi_cartesian_product()
+        .take(MAX_COMBINATIONS)
+        .filter_map(|chosen| {
+            let points: Vec<&[f64]> = chosen.iter().map(|a| a.point.as_slice()).collect();
+            let frames = m.body_frames(blocks, &points).ok()?;
+            Some(Assembly {
                 pose: frames[m.end_effector()],
                 residual: chosen.iter().map(|a| a.residual).fold(0.0, f64::max),
                 certified: chosen.iter().all(|a| a.certified),
                 current: chosen.iter().all(|a| a.current),
                 frames,
                 point: Vec::new(),
-            });
-        }
-        // The next combination, the last block fastest.
-        let mut k = solved.len();
-        loop {
-            if k == 0 {
-                return out;
-            }
-            k -= 1;
-            pick[k] += 1;
-            if pick[k] < solved[k].real.len() {
-                break;
-            }
-            pick[k] = 0;
-        }
-    }
-    out
+            })
+        })
+        .collect()
 }
 
 impl AllAssemblies {
@@ -387,19 +373,21 @@ impl AllAssemblies {
                 format!(
                     "{} blocks, one per moving body: {} paths in all; the mechanism's assemblies are the combinations of one per block",
                     blocks.len(),
-                    sum(&|b| b.paths)
+                    sum(&|b| b.counts.paths)
                 )
             },
-            paths: sum(&|b| b.paths),
-            nonsingular: product(&|b| b.nonsingular),
-            real: product(&|b| b.real),
-            singular: sum(&|b| b.singular),
-            singular_on_null_cone: sum(&|b| b.singular_on_null_cone),
-            at_infinity: sum(&|b| b.at_infinity),
-            spurious: sum(&|b| b.spurious),
-            certified: product(&|b| b.certified),
-            certified_real: product(&|b| b.certified_real),
-            seconds: blocks.iter().map(|b| b.seconds).sum(),
+            counts: AssemblyCounts {
+                paths: sum(&|b| b.counts.paths),
+                nonsingular: product(&|b| b.counts.nonsingular),
+                real: product(&|b| b.counts.real),
+                singular: sum(&|b| b.counts.singular),
+                singular_on_null_cone: sum(&|b| b.counts.singular_on_null_cone),
+                at_infinity: sum(&|b| b.counts.at_infinity),
+                spurious: sum(&|b| b.counts.spurious),
+                certified: product(&|b| b.counts.certified),
+                certified_real: product(&|b| b.counts.certified_real),
+                seconds: blocks.iter().map(|b| b.counts.seconds).sum(),
+            },
             seed: self.seed,
             real_assemblies: self
                 .assemblies
@@ -432,16 +420,18 @@ impl BlockAssemblies {
                 randomised: solved.len() < system.len(),
                 legs: self.kinds.clone(),
             },
-            paths: report.paths(),
-            nonsingular: report.nonsingular(),
-            real: report.real(),
-            singular: report.singular(),
-            singular_on_null_cone: self.null_cone,
-            at_infinity: report.at_infinity(),
-            spurious: self.spurious,
-            certified: report.certified(),
-            certified_real: report.certified_real(),
-            seconds: report.seconds,
+            counts: AssemblyCounts {
+                paths: report.paths(),
+                nonsingular: report.nonsingular(),
+                real: report.real(),
+                singular: report.singular(),
+                singular_on_null_cone: self.null_cone,
+                at_infinity: report.at_infinity(),
+                spurious: self.spurious,
+                certified: report.certified(),
+                certified_real: report.certified_real(),
+                seconds: report.seconds,
+            },
             real_assemblies: self
                 .real
                 .iter()
@@ -530,29 +520,11 @@ pub struct AssembliesReport {
     pub formulation: Formulation,
     /// The solve's counts in words.
     pub summary: String,
-    /// The paths tracked.
-    pub paths: usize,
-    /// The non-singular endpoints: the isolated assemblies, real and complex.
-    pub nonsingular: usize,
-    /// Of those, the real ones.
-    pub real: usize,
-    /// The singular endpoints.
-    pub singular: usize,
-    /// Of those, the ones on the null cone `x0² + x1² + x2² + x3² = 0`, which solve the
-    /// constraints without being a displacement.
-    pub singular_on_null_cone: usize,
-    /// The paths that went to infinity.
-    pub at_infinity: usize,
-    /// The endpoints of the square randomisation of an over-determined system that the original
-    /// equations refuse (0 for a square system); they are counted nowhere else.
-    pub spurious: usize,
-    /// The non-singular endpoints certified (each proved, by the Krawczyk operator in interval
-    /// arithmetic, to approximate exactly one root).
-    pub certified: usize,
-    /// Of those, the ones certified real.
-    pub certified_real: usize,
-    /// The solve's wall-clock time (seconds).
-    pub seconds: f64,
+    /// The paths, endpoints and assemblies counted, at the top level of the report: of several
+    /// blocks, the assemblies the products of the blocks' and the paths and endpoints their
+    /// sums.
+    #[serde(flatten)]
+    pub counts: AssemblyCounts,
     /// The seed of the random chart and of the solve.
     pub seed: u64,
     /// The real assemblies.
@@ -577,30 +549,42 @@ pub struct BlockReport {
     pub parent: String,
     /// Its position system.
     pub formulation: Formulation,
+    /// Its paths, endpoints and assemblies, at the top level of the entry.
+    #[serde(flatten)]
+    pub counts: AssemblyCounts,
+    /// Its real assemblies: the body's frame relative to its parent's.
+    pub real_assemblies: Vec<RealAssembly>,
+    /// Its complex assemblies, as the variables' `[re, im]` pairs.
+    pub complex_assemblies: Vec<Vec<[f64; 2]>>,
+}
+
+/// The counts of an `--all-assemblies` solve ([`AssembliesReport`], [`BlockReport`]).
+#[derive(Debug, Clone, Serialize)]
+pub struct AssemblyCounts {
     /// The paths tracked.
     pub paths: usize,
-    /// The non-singular endpoints: its isolated assemblies, real and complex.
+    /// The non-singular endpoints: the isolated assemblies, real and complex.
     pub nonsingular: usize,
     /// Of those, the real ones.
     pub real: usize,
     /// The singular endpoints.
     pub singular: usize,
-    /// Of those, the ones on the null cone.
+    /// Of those, the ones on the null cone `x0² + x1² + x2² + x3² = 0` (of the root or of a
+    /// body merged into it), which solve the constraints without being a displacement.
     pub singular_on_null_cone: usize,
     /// The paths that went to infinity.
     pub at_infinity: usize,
-    /// The endpoints of the square randomisation that the original equations refuse.
+    /// The endpoints that are no assembly, counted nowhere else: those of the square
+    /// randomisation of an over-determined system that the original equations refuse (0 for
+    /// a square system), and the regular ones that put a merged body on the null cone.
     pub spurious: usize,
-    /// The non-singular endpoints certified.
+    /// The non-singular endpoints certified (each proved, by the Krawczyk operator in interval
+    /// arithmetic, to approximate exactly one root).
     pub certified: usize,
     /// Of those, the ones certified real.
     pub certified_real: usize,
     /// The solve's wall-clock time (seconds).
     pub seconds: f64,
-    /// Its real assemblies: the body's frame relative to its parent's.
-    pub real_assemblies: Vec<RealAssembly>,
-    /// Its complex assemblies, as the variables' `[re, im]` pairs.
-    pub complex_assemblies: Vec<Vec<[f64; 2]>>,
 }
 
 /// One body's frame in a real assembly.

@@ -13,8 +13,9 @@ pub use analyze::{
     analyse_placed, analyze,
 };
 pub use assemblies::{
-    AllAssemblies, AssembliesReport, Assembly, BlockAssemblies, BlockReport, BodyPose, Formulation,
-    MAX_COMBINATIONS, RealAssembly, all_assemblies, all_assemblies_of, pose_text,
+    AllAssemblies, AssembliesReport, Assembly, AssemblyCounts, BlockAssemblies, BlockReport,
+    BodyPose, Formulation, MAX_COMBINATIONS, RealAssembly, all_assemblies, all_assemblies_of,
+    pose_text,
 };
 pub use modes::{
     DEFAULT_MAX_SUBSETS, MAX_SAMPLES, MAX_SUBSETS_CEILING, ModesReport, Selection, modes,

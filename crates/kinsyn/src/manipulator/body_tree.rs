@@ -104,16 +104,14 @@ impl Manipulator {
             let l = &self.legs[i];
             l.joints.len() == 1 && index(l.from).is_some()
         };
-        let mut group: Vec<usize> = (0..n).collect();
+        let mut groups = petgraph::unionfind::UnionFind::<usize>::new(n);
         for i in (0..self.legs.len()).filter(|&i| joins(i)) {
-            let (a, b) = (
+            groups.union(
                 index(self.legs[i].from).unwrap_or(0),
                 index(self.legs[i].to).unwrap_or(0),
             );
-            let (ra, rb) = (union_root(&mut group, a), union_root(&mut group, b));
-            group[ra] = rb;
         }
-        let group: Vec<usize> = (0..n).map(|k| union_root(&mut group, k)).collect();
+        let group: Vec<usize> = groups.into_labeling();
         let in_group = |g: usize, body: usize| index(body).is_some_and(|k| group[k] == g);
         // Each group: the one body all its incoming legs come from, its root (the first member
         // such a leg reaches), its members' paths from the root, the loops inside.
@@ -279,15 +277,4 @@ impl Manipulator {
         }
         Ok(frames)
     }
-}
-
-/// The representative of `k` in the union–find forest `g` (its parent links), the path to it
-/// shortened.
-fn union_root(g: &mut [usize], k: usize) -> usize {
-    let mut r = k;
-    while g[r] != r {
-        r = g[r];
-    }
-    g[k] = r;
-    r
 }

@@ -508,6 +508,26 @@ fn operation_modes_are_the_same_in_other_length_units() {
     }
 }
 
+/// `|f(z)|` relative to the size of `f`'s terms there, `z` the solution vector of the
+/// platform pose `pose` on the system `ps` (zero to rounding exactly when `f` vanishes).
+fn relative_value(
+    ps: &kinsyn::manipulator::PositionSystem,
+    f: &kinsyn::poly::Poly,
+    pose: &Displacement,
+) -> f64 {
+    let z: Vec<kinsyn::poly::C64> = ps
+        .solution_of(pose)
+        .unwrap()
+        .iter()
+        .map(|x| kinsyn::poly::C64::new(*x, 0.0))
+        .collect();
+    let size: Vec<kinsyn::poly::C64> = z
+        .iter()
+        .map(|x| kinsyn::poly::C64::new(x.norm(), 0.0))
+        .collect();
+    f.eval(&z).norm() / f.magnitudes().eval(&size).norm()
+}
+
 #[test]
 fn a_slider_not_across_its_revolute_keeps_the_sphere_centre_on_a_quadric_of_revolution() {
     // Leg 1 of the 3-RPS with its slider tilted out of the plane normal to its revolute: with
@@ -535,17 +555,7 @@ fn a_slider_not_across_its_revolute_keeps_the_sphere_centre_on_a_quadric_of_revo
             reference.rotation,
             reference.translation.vector + (b - b_ref),
         );
-        let z: Vec<kinsyn::poly::C64> = ps
-            .solution_of(&pose)
-            .unwrap()
-            .iter()
-            .map(|x| kinsyn::poly::C64::new(*x, 0.0))
-            .collect();
-        let size: Vec<kinsyn::poly::C64> = z
-            .iter()
-            .map(|x| kinsyn::poly::C64::new(x.norm(), 0.0))
-            .collect();
-        f.eval(&z).norm() / f.magnitudes().eval(&size).norm()
+        relative_value(&ps, f, &pose)
     };
     for (theta, s) in [(0.3, 0.2), (-0.7, -0.4), (1.2, 0.5)] {
         let turn = nalgebra::Rotation3::from_axis_angle(&nalgebra::Unit::new_normalize(n), theta);
@@ -611,17 +621,7 @@ fn a_slider_not_across_the_platform_revolute_keeps_the_base_point_on_a_moving_qu
             reference.rotation,
             reference.translation.vector + (a - seen),
         );
-        let z: Vec<kinsyn::poly::C64> = ps
-            .solution_of(&pose)
-            .unwrap()
-            .iter()
-            .map(|x| kinsyn::poly::C64::new(*x, 0.0))
-            .collect();
-        let size: Vec<kinsyn::poly::C64> = z
-            .iter()
-            .map(|x| kinsyn::poly::C64::new(x.norm(), 0.0))
-            .collect();
-        f.eval(&z).norm() / f.magnitudes().eval(&size).norm()
+        relative_value(&ps, f, &pose)
     };
     for (theta, s) in [(0.3, 0.2), (-0.7, -0.4), (1.2, 0.5)] {
         let turn =
