@@ -11,9 +11,10 @@ use kinsyn::homotopy::{
     decompose, decompose_paths, regenerate_with_progress, regeneration_paths,
 };
 use kinsyn::manipulator::{
-    BlockModes, DecompositionMethod, InputValues, LocalMotion, Manipulator, OperationModeError,
-    OperationModeSettings,
+    BlockModes, BlockPart, ComponentMotion, DecompositionMethod, InputValues, LocalMotion,
+    Manipulator, OperationModeError, OperationModeSettings,
 };
+use kinsyn::mechanism::SampleSettings;
 use kinsyn::poly::{C64, System};
 use serde::Serialize;
 use std::path::Path;
@@ -138,7 +139,76 @@ pub enum Decomposed {
         blocks: Vec<BlockModes>,
         /// Its inputs as `LABEL = value` ([`input_texts`]).
         inputs: Vec<String>,
+        /// The whole mechanism on each of its components (one block: the block's; several:
+        /// the products of one component per block, in [`product_factors`] order) at the
+        /// component's first real point: `None` for a component without one, an `Err` with
+        /// the reason where the mechanism could not be placed there.
+        mechanism: Vec<Option<Result<ComponentMotion, String>>>,
     },
+}
+
+/// The factors of the products of one component per block (each block's component index),
+/// in the order the products are reported.
+#[must_use]
+pub fn product_factors(counts: &[usize]) -> Vec<Vec<usize>> {
+    counts
+        .iter()
+        .map(|&n| 0..n)
+        .multi_cartesian_product()
+        .collect()
+}
+
+/// The most products of components the whole mechanism is placed on (each a continuation
+/// and a sampled motion); the others are reported without it.
+pub const MAX_PLACED_PRODUCTS: usize = 256;
+
+/// The most real points of a component tried for placing the whole mechanism.
+const MAX_PLACEMENT_TRIES: usize = 16;
+
+/// The whole mechanism on each component of `blocks` ([`Decomposed::Manipulator`]'s
+/// `mechanism`), the inputs `held` locked.
+fn mechanism_on_components(
+    m: &Manipulator,
+    blocks: &[BlockModes],
+    held: &[usize],
+) -> Vec<Option<Result<ComponentMotion, String>>> {
+    let parts: Vec<BlockPart<'_>> = blocks
+        .iter()
+        .map(|b| (b.parent, b.body, &b.modes.system))
+        .collect();
+    let counts: Vec<usize> = blocks.iter().map(|b| b.modes.components.len()).collect();
+    let settings = SampleSettings::default();
+    product_factors(&counts)
+        .into_iter()
+        .enumerate()
+        .map(|(k, pick)| {
+            if k >= MAX_PLACED_PRODUCTS {
+                return None;
+            }
+            let factors: Vec<&Vec<Vec<f64>>> = pick
+                .iter()
+                .zip(blocks)
+                .map(|(&c, b)| &b.modes.components[c].real_points)
+                .collect();
+            let most = factors.iter().map(|p| p.len()).max()?;
+            if factors.iter().any(|p| p.is_empty()) {
+                return None;
+            }
+            // The first real point (of each factor, side by side) that the legs reach.
+            let mut last = None;
+            for k in 0..most.min(MAX_PLACEMENT_TRIES) {
+                let points: Vec<Option<&[f64]>> = factors
+                    .iter()
+                    .map(|p| Some(p[k % p.len()].as_slice()))
+                    .collect();
+                match m.component_motion(&parts, &points, held, &settings) {
+                    Ok(c) => return Some(Ok(c)),
+                    Err(e) => last = Some(e.to_string()),
+                }
+            }
+            last.map(Err)
+        })
+        .collect()
 }
 
 /// The irreducible components of the file at `path`: of its system (a Bertini input file) or
@@ -228,13 +298,18 @@ impl Components {
                     })
                     .collect(),
             }),
-            Decomposed::Manipulator { m, blocks, inputs } => {
+            Decomposed::Manipulator {
+                m,
+                blocks,
+                inputs,
+                mechanism,
+            } => {
                 let reports: Vec<BlockComponentsReport> = blocks
                     .iter()
                     .map(|b| BlockComponentsReport::new(m, b, options))
                     .collect();
                 let free = blocks.first().is_some_and(|b| b.modes.free_inputs);
-                let (decomposition, components, blocks) = if let [one] = &reports[..] {
+                let (decomposition, mut components, blocks) = if let [one] = &reports[..] {
                     (
                         one.decomposition.clone(),
                         one.components.clone(),
@@ -247,6 +322,9 @@ impl Components {
                         reports,
                     )
                 };
+                for (c, on) in components.iter_mut().zip(mechanism) {
+                    c.mechanism = on.as_ref().map(|r| MechanismReport::new(m, r.as_ref()));
+                }
                 ComponentsReport::Manipulator(ManipulatorComponentsReport {
                     manipulator: m.name().to_string(),
                     inputs: if free {
@@ -267,10 +345,9 @@ impl Components {
 /// (dimensions add, degrees multiply, a point is the blocks' points side by side), each
 /// naming its factors; the motion is reported per block.
 fn products(blocks: &[BlockComponentsReport]) -> Vec<ModeComponentReport> {
-    blocks
-        .iter()
-        .map(|b| 0..b.components.len())
-        .multi_cartesian_product()
+    let counts: Vec<usize> = blocks.iter().map(|b| b.components.len()).collect();
+    product_factors(&counts)
+        .into_iter()
         .map(|pick| {
             let factors: Vec<&ModeComponentReport> = pick
                 .iter()
@@ -294,6 +371,7 @@ fn products(blocks: &[BlockComponentsReport]) -> Vec<ModeComponentReport> {
                     .fold(1_usize, |n, f| n.saturating_mul(f.real_points)),
                 motion: None,
                 released: None,
+                mechanism: None,
                 factors: pick,
             }
         })
@@ -331,6 +409,7 @@ impl BlockComponentsReport {
                     real_points: c.real_points.len(),
                     motion: c.real.as_ref().map(|l| LocalMotionReport::new(m, l)),
                     released: c.released.as_ref().map(|l| LocalMotionReport::new(m, l)),
+                    mechanism: None,
                     factors: Vec::new(),
                 })
                 .collect(),
@@ -414,12 +493,19 @@ fn manipulator_components(
         }
     })?;
     let inputs = input_texts(&m, &all);
+    let held: Vec<usize> = if options.free_inputs {
+        Vec::new()
+    } else {
+        (0..m.actuators().len()).collect()
+    };
+    let mechanism = mechanism_on_components(&m, &blocks, &held);
     Ok(Components {
         options: options.clone(),
         decomposed: Decomposed::Manipulator {
             m: Box::new(m),
             blocks,
             inputs,
+            mechanism,
         },
     })
 }
@@ -570,9 +656,79 @@ pub struct ModeComponentReport {
     /// At an assembly (dimension 0, given inputs): the platform's motion on the operation mode
     /// with the inputs released; `null` otherwise, or where it was not found.
     pub released: Option<LocalMotionReport>,
+    /// The whole mechanism at its first real point (every body placed there, the legs'
+    /// joints by assembly): the end-effector's motion with the held inputs locked, and the
+    /// inputs that move; `null` for a complex component and in a block's own list.
+    pub mechanism: Option<MechanismReport>,
     /// Of a product of the blocks' components (several moving bodies): the index of its
     /// factor in each block's `components`; empty otherwise.
     pub factors: Vec<usize>,
+}
+
+/// The whole mechanism at a real point of a component ([`ComponentMotion`]).
+#[derive(Debug, Clone, Serialize)]
+pub struct MechanismReport {
+    /// The body whose motion is classified: the end-effector (or `--body`).
+    pub body: String,
+    /// Its dof there with the held inputs locked; `null` where the mechanism could not be
+    /// placed.
+    pub dof: Option<usize>,
+    /// The pattern of its motion (`3T`, `X(z)`, `1T2R`, …; `?` where it could not be sampled).
+    pub pattern: Option<String>,
+    /// Whether the pattern is one of the 12 displacement groups.
+    pub group: bool,
+    /// The inputs that move on the component (labels such as `R1.1`).
+    pub moving_inputs: Vec<String>,
+    /// The inputs held at their given values.
+    pub held_inputs: Vec<String>,
+    /// The free inputs that do not move on the component.
+    pub still_inputs: Vec<String>,
+    /// Why the mechanism could not be placed at the point, if it could not.
+    pub error: Option<String>,
+}
+
+impl MechanismReport {
+    /// The report of the mechanism `m` placed on a component (or why it could not be).
+    fn new(m: &Manipulator, on: Result<&ComponentMotion, &String>) -> Self {
+        let body = m
+            .bodies()
+            .get(m.end_effector())
+            .map_or_else(|| "platform".to_string(), |b| b.name.clone());
+        match on {
+            Err(e) => Self {
+                body,
+                dof: None,
+                pattern: None,
+                group: false,
+                moving_inputs: Vec::new(),
+                held_inputs: Vec::new(),
+                still_inputs: Vec::new(),
+                error: Some(e.clone()),
+            },
+            Ok(c) => {
+                let label = |a: usize| m.actuators()[a].label();
+                let (moving, other): (Vec<usize>, Vec<usize>) =
+                    (0..m.actuators().len()).partition(|&a| c.moving[a]);
+                let (held, still): (Vec<usize>, Vec<usize>) =
+                    other.into_iter().partition(|a| c.held.contains(a));
+                Self {
+                    body,
+                    dof: Some(c.mode.dof),
+                    pattern: Some(
+                        c.mode
+                            .pattern
+                            .as_ref()
+                            .map_or_else(|| "?".to_string(), ToString::to_string),
+                    ),
+                    group: c.mode.group,
+                    moving_inputs: moving.into_iter().map(label).collect(),
+                    held_inputs: held.into_iter().map(label).collect(),
+                    still_inputs: still.into_iter().map(label).collect(),
+                    error: c.mode.error.clone(),
+                }
+            }
+        }
+    }
 }
 
 /// The platform's motion at a real point of a component.

@@ -18,11 +18,18 @@
 //!   (their dimensions add): a stack of modules costs the sum of its modules' paths, not the
 //!   product.
 //!
-//! Blocks that hang from two bodies, or from each other in a cycle, do not fit a tree and are
-//! refused ([`PositionSystemError::BodyLoop`]): the HEXA's limbs, whose parallelogram bars
-//! join the sub-platforms from two cranks.
+//! - A block whose legs come from several bodies, each of which but one is **held** from that
+//!   one by a single leg (any serial chain) and reaches nothing but the block otherwise — a
+//!   Delta's arms, each on its crank, holding the platform by parallelogram rods; the HEXA's
+//!   crank-and-bar holding the platform linkage — takes those bodies in as members whose path
+//!   starts at the parent: their frames are the parent's composed with the joints of the leg
+//!   that holds them (unknowns, or given inputs), their other legs loops inside the block.
+//!
+//! Blocks that hang from two bodies otherwise, or from each other in a cycle, do not fit a
+//! tree and are refused ([`PositionSystemError::BodyLoop`]).
 
 use super::Manipulator;
+use super::component_motion::BlockPart;
 use super::polynomial::{InputValues, PositionSystem, PositionSystemError};
 use crate::geometry::Chart;
 use crate::spatial::Displacement;
@@ -44,15 +51,21 @@ pub struct BodyNode {
     pub internal: Vec<usize>,
 }
 
-/// A body merged into a block: its frame is the root's composed with the joints of its path,
-/// whose values are unknowns of the block (or given inputs).
+/// A body merged into a block: its frame is the root's (or, for a body held from the parent,
+/// the parent's) composed with the joints of its path, whose values are unknowns of the block
+/// (or given inputs).
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Member {
     /// The body: an index into [`Manipulator::bodies`].
     pub body: usize,
-    /// The one-joint legs from the root to it, each with whether it is crossed from its first
-    /// body to its last (`true`) or back.
+    /// The legs from the root (or the parent) to it, each with whether it is crossed from its
+    /// first body to its last (`true`) or back: one-joint legs from the root, or the one leg
+    /// (any serial chain) that holds the body from the parent.
     pub path: Vec<(usize, bool)>,
+    /// Whether the path starts at the block's parent rather than at its root: a body held
+    /// from the parent by one leg whose other legs all reach the block (a Delta's arm, the
+    /// HEXA's crank-and-bar), so that the block hangs from one body.
+    pub from_parent: bool,
 }
 
 /// One block of a manipulator's constraint system (module documentation).
@@ -111,7 +124,9 @@ impl Manipulator {
                 index(self.legs[i].to).unwrap_or(0),
             );
         }
-        let group: Vec<usize> = groups.into_labeling();
+        let mut group: Vec<usize> = groups.into_labeling();
+        let held = self.held_bodies(&mut group);
+        let holding = |i: usize| held.iter().any(|&(_, l)| l == i);
         let in_group = |g: usize, body: usize| index(body).is_some_and(|k| group[k] == g);
         // Each group: the one body all its incoming legs come from, its root (the first member
         // such a leg reaches), its members' paths from the root, the loops inside.
@@ -133,20 +148,31 @@ impl Manipulator {
                 if let Some(&i) = incoming.iter().find(|&&i| self.legs[i].from != parent_body) {
                     return Err(looped(i));
                 }
+                let incoming: Vec<usize> = incoming.into_iter().filter(|&i| !holding(i)).collect();
                 let parent = index(parent_body);
                 if parent.is_some_and(|p| !placed[p]) {
                     continue;
                 }
                 // The root: the body whose paths to the others are shortest in all (each joint
                 // of a path raises the degree of the legs beyond it).
+                let is_held = |k: usize| held.iter().any(|&(b, _)| b == k);
                 let root = (0..n)
-                    .filter(|&k| group[k] == g)
+                    .filter(|&k| group[k] == g && !is_held(k))
                     .min_by_key(|&k| {
                         let (members, _) = self.group_paths(k, |b| group[b] == g);
                         members.iter().map(|m| m.path.len()).sum::<usize>()
                     })
                     .unwrap_or(g);
-                let (members, internal) = self.group_paths(root, |k| group[k] == g);
+                let (mut members, internal) = self.group_paths(root, |k| group[k] == g);
+                members.extend(
+                    held.iter()
+                        .filter(|&&(b, _)| group[b] == g)
+                        .map(|&(body, leg)| Member {
+                            body,
+                            path: vec![(leg, true)],
+                            from_parent: true,
+                        }),
+                );
                 for k in (0..n).filter(|&k| group[k] == g) {
                     placed[k] = true;
                 }
@@ -170,6 +196,65 @@ impl Manipulator {
             }
         }
         Ok(order)
+    }
+
+    /// The bodies held from a block's parent (module documentation), each with the leg that
+    /// holds it, moved into the group of the block they hold (`group`: each body's group
+    /// label): a body alone in its group, reached by one leg (from the ground or a body outside
+    /// the block), whose other legs all start on it and end in one group whose legs come from
+    /// more than one body.
+    fn held_bodies(&self, group: &mut [usize]) -> Vec<(usize, usize)> {
+        let index = |body: usize| self.bodies.iter().position(|b| b.body == body);
+        let n = self.bodies.len();
+        let mut held = Vec::new();
+        for k in 0..n {
+            if (0..n).any(|m| m != k && group[m] == group[k]) {
+                continue;
+            }
+            let body = self.bodies[k].body;
+            let into: Vec<usize> = (0..self.legs.len())
+                .filter(|&i| self.legs[i].to == body)
+                .collect();
+            let out: Vec<usize> = (0..self.legs.len())
+                .filter(|&i| self.legs[i].from == body)
+                .collect();
+            let [leg] = into[..] else { continue };
+            let targets: Vec<usize> = out
+                .iter()
+                .filter_map(|&i| index(self.legs[i].to))
+                .map(|t| group[t])
+                .collect();
+            let Some(&g) = targets.first() else { continue };
+            if targets.len() != out.len()
+                || targets.iter().any(|&t| t != g)
+                || index(self.legs[leg].from).is_some_and(|p| group[p] == g)
+            {
+                continue;
+            }
+            // The block it reaches must hang from more than one body.
+            let sources: std::collections::BTreeSet<usize> = (0..self.legs.len())
+                .filter(|&i| {
+                    index(self.legs[i].to).is_some_and(|t| group[t] == g)
+                        && index(self.legs[i].from).is_none_or(|f| group[f] != g)
+                })
+                .map(|i| self.legs[i].from)
+                .collect();
+            if sources.len() > 1 {
+                held.push((k, leg));
+            }
+        }
+        for &(k, _) in &held {
+            let body = self.bodies[k].body;
+            if let Some(t) = self
+                .legs
+                .iter()
+                .find(|l| l.from == body)
+                .and_then(|l| index(l.to))
+            {
+                group[k] = group[t];
+            }
+        }
+        held
     }
 
     /// The members of the group of `root` (the bodies `member` accepts) other than the root,
@@ -218,6 +303,7 @@ impl Manipulator {
             .map(|(body, path)| Member {
                 body,
                 path: path.unwrap_or_default(),
+                from_parent: false,
             })
             .collect();
         let internal = (0..self.legs.len())
@@ -264,17 +350,10 @@ impl Manipulator {
         blocks: &[BodyBlock],
         solutions: &[&[f64]],
     ) -> Result<Vec<Displacement>, crate::spatial::study::StudyError> {
-        let mut frames = vec![crate::spatial::identity(); self.bodies.len()];
-        for (b, x) in blocks.iter().zip(solutions) {
-            let parent = b
-                .parent
-                .map_or_else(crate::spatial::identity, |p| frames[p]);
-            let root = parent * b.system.displacement(x)?;
-            frames[b.body] = root;
-            for (member, g) in b.system.member_frames(x)? {
-                frames[member] = root * g;
-            }
-        }
-        Ok(frames)
+        let parts: Vec<BlockPart<'_>> = blocks
+            .iter()
+            .map(|b| (b.parent, b.body, &b.system))
+            .collect();
+        self.frames_of_blocks(&parts, solutions)
     }
 }

@@ -17,6 +17,7 @@
 
 mod body_tree;
 pub mod build;
+mod component_motion;
 mod construction;
 pub mod file;
 mod jacobian;
@@ -34,6 +35,7 @@ pub mod stacking;
 mod sub_mechanism;
 
 pub use body_tree::{BodyBlock, BodyNode};
+pub use component_motion::{BlockPart, ComponentMotion, ComponentMotionError, MOVING_TOLERANCE};
 pub use jacobian::{Jacobians, RowKind, WrenchRow};
 pub use leg::{LegCheck, LegWarning, LegWarningKind};
 pub use lookup::{CatalogueChain, ChainLookup, CommittedChains};

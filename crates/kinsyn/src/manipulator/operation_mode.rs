@@ -57,8 +57,8 @@ pub struct OperationModeSettings {
     pub samples: usize,
     /// The length of one walk step, in the units of the Study parameters (dimensionless).
     pub step: f64,
-    /// The most random real slices tried for a real point of a positive-dimensional
-    /// component whose witness points are all complex.
+    /// The random real slices a positive-dimensional component is cut with for real points
+    /// besides its real witness points.
     pub real_slices: usize,
 }
 
@@ -112,7 +112,8 @@ pub struct ModeComponent {
     pub sample: Vec<C64>,
     /// Whether a real witness point was found and its motion, else `None`.
     pub real: Option<LocalMotion>,
-    /// The real witness points (isolated assemblies have one).
+    /// The real points found: the real witness points (isolated assemblies have one), then
+    /// for a positive dimension those on random real slices.
     pub real_points: Vec<Vec<f64>>,
     /// For a real assembly (dimension 0 at fixed inputs): the operation mode through it with
     /// the inputs released; `None` where that variety is singular, or where an input is half a
@@ -183,7 +184,15 @@ impl Manipulator {
                 Some(self.constraint_system(&InputValues::Free, &Chart::Unit)?)
             }
         };
-        self.modes_of(system, released.as_ref(), inputs, settings, progress)
+        let centre = self.reference_point((None, self.end_effector, &system));
+        self.modes_of(
+            system,
+            released.as_ref(),
+            inputs,
+            settings,
+            centre.as_deref(),
+            progress,
+        )
     }
 
     /// The operation modes of each block of the body tree ([`Manipulator::body_blocks`];
@@ -212,23 +221,33 @@ impl Manipulator {
             .into_iter()
             .map(|b| {
                 let free = released.as_mut().and_then(Iterator::next).map(|r| r.system);
+                let centre = self.reference_point((b.parent, b.body, &b.system));
                 Ok(BlockModes {
                     body: b.body,
                     parent: b.parent,
-                    modes: self.modes_of(b.system, free.as_ref(), inputs, settings, progress)?,
+                    modes: self.modes_of(
+                        b.system,
+                        free.as_ref(),
+                        inputs,
+                        settings,
+                        centre.as_deref(),
+                        progress,
+                    )?,
                 })
             })
             .collect()
     }
 
     /// The components of the constraint variety of `system` (`released`: the same with the
-    /// inputs free, for the operation mode of each real assembly).
+    /// inputs free, for the operation mode of each real assembly; `centre`: the reference
+    /// configuration's point, through which real slices are cut first).
     fn modes_of(
         &self,
         system: PositionSystem,
         released: Option<&PositionSystem>,
         inputs: &InputValues,
         settings: &OperationModeSettings,
+        centre: Option<&[f64]>,
         progress: &mut dyn FnMut(RegenerationProgress),
     ) -> Result<OperationModes, OperationModeError> {
         let free = matches!(inputs, InputValues::Free);
@@ -253,14 +272,14 @@ impl Manipulator {
             .components
             .iter()
             .map(|c| {
-                let mut real_points: Vec<Vec<f64>> = c
-                    .witness_points
-                    .iter()
-                    .filter_map(|x| real_point(x))
-                    .collect();
-                if real_points.is_empty() && c.dimension > 0 {
-                    real_points = real_slices(&system, &decomposition, c, settings, &mut rng);
-                }
+                let witness = c.witness_points.iter().filter_map(|x| real_point(x));
+                let real_points: Vec<Vec<f64>> = if c.dimension > 0 {
+                    let (near, far) =
+                        real_slices(&system, &decomposition, c, settings, centre, &mut rng);
+                    near.into_iter().chain(witness).chain(far).collect()
+                } else {
+                    witness.collect()
+                };
                 let real = real_points
                     .first()
                     .and_then(|p| self.local_motion(&system, p, settings, &mut rng));
@@ -310,10 +329,15 @@ impl Manipulator {
                 let Some(q) = walk(&program, p, settings.step, rng) else {
                     continue;
                 };
+                // A walk that ends where another did (with one dof there are two directions)
+                // adds no sample: the samples' separation is between distinct poses.
                 if let (Some((t, d)), Ok(g)) = (
                     self.tangent_twists(system, &program, &q),
                     system.displacement(&q),
                 ) && d == dof
+                    && poses
+                        .iter()
+                        .all(|o| (o.to_homogeneous() - g.to_homogeneous()).amax() > 1e-9)
                 {
                     spans.push(t);
                     poses.push(g);
@@ -374,33 +398,51 @@ fn real_point(x: &[C64]) -> Option<Vec<f64>> {
         .then(|| x.iter().map(|v| v.re).collect())
 }
 
-/// Real points of a positive-dimensional component: its points on random **real** slices
-/// (real hyperplanes through the real part of a witness point), as many slices as
-/// [`OperationModeSettings::real_slices`] until one gives a real point.
+/// Real points of a positive-dimensional component: its points on random **real** slices,
+/// [`OperationModeSettings::real_slices`] of them — real linear spaces of complementary
+/// dimension through the reference configuration's point `centre` or its antipode `−x` (half
+/// of them; the component through the reference meets them there, and the others near the
+/// mechanism's own scale), through the real part of a witness point, or through the origin (with the unit
+/// chart the Study parameters' `x` lie on a sphere about it, which every real line through
+/// the origin meets). The points of the slices through `centre`, then the others, each
+/// nearest `centre` first. Not every
+/// real point is a configuration: a leg may reach it only with complex joint values (its
+/// reach, an inequality, is not among the equations), so the mechanism is placed on the first
+/// the legs reach ([`Manipulator::component_motion`]).
 fn real_slices(
     system: &PositionSystem,
     decomposition: &Decomposition,
     c: &Component,
     settings: &OperationModeSettings,
+    centre: Option<&[f64]>,
     rng: &mut ChaCha8Rng,
-) -> Vec<Vec<f64>> {
+) -> (Vec<Vec<f64>>, Vec<Vec<f64>>) {
     let n = system.system().nvars();
     let origin = vec![C64::new(0.0, 0.0); n];
+    // The reference, and its antipode: the same configuration (the unit chart's `−x`, the
+    // joints' unknowns unchanged), on the other copy of its component.
+    let k = system.study_unknowns();
+    let reference: Option<[Vec<C64>; 2]> = centre.map(|x| {
+        let plus: Vec<C64> = x.iter().map(|v| C64::new(*v, 0.0)).collect();
+        let mut minus = plus.clone();
+        for v in &mut minus[..k] {
+            *v = -*v;
+        }
+        [plus, minus]
+    });
+    let (mut near, mut far) = (Vec::new(), Vec::new());
     for attempt in 0..settings.real_slices {
-        // Through the real part of a witness point, or (every other attempt) through the
-        // origin: with the unit chart the Study parameters' x lie on a sphere about it, which
-        // every real line through the origin meets.
-        let centre = if attempt % 2 == 1 {
-            &origin
-        } else {
-            &c.witness_points[(attempt / 2) % c.witness_points.len()]
+        let through = match (attempt % 4, &reference) {
+            (0 | 1, Some(r)) => &r[attempt % 2],
+            (2, _) | (0 | 1, None) => &c.witness_points[(attempt / 4) % c.witness_points.len()],
+            _ => &origin,
         };
         let slice: Vec<Vec<C64>> = (0..c.dimension)
             .map(|_| {
                 let a: Vec<f64> = (0..n)
                     .map(|_| rng.sample::<f64, _>(StandardNormal))
                     .collect();
-                let b: f64 = -a.iter().zip(centre).map(|(a, x)| a * x.re).sum::<f64>();
+                let b: f64 = -a.iter().zip(through).map(|(a, x)| a * x.re).sum::<f64>();
                 a.into_iter().chain([b]).map(C64::from).collect()
             })
             .collect();
@@ -413,12 +455,24 @@ fn real_slices(
         ) else {
             continue;
         };
-        let real: Vec<Vec<f64>> = points.iter().filter_map(|x| real_point(x)).collect();
-        if !real.is_empty() {
-            return real;
+        let real = points.iter().filter_map(|x| real_point(x));
+        if attempt % 4 < 2 && reference.is_some() {
+            near.extend(real);
+        } else {
+            far.extend(real);
         }
     }
-    Vec::new()
+    // Nearest the reference first: the reference itself on its own component, and elsewhere
+    // the points most likely within the legs' reach.
+    if let Some([plus, minus]) = &reference {
+        let from = |x: &Vec<f64>, r: &Vec<C64>| -> f64 {
+            x.iter().zip(r).map(|(a, b)| (a - b.re).powi(2)).sum()
+        };
+        let distance = |x: &Vec<f64>| from(x, plus).min(from(x, minus));
+        near.sort_by(|a, b| distance(a).total_cmp(&distance(b)));
+        far.sort_by(|a, b| distance(a).total_cmp(&distance(b)));
+    }
+    (near, far)
 }
 
 /// The point of the free-input variety of an assembly `p` at the given inputs: the Study

@@ -500,6 +500,13 @@ impl PositionSystem {
             })
     }
 
+    /// How many of the system's first unknowns are the root's Study parameters: eight, or
+    /// four for a planar mechanism ([`Self::study`]).
+    #[must_use]
+    pub fn study_unknowns(&self) -> usize {
+        if self.planar.is_some() { 4 } else { 8 }
+    }
+
     /// Whether the system is a block with members (bodies joined to its root by joints whose
     /// values are unknowns): [`Self::displacement`] is then its root body's frame.
     #[must_use]
@@ -835,7 +842,8 @@ impl Manipulator {
         // end relative to its start, substituted away.
         let nr = nb + 8;
         let study = |g: &Displacement| study_constant(nr, &study::from_displacement(g));
-        let member_study = self.member_studies(node, &value, &joint_variable, nr);
+        let root_study: StudyPolys = std::array::from_fn(|k| Poly::variable(nr, k));
+        let member_study = self.member_studies(node, &value, &joint_variable, &root_study);
         // A body's Study parameters relative to the root (the identity for the root).
         let of_body = |k: usize| -> StudyPolys {
             member_study
@@ -844,7 +852,6 @@ impl Manipulator {
                 .map_or_else(|| study(&crate::spatial::identity()), |(_, g)| g.clone())
         };
         let root = StudyVariables::new(nr, [0, 1, 2, 3, 4, 5, 6, 7]);
-        let root_study: StudyPolys = std::array::from_fn(|k| Poly::variable(nr, k));
         let virtual_study = StudyVariables::new(nr, std::array::from_fn(|k| nb + k));
         let mut constraints = Vec::new();
         let mut ends = Vec::new();
@@ -905,7 +912,7 @@ impl Manipulator {
         let planar = self.planar_frame(node);
         if let Some(frame) = &planar {
             equations = planar_restriction(&equations, frame);
-            members = shifted_members(members, nb);
+            members = planar_members(members, frame);
             names.splice(0..8, planar_names(frame));
             for f in &mut free {
                 f.variable -= 4;
@@ -964,9 +971,10 @@ impl Manipulator {
         Some([n_local, u, v])
     }
 
-    /// One unknown per one-joint leg of the members' paths in `node` whose joint is not given
-    /// (`value`), named `h<leg>` (a revolute) or `d<leg>` (a slider) after `names`: each leg
-    /// with its variable's index.
+    /// One unknown per joint of the legs of the members' paths in `node` whose value is not
+    /// given (`value`), named after `names`: `h<leg>` (a revolute) or `d<leg>` (a slider) for
+    /// a one-joint leg, `h<leg>_<k>` for the `k`-th joint of a longer one — each joint (an
+    /// index into the mechanism's joints) with its variable's index.
     fn joint_variables(
         &self,
         node: &BodyNode,
@@ -976,62 +984,78 @@ impl Manipulator {
         let joints = self.mechanism.joints();
         let mut out: Vec<(usize, usize)> = Vec::new();
         for &(i, _) in node.members.iter().flat_map(|m| &m.path) {
-            let j = self.legs[i].joints.start;
-            if value[j].is_none() && !out.iter().any(|(l, _)| *l == i) {
+            let range = self.legs[i].joints.clone();
+            let single = range.len() == 1;
+            for (k, j) in range.enumerate() {
+                if value[j].is_some() || out.iter().any(|(l, _)| *l == j) {
+                    continue;
+                }
                 let letter = if joints[j].kind == Primitive::R {
                     'h'
                 } else {
                     'd'
                 };
-                out.push((i, names.len()));
-                names.push(format!("{letter}{}", i + 1));
+                out.push((j, names.len()));
+                names.push(if single {
+                    format!("{letter}{}", i + 1)
+                } else {
+                    format!("{letter}{}_{}", i + 1, k + 1)
+                });
             }
         }
         out
     }
 
     /// The Study parameters of each member of the block `node` relative to its root, in a
-    /// ring of `nr` variables: the displacements of the one-joint legs of its path composed,
-    /// each joint's value an unknown (`joint_variable`: leg, variable) or given (`value`).
+    /// ring of `nr` variables whose first eight are the root's Study parameters relative to
+    /// the parent (`root`): the displacements of the legs of its path composed, each joint's
+    /// value an unknown (`joint_variable`: joint, variable) or given (`value`); a body held
+    /// from the parent is the root's inverse composed with its leg's displacement.
     fn member_studies(
         &self,
         node: &BodyNode,
         value: &[Option<f64>],
         joint_variable: &[(usize, usize)],
-        nr: usize,
+        root: &StudyPolys,
     ) -> Vec<(usize, StudyPolys)> {
         let joints = self.mechanism.joints();
+        let nr = root[0].nvars();
         let index = |body: usize| self.bodies.iter().position(|b| b.body == body);
         let frame_of =
             |k: Option<usize>| k.map_or_else(crate::spatial::identity, |k| self.bodies[k].frame);
         let study = |g: &Displacement| study_constant(nr, &study::from_displacement(g));
-        // The frame of a leg's last body relative to its first, through its one joint (turned
-        // about, or slid along, its axis at the reference configuration).
+        // The frame of a leg's last body relative to its first, through its joints (each
+        // turned about, or slid along, its axis at the reference configuration: the product
+        // of exponentials).
         let relative = |i: usize| -> StudyPolys {
             let leg = &self.legs[i];
-            let j = leg.joints.start;
-            let spec = &joints[j];
-            let joint = match joint_variable.iter().find(|(l, _)| *l == i) {
-                None => study(&spec.primitive().displacement(value[j].unwrap_or(0.0))),
-                Some((_, v)) => match spec.kind {
-                    Primitive::R => study_turn(nr, *v, &spec.axis.normalize(), &spec.point),
-                    Primitive::P => study_slide(nr, *v, &spec.axis.normalize()),
-                },
-            };
             let from = frame_of(index(leg.from));
             let to = frame_of(index(leg.to));
-            study_product(&study_product(&study(&from.inverse()), &joint), &study(&to))
+            let moved = leg.joints.clone().fold(study(&from.inverse()), |g, j| {
+                let spec = &joints[j];
+                let joint = match joint_variable.iter().find(|(l, _)| *l == j) {
+                    None => study(&spec.primitive().displacement(value[j].unwrap_or(0.0))),
+                    Some((_, v)) => match spec.kind {
+                        Primitive::R => study_turn(nr, *v, &spec.axis.normalize(), &spec.point),
+                        Primitive::P => study_slide(nr, *v, &spec.axis.normalize()),
+                    },
+                };
+                study_product(&g, &joint)
+            });
+            study_product(&moved, &study(&to))
         };
         node.members
             .iter()
             .map(|m| {
-                let g = m
-                    .path
-                    .iter()
-                    .fold(study(&crate::spatial::identity()), |g, &(i, along)| {
-                        let r = relative(i);
-                        study_product(&g, &if along { r } else { study_inverse(&r) })
-                    });
+                let start = if m.from_parent {
+                    study_inverse(root)
+                } else {
+                    study(&crate::spatial::identity())
+                };
+                let g = m.path.iter().fold(start, |g, &(i, along)| {
+                    let r = relative(i);
+                    study_product(&g, &if along { r } else { study_inverse(&r) })
+                });
                 (m.body, g)
             })
             .collect()
@@ -1292,14 +1316,6 @@ impl Manipulator {
 
 /// The members' Study parameters (polynomials in a ring of `nb` whose first eight unknowns,
 /// the root's, they do not involve) in the ring of a planar block, four unknowns fewer.
-fn shifted_members(members: Vec<(usize, StudyPolys)>, nb: usize) -> Vec<(usize, StudyPolys)> {
-    let map: Vec<usize> = (0..nb).map(|k| if k < 8 { 0 } else { k - 4 }).collect();
-    members
-        .into_iter()
-        .map(|(b, g)| (b, g.map(|p| p.relabel(nb - 4, &map))))
-        .collect()
-}
-
 /// The names of a planar block's four Study unknowns (`x = (x0, x3 n)`, `y = (0, y1 u + y2 v)`
 /// along the frame `[n, u, v]`): `x0, x3, y1, y2` for `n = z` (`u = x`, `v = y`), where they are
 /// the Study parameters themselves; `x0, xn, yu, yv` otherwise.
@@ -1313,14 +1329,12 @@ fn planar_names(frame: &[Vector3<f64>; 3]) -> Vec<String> {
     names.iter().map(|s| (*s).to_string()).collect()
 }
 
-/// The equations with the root's Study parameters (the first eight unknowns) restricted to the
-/// planar group of `frame` (`x = (s0, s1 n)`, `y = (0, s2 u + s3 v)`, `s` four new unknowns
-/// placed after the others, whose indices are kept): the equations that vanish on the group
-/// (the Study quadric, the axis and plane conditions of planar legs) are dropped — those whose
-/// coefficients all fall below `1e-12` of the largest before the restriction.
-fn planar_restriction(equations: &[Poly], frame: &[Vector3<f64>; 3]) -> Vec<Poly> {
+/// A polynomial of the block's `nb` unknowns with the root's Study parameters (the first
+/// eight) restricted to the planar group of `frame` (`x = (s0, s1 n)`, `y = (0, s2 u + s3 v)`):
+/// the four `s` take the first places, the other unknowns keep their order after them.
+fn planar_substitution(p: &Poly, frame: &[Vector3<f64>; 3]) -> Poly {
     let [n, u, v] = frame;
-    let nb = equations.first().map_or(0, Poly::nvars);
+    let nb = p.nvars();
     let ring = nb + 4;
     let s = |k: usize| Poly::variable(ring, nb + k);
     let zero = Poly::zero(ring);
@@ -1334,7 +1348,6 @@ fn planar_restriction(equations: &[Poly], frame: &[Vector3<f64>; 3]) -> Vec<Poly
         s(2) * u.y + s(3) * v.y,
         s(2) * u.z + s(3) * v.z,
     ];
-    let largest = |p: &Poly| p.terms().map(|(_, c)| c.norm()).fold(0.0, f64::max);
     // Variables 0..8 leave; the four new ones take their place at the front.
     let map: Vec<usize> = (0..ring)
         .map(|k| match k {
@@ -1343,13 +1356,35 @@ fn planar_restriction(equations: &[Poly], frame: &[Vector3<f64>; 3]) -> Vec<Poly
             k => k - nb,
         })
         .collect();
+    let widened = p.relabel(ring, &(0..nb).collect::<Vec<_>>());
+    (0..8)
+        .fold(widened, |p, k| p.substitute(k, &study[k]))
+        .relabel(nb - 4, &map)
+}
+
+/// The members' Study parameters with the root's restricted to the planar group of `frame`
+/// ([`planar_substitution`]).
+fn planar_members(
+    members: Vec<(usize, StudyPolys)>,
+    frame: &[Vector3<f64>; 3],
+) -> Vec<(usize, StudyPolys)> {
+    members
+        .into_iter()
+        .map(|(b, g)| (b, g.map(|p| planar_substitution(&p, frame))))
+        .collect()
+}
+
+/// The equations with the root's Study parameters restricted to the planar group of `frame`
+/// ([`planar_substitution`]): the equations that vanish on the group (the Study quadric, the
+/// axis and plane conditions of planar legs) are dropped — those whose coefficients all fall
+/// below `1e-12` of the largest before the restriction.
+fn planar_restriction(equations: &[Poly], frame: &[Vector3<f64>; 3]) -> Vec<Poly> {
+    let largest = |p: &Poly| p.terms().map(|(_, c)| c.norm()).fold(0.0, f64::max);
     equations
         .iter()
         .filter_map(|e| {
-            let before = largest(e);
-            let widened = e.relabel(ring, &(0..nb).collect::<Vec<_>>());
-            let restricted = (0..8).fold(widened, |p, k| p.substitute(k, &study[k]));
-            (largest(&restricted) > 1e-12 * before).then(|| restricted.relabel(nb - 4, &map))
+            let restricted = planar_substitution(e, frame);
+            (largest(&restricted) > 1e-12 * largest(e)).then_some(restricted)
         })
         .collect()
 }

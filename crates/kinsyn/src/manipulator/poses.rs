@@ -164,14 +164,23 @@ impl Manipulator {
     }
 
     /// The frames at `q` of the bodies that `frames` names (their poses at the start of a path).
-    fn frames_at(&self, q: &[f64], frames: &[(usize, Displacement)]) -> Vec<Displacement> {
+    pub(super) fn frames_at(
+        &self,
+        q: &[f64],
+        frames: &[(usize, Displacement)],
+    ) -> Vec<Displacement> {
         frames.iter().map(|&(k, _)| self.body_frame(k, q)).collect()
     }
 
     /// The goal of the bodies' frames a fraction `t` of the way from `from` to the `frames`
     /// asked for, each along the screw between the two poses; a body's pose in the mechanism is
     /// its displacement from its reference, `frame ∘ reference_frame⁻¹`.
-    fn poses_goal(&self, frames: &[(usize, Displacement)], from: &[Displacement], t: f64) -> Goal {
+    pub(super) fn poses_goal(
+        &self,
+        frames: &[(usize, Displacement)],
+        from: &[Displacement],
+        t: f64,
+    ) -> Goal {
         Goal::All(
             frames
                 .iter()

@@ -631,3 +631,121 @@ fn a_slider_not_across_the_platform_revolute_keeps_the_base_point_on_a_moving_qu
     }
     assert!(value(a + axis * 0.1) > 1e-4);
 }
+
+/// A Delta (Clavel 1988) as a description of several bodies: three arms on cranks about
+/// horizontal axes tangent to the base circle (radius `rb`, arm length `la`), each holding the
+/// platform (radius `r`, `depth` below the base) by a pair of U–S rods of equal length, a
+/// parallelogram `2 h` wide; all frames unturned. Returns the description and, for each arm,
+/// its pivot, its axis and its platform point's radial direction.
+fn delta(rb: f64, la: f64, r: f64, depth: f64, h: f64) -> (Manipulator, Vec<[Vector3<f64>; 3]>) {
+    let mut bodies = Vec::new();
+    let mut legs = Vec::new();
+    let mut arms = Vec::new();
+    for i in 0..3 {
+        let phi = (90.0 + 120.0 * f64::from(i)).to_radians();
+        let u = Vector3::new(phi.cos(), phi.sin(), 0.0);
+        let t = Vector3::new(-phi.sin(), phi.cos(), 0.0);
+        let (a, e) = (u * rb, u * (rb + la));
+        let arm = format!("arm{}", i + 1);
+        bodies.push(json!({"name": arm, "position": [e.x, e.y, e.z]}));
+        legs.push(
+            json!({"chain": "R!", "from": "base", "to": arm, "first": [a.x, a.y, 0.0],
+            "last": [a.x - e.x, a.y - e.y, 0.0], "axes": [[t.x, t.y, 0.0]]}),
+        );
+        for s in [1.0, -1.0] {
+            let p = u * r + t * (s * h);
+            legs.push(json!({"chain": "US", "from": arm, "to": "platform",
+                "first": [s * h * t.x, s * h * t.y, 0.0], "last": [p.x, p.y, p.z],
+                "axes": [[t.x, t.y, 0.0], [0.0, 0.0, 1.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]]}));
+        }
+        arms.push([a, t, u]);
+    }
+    bodies.push(json!({"name": "platform", "position": [0.0, 0.0, -depth]}));
+    let d = json!({
+        "format": "kinsyn-manipulator/2",
+        "name": "Delta",
+        "units": {"length": "mm", "angle": "deg"},
+        "ground": "base",
+        "bodies": bodies,
+        "end_effector": "platform",
+        "legs": legs,
+    });
+    (Manipulator::from_json(&d.to_string()).unwrap(), arms)
+}
+
+#[test]
+fn a_delta_has_two_translational_assemblies_those_of_its_three_spheres() {
+    // Clavel 1988 (Proc. 18th ISIR); Pierrot, Reynaud & Fournier 1990 (Robotica 8): with the
+    // forearms parallelograms the platform only translates, and its centre lies on a sphere of
+    // the forearm's length about each elbow (moved in by the platform radius): two assemblies.
+    // The arms are bodies held by their cranks (the body tree's held members); the pairs of
+    // U–S rods are distance legs, so the general path also finds the assemblies where the
+    // pairs are not parallelograms (the platform turned).
+    let (rb, la, r, depth, h) = (200.0, 200.0, 50.0, 400.0, 30.0);
+    let (m, arms) = delta(rb, la, r, depth, h);
+    let lb = (rb + la - r).hypot(depth);
+    for (seed, theta) in [(1, [10.0_f64, -5.0, 20.0]), (2, [-30.0, 15.0, 0.0])] {
+        let inputs: Vec<(usize, f64)> = theta
+            .iter()
+            .enumerate()
+            .map(|(a, t)| (a, t.to_radians()))
+            .collect();
+        let blocks = m
+            .body_blocks(&InputValues::Given(&inputs), &Chart::random_linear(seed))
+            .unwrap();
+        assert_eq!(blocks.len(), 1, "one block: the platform and its arms");
+        let ps = &blocks[0].system;
+        let settings = SolveSettings {
+            seed,
+            ..SolveSettings::default()
+        };
+        let found = solve_overdetermined(ps.system(), &settings).unwrap();
+        let translational: Vec<Vector3<f64>> = found
+            .solutions()
+            .filter(|s| s.regular && s.real && !ps.on_null_cone(&s.x))
+            .filter_map(|s| {
+                let x: Vec<f64> = s.x.iter().map(|c| c.re).collect();
+                let g = ps.displacement(&x).ok()?;
+                (g.rotation.angle() < 1e-9).then_some(g.translation.vector)
+            })
+            .collect();
+        // The three spheres by hand: elbow i turned by θ_i about its crank's axis.
+        let centres: Vec<Vector3<f64>> = arms
+            .iter()
+            .zip(theta)
+            .map(|([a, t, u], th)| {
+                let turn = nalgebra::Rotation3::from_axis_angle(
+                    &nalgebra::Unit::new_normalize(*t),
+                    th.to_radians(),
+                );
+                a + turn * (u * la) - u * r
+            })
+            .collect();
+        let (c1, c2, c3) = (centres[0], centres[1], centres[2]);
+        // Trilateration: the plane of the two radical planes' line, then the line's two points
+        // at distance lb from c1.
+        let n = (c2 - c1).cross(&(c3 - c1));
+        let mid = |p: Vector3<f64>, q: Vector3<f64>| (p.norm_squared() - q.norm_squared()) / 2.0;
+        let m3 = nalgebra::Matrix3::from_rows(&[
+            (c2 - c1).transpose(),
+            (c3 - c1).transpose(),
+            n.transpose(),
+        ]);
+        let foot = m3
+            .lu()
+            .solve(&Vector3::new(mid(c2, c1), mid(c3, c1), n.dot(&c1)))
+            .unwrap();
+        let depth_left = (lb * lb - (foot - c1).norm_squared()).sqrt();
+        let expected = [
+            foot + n.normalize() * depth_left,
+            foot - n.normalize() * depth_left,
+        ];
+        assert_eq!(translational.len(), 2, "θ = {theta:?}: {translational:?}");
+        for e in expected {
+            assert!(
+                translational.iter().any(|p| (p - e).norm() < 1e-8 * lb),
+                "θ = {theta:?}: {e} not among {translational:?}"
+            );
+        }
+    }
+}

@@ -8,6 +8,7 @@
 mod catalogue;
 mod chain;
 mod common;
+mod component_motion;
 mod fuzz_corpus;
 mod generic_ranks;
 mod geometry_polynomials;

@@ -3,10 +3,13 @@
 
 use kinsyn::homotopy::Decomposition;
 use kinsyn::manipulator::{
-    BlockModes, DecompositionMethod, LocalMotion, Manipulator, ModeComponent, OperationModes,
+    BlockModes, ComponentMotion, DecompositionMethod, LocalMotion, Manipulator, ModeComponent,
+    OperationModes,
 };
 use kinsyn::poly::{C64, System};
-use kinsyn_report::components::{Components, ComponentsOptions, Decomposed, method_name};
+use kinsyn_report::components::{
+    Components, ComponentsOptions, Decomposed, method_name, product_factors,
+};
 use kinsyn_report::manipulator::pose_text;
 use std::fmt::Write as _;
 
@@ -18,11 +21,16 @@ pub(in crate::cli) fn text(c: &Components) -> String {
             system,
             decomposition,
         } => system_text(source, system, decomposition, c.options.method),
-        Decomposed::Manipulator { m, blocks, inputs } => {
+        Decomposed::Manipulator {
+            m,
+            blocks,
+            inputs,
+            mechanism,
+        } => {
             if let [one] = &blocks[..] {
-                manipulator_text(m, one, inputs, &c.options)
+                manipulator_text(m, one, inputs, &c.options, mechanism)
             } else {
-                blocks_text(m, blocks, inputs, &c.options)
+                blocks_text(m, blocks, inputs, &c.options, mechanism)
             }
         }
     }
@@ -165,6 +173,7 @@ fn manipulator_text(
     block: &BlockModes,
     inputs: &[String],
     options: &ComponentsOptions,
+    mechanism: &[Placed],
 ) -> String {
     let modes = &block.modes;
     let system = modes.system.system();
@@ -188,8 +197,55 @@ fn manipulator_text(
     } else {
         "platform".to_string()
     };
-    components_text(&mut out, m, modes, options, &body);
+    components_text(&mut out, m, modes, options, &body, Some(mechanism));
     out
+}
+
+/// The whole mechanism on one component, if placed ([`Decomposed::Manipulator`]).
+type Placed = Option<Result<ComponentMotion, String>>;
+
+/// The whole mechanism on a component in words: the end-effector's motion with the held
+/// inputs locked, and the inputs that move; `None` for a component without a real point.
+fn mechanism_text(m: &Manipulator, placed: &Placed) -> Option<String> {
+    let body = m
+        .bodies()
+        .get(m.end_effector())
+        .map_or("platform", |b| b.name.as_str());
+    let on = placed.as_ref()?;
+    Some(match on {
+        Err(e) => format!("the whole mechanism not placed on a real point of it ({e})"),
+        Ok(c) => {
+            let labels = |keep: &dyn Fn(usize) -> bool| {
+                let l: Vec<String> = (0..m.actuators().len())
+                    .filter(|&a| keep(a))
+                    .map(|a| m.actuators()[a].label())
+                    .collect();
+                if l.is_empty() {
+                    "none".to_string()
+                } else {
+                    l.join(" ")
+                }
+            };
+            let pattern = c
+                .mode
+                .pattern
+                .as_ref()
+                .map_or_else(|| "?".to_string(), ToString::to_string);
+            let mut text = format!(
+                "whole mechanism: \"{body}\" {} dof, {pattern}; inputs moving: {}",
+                c.mode.dof,
+                labels(&|a| c.moving[a])
+            );
+            if c.held.len() < m.actuators().len() {
+                let _ = write!(
+                    text,
+                    "; free but still: {}",
+                    labels(&|a| !c.moving[a] && !c.held.contains(&a))
+                );
+            }
+            text
+        }
+    })
 }
 
 /// The text report of a manipulator of several moving bodies: each block of its body tree,
@@ -199,6 +255,7 @@ fn blocks_text(
     blocks: &[BlockModes],
     inputs: &[String],
     options: &ComponentsOptions,
+    mechanism: &[Placed],
 ) -> String {
     let mut out = String::new();
     let free = blocks.first().is_some_and(|b| b.modes.free_inputs);
@@ -236,7 +293,7 @@ fn blocks_text(
             system.nvars(),
             system.variables().join(", ")
         );
-        components_text(&mut out, m, &b.modes, options, &name(Some(b.body)));
+        components_text(&mut out, m, &b.modes, options, &name(Some(b.body)), None);
     }
     let counts: Vec<usize> = blocks.iter().map(|b| b.modes.components.len()).collect();
     let total: usize = counts.iter().product();
@@ -249,6 +306,28 @@ fn blocks_text(
             .collect::<Vec<_>>()
             .join(" × ")
     );
+    for (pick, placed) in product_factors(&counts).iter().zip(mechanism) {
+        let components: Vec<&ModeComponent> = pick
+            .iter()
+            .zip(blocks)
+            .map(|(&k, b)| &b.modes.components[k])
+            .collect();
+        let dimension: usize = components.iter().map(|c| c.dimension).sum();
+        let Some(text) = mechanism_text(m, placed).filter(|_| dimension > 0) else {
+            continue;
+        };
+        let _ = writeln!(
+            out,
+            "  product ({}): dimension {dimension}, degree {}; {text}",
+            pick.iter()
+                .map(|k| (k + 1).to_string())
+                .collect::<Vec<_>>()
+                .join(", "),
+            components
+                .iter()
+                .fold(1_usize, |d, c| d.saturating_mul(c.degree))
+        );
+    }
     out
 }
 
@@ -260,12 +339,18 @@ fn components_text(
     modes: &OperationModes,
     options: &ComponentsOptions,
     body: &str,
+    mechanism: Option<&[Placed]>,
 ) {
     let d = &modes.decomposition;
     let _ = writeln!(out, "{}", summary(d, options.method));
     let (isolated, positive): (Vec<&ModeComponent>, Vec<&ModeComponent>) =
         modes.components.iter().partition(|c| c.dimension == 0);
     for c in &positive {
+        let index = modes
+            .components
+            .iter()
+            .position(|o| std::ptr::eq(o, *c))
+            .unwrap_or(0);
         let what = if modes.free_inputs {
             format!("operation mode, {} dof", c.dimension)
         } else {
@@ -293,6 +378,12 @@ fn components_text(
             },
             study_label(&c.sample),
         );
+        if let Some(text) = mechanism
+            .and_then(|on| on.get(index))
+            .and_then(|placed| mechanism_text(m, placed))
+        {
+            let _ = writeln!(out, "    {text}");
+        }
     }
     if !isolated.is_empty() {
         let real: Vec<&&ModeComponent> = isolated
