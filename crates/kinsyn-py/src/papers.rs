@@ -54,17 +54,23 @@ pub fn configurable_velocity_json(
         .map_err(py_err)
 }
 
-/// `kinsyn components FILE [--inputs I] [--free-inputs] [--method M] --seed S --json`, as JSON
-/// text: the irreducible components of a manipulator file's constraint variety or of a Bertini
-/// input file's system. `method` is `by-dimension` (the default) or `regeneration`; `max_paths`
-/// is `--max-paths` (the most paths tracked in all, counted before any tracking; `None` for the
-/// command's default, [`kinsyn::homotopy::DEFAULT_DECOMPOSE_PATHS`]).
+/// `kinsyn components FILE [--inputs I] [--free-inputs | --free F] [--body B] [--method M]
+/// --seed S --json`, as JSON text: the irreducible components of a manipulator file's
+/// constraint variety or of a Bertini input file's system. `method` is `by-dimension` (the
+/// default) or `regeneration`; `max_paths` is `--max-paths` (the most paths tracked in all,
+/// counted before any tracking; `None` for the command's default,
+/// [`kinsyn::homotopy::DEFAULT_DECOMPOSE_PATHS`]); `free` the labels of `--free`, `body`
+/// `--body`.
 #[pyfunction]
 #[pyo3(signature = (path, inputs = None, free_inputs = false, method = "by-dimension", seed = 1,
-    max_paths = None))]
+    max_paths = None, free = None, body = None))]
 #[expect(
     clippy::needless_pass_by_value,
     reason = "PyO3 converts a Python path (str or os.PathLike) to an owned PathBuf"
+)]
+#[expect(
+    clippy::too_many_arguments,
+    reason = "one keyword argument per option of `kinsyn components`, as Python calls it"
 )]
 pub fn components_json(
     py: Python<'_>,
@@ -74,6 +80,8 @@ pub fn components_json(
     method: &str,
     seed: u64,
     max_paths: Option<u64>,
+    free: Option<String>,
+    body: Option<String>,
 ) -> PyResult<String> {
     // The command's clap parses these names.
     let method = match method {
@@ -90,6 +98,8 @@ pub fn components_json(
         method,
         inputs,
         free_inputs,
+        free,
+        body,
         max_paths: max_paths.unwrap_or(kinsyn::homotopy::DEFAULT_DECOMPOSE_PATHS),
     };
     py.detach(|| components_of(&path, &options))

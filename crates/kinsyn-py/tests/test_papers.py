@@ -142,3 +142,22 @@ def test_paper_004_components_at_generic_inputs():
     assert str(e.value) == cli_error(
         "components", str(RUU4), "--inputs", GENERIC_004, "--max-paths", "10"
     )
+
+
+def test_components_with_some_inputs_free_and_another_body():
+    # `free_inputs` as a list is `--free`; `body` is `--body`: the report is the CLI's, and on
+    # each product of the 3-RPS-3-SPR's modes the coupler keeps its module's 3 dof.
+    df = kinsyn.components(SPM, free_inputs=["P1.2", "P4.4"], body="coupler")
+    want = cli_json(
+        "components", str(SPM), "--free", "P1.2,P4.4", "--body", "coupler"
+    )
+    got = dict(df.attrs["report"])
+    for r in (got, want):  # the wall times differ, the rest may not
+        r.pop("seconds")
+        for b in r["blocks"]:
+            b.pop("seconds")
+    assert got == want
+    assert got["free_inputs"] == ["P1.2", "P4.4"]
+    for m in df.mechanism:
+        assert m["body"] == "coupler" and m["dof"] == 1
+        assert m["moving_inputs"] == ["P1.2", "P4.4"]

@@ -30,6 +30,11 @@ pub struct ComponentsOptions {
     pub inputs: Option<String>,
     /// For a manipulator: every input an unknown (modes over input and pose space).
     pub free_inputs: bool,
+    /// For a manipulator: some inputs unknowns (their labels, `--free`), the others held.
+    pub free: Option<String>,
+    /// For a manipulator: the body whose motion is classified on each component (`--body`),
+    /// the end-effector when `None`.
+    pub body: Option<String>,
     /// The most paths to track in all (`--max-paths`;
     /// [`kinsyn::homotopy::DEFAULT_DECOMPOSE_PATHS`] by default, at most
     /// [`MAX_DECOMPOSE_PATHS`]).
@@ -144,6 +149,9 @@ pub enum Decomposed {
         /// component's first real point: `None` for a component without one, an `Err` with
         /// the reason where the mechanism could not be placed there.
         mechanism: Vec<Option<Result<ComponentMotion, String>>>,
+        /// The free inputs (indices into [`Manipulator::actuators`]): all with
+        /// `--free-inputs`, those of `--free`, none at given inputs.
+        free: Vec<usize>,
     },
 }
 
@@ -161,6 +169,26 @@ pub fn product_factors(counts: &[usize]) -> Vec<Vec<usize>> {
 /// The most products of components the whole mechanism is placed on (each a continuation
 /// and a sampled motion); the others are reported without it.
 pub const MAX_PLACED_PRODUCTS: usize = 256;
+
+/// The inputs `text` names free (`--free`, labels such as `R1.1` separated by commas), none
+/// of which `given` (the text of `--inputs`) may give a value.
+fn free_labels(m: &Manipulator, text: &str, given: Option<&str>) -> Result<Vec<usize>, Error> {
+    let free = m
+        .parse_locks(text)
+        .map_err(|e| Error::Input(format!("--free {text:?}: {e}")))?;
+    if let Some(given) = given {
+        let named = m
+            .parse_inputs(given)
+            .map_err(|e| Error::Input(format!("--inputs {given:?}: {e}")))?;
+        if let Some((a, _)) = named.iter().find(|(a, _)| free.contains(a)) {
+            return Err(Error::Input(format!(
+                "--free {text:?}: {} is given a value by --inputs too; a free input is an unknown",
+                m.actuators()[*a].label()
+            )));
+        }
+    }
+    Ok(free)
+}
 
 /// The most real points of a component tried for placing the whole mechanism.
 const MAX_PLACEMENT_TRIES: usize = 16;
@@ -303,6 +331,7 @@ impl Components {
                 blocks,
                 inputs,
                 mechanism,
+                free: free_inputs,
             } => {
                 let reports: Vec<BlockComponentsReport> = blocks
                     .iter()
@@ -327,6 +356,10 @@ impl Components {
                 }
                 ComponentsReport::Manipulator(ManipulatorComponentsReport {
                     manipulator: m.name().to_string(),
+                    free_inputs: free_inputs
+                        .iter()
+                        .map(|&a| m.actuators()[a].label())
+                        .collect(),
                     inputs: if free {
                         ComponentInputs::Free
                     } else {
@@ -465,16 +498,32 @@ fn manipulator_components(
     decompose: DecomposeSettings,
 ) -> Result<Components, Error> {
     let m: Manipulator = load(path)?;
+    let m = match &options.body {
+        None => m,
+        Some(name) => m
+            .with_end_effector(name)
+            .map_err(|e| Error::Input(format!("--body {name:?}: {e}")))?,
+    };
     if options.free_inputs && options.inputs.is_some() {
         return Err(Error::Input(
             "--free-inputs and --inputs exclude each other: free inputs are unknowns".into(),
         ));
     }
+    let free: Vec<usize> = match (&options.free, options.free_inputs) {
+        (Some(text), _) => free_labels(&m, text, options.inputs.as_deref())?,
+        (None, true) => (0..m.actuators().len()).collect(),
+        (None, false) => Vec::new(),
+    };
     let all = inputs_or_reference(&m, options.inputs.as_deref())?;
-    let inputs = if options.free_inputs {
+    let held: Vec<(usize, f64)> = all
+        .iter()
+        .copied()
+        .filter(|(a, _)| !free.contains(a))
+        .collect();
+    let inputs = if held.is_empty() {
         InputValues::Free
     } else {
-        InputValues::Given(&all)
+        InputValues::Given(&held)
     };
     let settings = OperationModeSettings {
         decompose,
@@ -492,12 +541,8 @@ fn manipulator_components(
             Error::Input(format!("{}: {other}", path.display()))
         }
     })?;
-    let inputs = input_texts(&m, &all);
-    let held: Vec<usize> = if options.free_inputs {
-        Vec::new()
-    } else {
-        (0..m.actuators().len()).collect()
-    };
+    let inputs = input_texts(&m, &held);
+    let held: Vec<usize> = held.iter().map(|(a, _)| *a).collect();
     let mechanism = mechanism_on_components(&m, &blocks, &held);
     Ok(Components {
         options: options.clone(),
@@ -506,6 +551,7 @@ fn manipulator_components(
             blocks,
             inputs,
             mechanism,
+            free,
         },
     })
 }
@@ -543,8 +589,11 @@ pub struct SystemComponentsReport {
 pub struct ManipulatorComponentsReport {
     /// The manipulator's name (the description's `name`).
     pub manipulator: String,
-    /// The inputs: given, or free (unknowns).
+    /// The inputs: given (those held, when some are free), or free (unknowns).
     pub inputs: ComponentInputs,
+    /// The free inputs' labels: all with `--free-inputs`, those of `--free`, none at given
+    /// inputs.
+    pub free_inputs: Vec<String>,
     /// The constraint system and the decomposition's counts, at the top level of the report.
     #[serde(flatten)]
     pub decomposition: DecompositionReport,

@@ -284,19 +284,22 @@ pub(super) enum Command {
     ///
     /// FILE is a Bertini input file (any number of equations and unknowns: the components of
     /// every dimension are found, each with its degree and a point) or a manipulator file whose
-    /// legs have a polynomial form (S–S, R–S, S–R, U–U with parallel inner axes such as RUU;
-    /// docs/position-analysis.md). For a manipulator the unknowns are the Study parameters of
-    /// the platform (normalised, so each pose appears twice as ±(x, y)): at fixed inputs
+    /// legs are of a kind with a polynomial form (S–S, R–S, planar and spherical dyads, RPS,
+    /// RUU and more; several bodies as a body tree; docs/position-analysis.md). For a
+    /// manipulator the unknowns are the Study parameters of the platform (normalised, so each
+    /// pose appears twice as ±(x, y)) and the joints that join bodies: at fixed inputs
     /// (--inputs, default the reference values) the components are the assemblies (dimension 0)
     /// and the self-motions (positive dimension: the platform moves while every input is
     /// held); each real assembly is reported with its operation mode — the dof and the motion
     /// pattern of the platform with the inputs released (e.g. X(z), a Schönflies motion). With
-    /// --free-inputs the inputs are unknowns too (tangents of their half angles) and the
-    /// components are the operation modes over input and pose space, their dimension the dof.
+    /// --free-inputs (or --free for some) the inputs are unknowns too and the components are
+    /// the operation modes over input and pose space, their dimension the dof. On each
+    /// component with a real point the legs reach, the whole mechanism is placed: the
+    /// end-effector's motion (or --body's) with the held inputs locked, and which inputs move.
     /// By-dimension (the default) solves a sliced system per dimension; regeneration brings the
     /// equations in one at a time (docs/operation-modes.md).
     #[command(
-        after_help = "Examples:\n  kinsyn components mechanisms/4-ruu.json --inputs 'R1.1=17,R2.1=-11,R3.1=14,R4.1=6'\n  kinsyn components mechanisms/4-ruu.json --inputs 'R1.1=107.19,R2.1=17.19,R3.1=-72.81,R4.1=17.19'\n  kinsyn components examples/systems/twisted-cubic-and-line.bertini --json"
+        after_help = "Examples:\n  kinsyn components mechanisms/4-ruu.json --inputs 'R1.1=17,R2.1=-11,R3.1=14,R4.1=6'\n  kinsyn components mechanisms/3-prrr.json --free-inputs\n  kinsyn components mechanisms/3-rps.json --free P1.2 --inputs 'P2.2=0.1,P3.2=-0.1'\n  kinsyn components mechanisms/4-ruu.json --inputs 'R1.1=107.19,R2.1=17.19,R3.1=-72.81,R4.1=17.19'\n  kinsyn components examples/systems/twisted-cubic-and-line.bertini --json"
     )]
     Components {
         /// A Bertini input file or a manipulator file.
@@ -311,6 +314,14 @@ pub(super) enum Command {
         /// needs --max-paths 700000 with --method regeneration).
         #[arg(long)]
         free_inputs: bool,
+        /// Some inputs of the manipulator unknowns, e.g. 'R1.1,R3.1': the operation modes with
+        /// the others held (at --inputs, or their reference values).
+        #[arg(long, value_name = "LABELS", conflicts_with = "free_inputs")]
+        free: Option<String>,
+        /// The body whose motion is classified on each component (default: the
+        /// end-effector).
+        #[arg(long, value_name = "NAME")]
+        body: Option<String>,
         /// The algorithm: by-dimension (a sliced system per dimension; robust) or regeneration
         /// (equation by equation; fewer paths on large systems such as --free-inputs, but it
         /// can lose components at special inputs — a warning then lists unresolved points).

@@ -285,6 +285,8 @@ fn execute(command: Command) -> Result<String, CliError> {
             file,
             inputs,
             free_inputs,
+            free,
+            body,
             method,
             seed,
             max_paths,
@@ -297,6 +299,8 @@ fn execute(command: Command) -> Result<String, CliError> {
                     method: method.into(),
                     inputs,
                     free_inputs,
+                    free,
+                    body,
                     max_paths,
                 },
             )?;

@@ -255,3 +255,83 @@ fn the_3_rps_3_rps_with_free_inputs_has_the_mobility_of_the_local_analysis() {
             .all(|c| c["dimension"].as_u64() <= Some(mobility))
     );
 }
+
+/// Each component's `mechanism` entry: the body, its dof, the inputs that move.
+fn placed(c: &Value) -> (String, u64, Vec<String>) {
+    let m = &c["mechanism"];
+    assert!(m["error"].is_null(), "placed: {m}");
+    let labels = |v: &Value| -> Vec<String> {
+        v.as_array()
+            .unwrap()
+            .iter()
+            .map(|s| s.as_str().unwrap().to_string())
+            .collect()
+    };
+    (
+        m["body"].as_str().unwrap().to_string(),
+        m["dof"].as_u64().unwrap(),
+        labels(&m["moving_inputs"]),
+    )
+}
+
+#[test]
+fn on_the_3_rps_modes_every_free_input_moves() {
+    // At fixed inputs the 3-RPS has isolated assemblies (16, Schadlbauer et al. 2014), so the
+    // map from a component to its inputs is finite-to-one: a component of dimension k moves k
+    // independent free inputs. With all three free (modes of dimension 3) every leg length
+    // moves; with P1.2 alone free (curves, the others held) P1.2 moves.
+    let v = json(&[
+        "components",
+        "mechanisms/3-rps.json",
+        "--free-inputs",
+        "--json",
+    ]);
+    for c in v["components"].as_array().unwrap() {
+        let (body, dof, moving) = placed(c);
+        assert_eq!((body.as_str(), dof), ("platform", 3));
+        assert_eq!(moving, ["P1.2", "P2.2", "P3.2"]);
+    }
+    let v = json(&[
+        "components",
+        "mechanisms/3-rps.json",
+        "--free",
+        "P1.2",
+        "--inputs",
+        "P2.2=0.1,P3.2=-0.1",
+        "--json",
+    ]);
+    assert_eq!(v["free_inputs"], serde_json::json!(["P1.2"]));
+    let components = v["components"].as_array().unwrap();
+    assert!(!components.is_empty());
+    for c in components {
+        assert_eq!(c["dimension"], 1);
+        let (_, dof, moving) = placed(c);
+        assert_eq!((dof, moving), (1, vec!["P1.2".to_string()]));
+        assert_eq!(
+            c["mechanism"]["held_inputs"],
+            serde_json::json!(["P2.2", "P3.2"])
+        );
+    }
+}
+
+#[test]
+fn a_stacks_coupler_moves_with_its_own_module_only() {
+    // The 3-RPS-3-SPR's coupler hangs from the ground by the lower module alone: on each
+    // product of paper 002's modes it has the lower block's 3 dof, the end-effector 6 (K1 … K4,
+    // eq. 11), and all six inputs move.
+    let v = json(&[
+        "components",
+        "mechanisms/multibody/3-rps-3-spr.json",
+        "--free-inputs",
+        "--body",
+        "coupler",
+        "--json",
+    ]);
+    let products = v["components"].as_array().unwrap();
+    assert_eq!(products.len(), 4);
+    for c in products {
+        let (body, dof, moving) = placed(c);
+        assert_eq!((body.as_str(), dof), ("coupler", 3));
+        assert_eq!(moving.len(), 6, "{moving:?}");
+    }
+}

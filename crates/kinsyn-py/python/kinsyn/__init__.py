@@ -599,28 +599,39 @@ def solve_file(
 def components(
     path: Union[str, "PathLike[str]"],
     inputs: Inputs = None,
-    free_inputs: bool = False,
+    free_inputs: Union[bool, Sequence[str]] = False,
     method: str = "by-dimension",
     seed: int = 1,
     max_paths: Optional[int] = None,
+    body: Optional[str] = None,
 ) -> pd.DataFrame:
     """The irreducible components of the solution set of a manipulator file's constraint
     equations in the Study parameters of its platform (at the ``inputs``, the reference values
-    for inputs not named; or with every input an unknown when ``free_inputs``) or of a Bertini
-    input file's system, by numerical irreducible decomposition (``kinsyn components FILE
-    [--inputs] [--free-inputs] [--method] --seed S --json``; ``method``: ``"by-dimension"`` or
-    ``"regeneration"``; ``max_paths``: ``--max-paths``, the command's default when ``None``, the most paths tracked in all, counted
-    from the degrees before any tracking; past it the call raises ``InputError``).
+    for inputs not named; with every input an unknown when ``free_inputs`` is ``True``, or the
+    inputs it lists, e.g. ``["R1.1", "R3.1"]``, the others held) or of a Bertini input file's
+    system, by numerical irreducible decomposition (``kinsyn components FILE [--inputs]
+    [--free-inputs | --free LABELS] [--body] [--method] --seed S --json``; ``method``:
+    ``"by-dimension"`` or ``"regeneration"``; ``max_paths``: ``--max-paths``, the command's
+    default when ``None``, the most paths tracked in all, counted from the degrees before any
+    tracking; past it the call raises ``InputError``; ``body``: the body whose motion is
+    classified, the end-effector by default).
 
     One row per component: ``dimension`` (0: isolated solutions, the assemblies; above 0: a
-    self-motion, or with ``free_inputs`` an operation mode of that many dof), ``degree``,
-    ``real_points``, ``trace_test_passed`` and ``motion`` (for a manipulator's real assemblies,
-    the operation mode: dof and pattern with the inputs released). ``df.attrs["report"]`` is
-    the whole report (paths, junk points, unresolved points, seconds).
+    self-motion, or with free inputs an operation mode of that many dof), ``degree``,
+    ``real_points``, ``trace_test_passed``, ``motion`` (for a manipulator's real assemblies,
+    the operation mode: dof and pattern with the inputs released), and ``mechanism`` (the whole
+    mechanism placed at a real point the legs reach: the body's ``dof`` and ``pattern`` with
+    the held inputs locked, ``moving_inputs``, ``still_inputs``, ``held_inputs``; ``None``
+    for a component without one). ``df.attrs["report"]`` is the whole report (paths, junk
+    points, unresolved points, seconds).
     """
+    if isinstance(free_inputs, bool):
+        every, some = free_inputs, None
+    else:
+        every, some = False, ",".join(free_inputs)
     r = json.loads(
         _native.components_json(
-            path, _inputs_text(inputs), free_inputs, method, seed, max_paths
+            path, _inputs_text(inputs), every, method, seed, max_paths, some, body
         )
     )
     df = pd.DataFrame(
@@ -631,10 +642,18 @@ def components(
                 "real_points": c["real_points"],
                 "trace_test_passed": c["trace_test_passed"],
                 "motion": c.get("motion"),
+                "mechanism": c.get("mechanism"),
             }
             for c in r["components"]
         ],
-        columns=["dimension", "degree", "real_points", "trace_test_passed", "motion"],
+        columns=[
+            "dimension",
+            "degree",
+            "real_points",
+            "trace_test_passed",
+            "motion",
+            "mechanism",
+        ],
     )
     df.attrs["report"] = r
     return df

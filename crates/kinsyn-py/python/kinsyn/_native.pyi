@@ -39,6 +39,8 @@ def components_json(
     method: str = "by-dimension",
     seed: int = 1,
     max_paths: Optional[int] = None,
+    free: Optional[str] = None,
+    body: Optional[str] = None,
 ) -> str: ...
 def sweep_json(
     out: Union[str, PathLike[str]],

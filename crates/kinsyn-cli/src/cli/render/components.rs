@@ -26,11 +26,13 @@ pub(in crate::cli) fn text(c: &Components) -> String {
             blocks,
             inputs,
             mechanism,
+            free,
         } => {
+            let held = held_text(m, inputs, free);
             if let [one] = &blocks[..] {
-                manipulator_text(m, one, inputs, &c.options, mechanism)
+                manipulator_text(m, one, &held, &c.options, mechanism)
             } else {
-                blocks_text(m, blocks, inputs, &c.options, mechanism)
+                blocks_text(m, blocks, &held, &c.options, mechanism)
             }
         }
     }
@@ -167,11 +169,27 @@ fn free_inputs_text(m: &Manipulator, system: &kinsyn::manipulator::PositionSyste
     }
 }
 
+/// The given inputs in words (`LABEL = value`, then the free ones of `--free` named).
+fn held_text(m: &Manipulator, inputs: &[String], free: &[usize]) -> String {
+    let mut text = format!("inputs {}", inputs.join(", "));
+    if !free.is_empty() {
+        let _ = write!(
+            text,
+            "; {} free",
+            free.iter()
+                .map(|&a| m.actuators()[a].label())
+                .collect::<Vec<_>>()
+                .join(" ")
+        );
+    }
+    text
+}
+
 /// The text report of the operation modes (or assemblies and self-motions) of `m`.
 fn manipulator_text(
     m: &Manipulator,
     block: &BlockModes,
-    inputs: &[String],
+    held: &str,
     options: &ComponentsOptions,
     mechanism: &[Placed],
 ) -> String {
@@ -185,7 +203,7 @@ fn manipulator_text(
         if modes.free_inputs {
             free_inputs_text(m, &modes.system)
         } else {
-            format!("inputs {}", inputs.join(", "))
+            held.to_string()
         },
         system.len(),
         system.nvars(),
@@ -253,7 +271,7 @@ fn mechanism_text(m: &Manipulator, placed: &Placed) -> Option<String> {
 fn blocks_text(
     m: &Manipulator,
     blocks: &[BlockModes],
-    inputs: &[String],
+    held: &str,
     options: &ComponentsOptions,
     mechanism: &[Placed],
 ) -> String {
@@ -272,7 +290,7 @@ fn blocks_text(
         if free {
             "inputs free".to_string()
         } else {
-            format!("inputs {}", inputs.join(", "))
+            held.to_string()
         },
         blocks.len()
     );
@@ -351,7 +369,7 @@ fn components_text(
             .iter()
             .position(|o| std::ptr::eq(o, *c))
             .unwrap_or(0);
-        let what = if modes.free_inputs {
+        let what = if modes.free_inputs || options.free.is_some() {
             format!("operation mode, {} dof", c.dimension)
         } else {
             format!("self-motion, {} dof", c.dimension)
@@ -396,7 +414,7 @@ fn components_text(
             isolated.len(),
             if isolated.len() == 1 { "" } else { "s" },
             real.len(),
-            if modes.free_inputs {
+            if modes.free_inputs || options.free.is_some() {
                 ""
             } else {
                 ": the assemblies"
