@@ -6,7 +6,9 @@
 //! regeneration instead of dimension by dimension.
 
 use kinsyn::geometry::Chart;
-use kinsyn::homotopy::{SolveSettings, solve_overdetermined};
+use kinsyn::homotopy::{
+    SolveSettings, fewest_paths_start, solve_overdetermined, square_randomisation,
+};
 use kinsyn::manipulator::{InputValues, Manipulator, OperationModeSettings};
 use std::time::Instant;
 
@@ -64,7 +66,20 @@ fn main() {
         let mut paths = 0;
         let mut refused = None;
         for b in &blocks {
-            match solve_overdetermined(b.system.system(), &SolveSettings::default()) {
+            // The start `analyze --all-assemblies` chooses (after the square randomisation).
+            let square = match square_randomisation(b.system.system(), 1) {
+                Ok(s) => s,
+                Err(e) => {
+                    refused = Some(e.to_string());
+                    continue;
+                }
+            };
+            let (grouped, start) = fewest_paths_start(&square, &b.system.variable_groupings());
+            let settings = SolveSettings {
+                start,
+                ..SolveSettings::default()
+            };
+            match solve_overdetermined(&grouped, &settings) {
                 Ok(r) => paths += r.report.paths(),
                 Err(e) => refused = Some(e.to_string()),
             }

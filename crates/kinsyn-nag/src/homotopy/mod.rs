@@ -57,7 +57,7 @@ pub use real_branch::{
 pub use regeneration::{
     RegenerationProgress, regenerate, regenerate_with_progress, regeneration_paths,
 };
-pub use start::StartSystem;
+pub use start::{StartSystem, fewest_paths_start};
 pub use tracker::{PathFailure, TrackerSettings};
 pub use witness::{
     Component, DEFAULT_DECOMPOSE_PATHS, DecomposeError, DecomposeSettings, Decomposition,

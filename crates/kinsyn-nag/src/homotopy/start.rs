@@ -38,6 +38,32 @@ pub enum StartSystem {
     MultiHomogeneous,
 }
 
+/// The start system that tracks the fewest paths for the square `system`: the total degree,
+/// or the multi-homogeneous start of one of the variable groupings `candidates` (each a
+/// partition of the variables into groups), whichever has the smallest Bézout number; ties
+/// keep the total degree. Returns the system with the grouping chosen (its own when the total
+/// degree wins) and the start. A grouping that is no partition, or whose states are too many
+/// to count, is passed over.
+#[must_use]
+pub fn fewest_paths_start(
+    system: &System,
+    candidates: &[Vec<Vec<usize>>],
+) -> (System, StartSystem) {
+    let total = system.bezout_number();
+    let best = candidates
+        .iter()
+        .filter_map(|groups| {
+            let grouped = system.clone().with_groups(groups.clone()).ok()?;
+            let paths = grouped.multihomogeneous_bezout()?;
+            (paths > 0).then_some((paths, grouped))
+        })
+        .min_by_key(|(paths, _)| *paths);
+    match best {
+        Some((paths, grouped)) if paths < total => (grouped, StartSystem::MultiHomogeneous),
+        _ => (system.clone(), StartSystem::TotalDegree),
+    }
+}
+
 fn random_complex(rng: &mut ChaCha8Rng) -> C64 {
     // A point uniform on the unit circle: generic, and of unit size.
     C64::from_polar(1.0, rng.random_range(0.0..std::f64::consts::TAU))

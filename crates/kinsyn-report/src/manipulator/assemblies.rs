@@ -7,11 +7,14 @@ use crate::Error;
 use crate::solve::{PathOption, solve_with_bar};
 use itertools::Itertools;
 use kinsyn::geometry::Chart;
-use kinsyn::homotopy::{SolveReport, SolveSettings, satisfying, square_randomisation};
+use kinsyn::homotopy::{
+    SolveReport, SolveSettings, StartSystem, fewest_paths_start, satisfying, square_randomisation,
+};
 use kinsyn::manipulator::{
     BodyBlock, InputValues, LegConstraint, Manipulator, PositionRequest, PositionSystemError,
 };
 use kinsyn::mechanism::rotation_log;
+use kinsyn::poly::System;
 use kinsyn::spatial::Displacement;
 use serde::Serialize;
 use std::path::Path;
@@ -187,10 +190,14 @@ fn solve_block(
 ) -> Result<BlockAssemblies, Error> {
     let ps = &block.system;
     check_isolated(m, block)?;
-    let solved = square_randomisation(ps.system(), seed)
+    let square = square_randomisation(ps.system(), seed)
         .map_err(|e| Error::Input(format!("--all-assemblies: {e}")))?;
+    // The start that tracks the fewest paths: the configurable 4-RRR's 5 760 total-degree
+    // paths are 512 multi-homogeneous ones.
+    let (solved, start) = fewest_paths_start(&square, &ps.variable_groupings());
     let settings = SolveSettings {
         seed,
+        start,
         ..SolveSettings::default()
     };
     // One run: its report is the only one.
@@ -419,6 +426,8 @@ impl BlockAssemblies {
                 bezout_number: solved.bezout_number().to_string(),
                 randomised: solved.len() < system.len(),
                 legs: self.kinds.clone(),
+                start: start_name(report.start).to_string(),
+                groups: start_groups(solved, report.start),
             },
             counts: AssemblyCounts {
                 paths: report.paths(),
@@ -494,6 +503,15 @@ impl Formulation {
                 .to_string(),
             randomised: reports.iter().any(|r| r.formulation.randomised),
             legs: blocks.iter().flat_map(|b| b.kinds.clone()).collect(),
+            start: if reports
+                .iter()
+                .all(|r| r.formulation.start == "total-degree")
+            {
+                "total-degree".to_string()
+            } else {
+                "per block".to_string()
+            },
+            groups: Vec::new(),
         }
     }
 }
@@ -618,6 +636,32 @@ pub struct Formulation {
     pub randomised: bool,
     /// What each leg contributes (`distance`, `R–S: distance and plane`, …), in leg order.
     pub legs: Vec<&'static str>,
+    /// The start system, whichever tracks fewer paths: `total-degree`, or `multi-homogeneous`
+    /// over [`Self::groups`] (`per block` for several blocks that differ: see `blocks`).
+    pub start: String,
+    /// The variable groups of a multi-homogeneous start (the Study parameters, or `x` and `y`,
+    /// and each joint's unknown alone); empty for the total degree.
+    pub groups: Vec<Vec<String>>,
+}
+
+/// The name of a start system, as `kinsyn solve --start` takes it.
+fn start_name(start: StartSystem) -> &'static str {
+    match start {
+        StartSystem::TotalDegree => "total-degree",
+        StartSystem::MultiHomogeneous => "multi-homogeneous",
+    }
+}
+
+/// The variable groups of `solved` named, for a multi-homogeneous start; empty otherwise.
+fn start_groups(solved: &System, start: StartSystem) -> Vec<Vec<String>> {
+    match start {
+        StartSystem::TotalDegree => Vec::new(),
+        StartSystem::MultiHomogeneous => solved
+            .groups()
+            .iter()
+            .map(|g| g.iter().map(|&v| solved.variables()[v].clone()).collect())
+            .collect(),
+    }
 }
 
 /// One real assembly: the platform frame where every leg closes.

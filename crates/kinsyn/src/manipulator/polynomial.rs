@@ -507,6 +507,25 @@ impl PositionSystem {
         if self.planar.is_some() { 4 } else { 8 }
     }
 
+    /// The variable groupings whose multi-homogeneous start systems may track fewer paths than
+    /// the total degree ([`crate::homotopy::fewest_paths_start`]): the root's Study parameters
+    /// as one group, or `x` and `y` apart, with each other unknown (a joint's tangent, an
+    /// input's) alone — a joint's unknown enters each equation in low degree.
+    #[must_use]
+    pub fn variable_groupings(&self) -> Vec<Vec<Vec<usize>>> {
+        let (k, n) = (self.study_unknowns(), self.system.nvars());
+        let alone = (k..n).map(|v| vec![v]);
+        vec![
+            std::iter::once((0..k).collect())
+                .chain(alone.clone())
+                .collect(),
+            [(0..k / 2).collect(), (k / 2..k).collect()]
+                .into_iter()
+                .chain(alone)
+                .collect(),
+        ]
+    }
+
     /// Whether the system is a block with members (bodies joined to its root by joints whose
     /// values are unknowns): [`Self::displacement`] is then its root body's frame.
     #[must_use]

@@ -79,7 +79,7 @@ pub(in crate::cli) fn text(m: &Manipulator, all: &AllAssemblies, path: &Path) ->
 /// One block's formulation and solve (`one`: the only block, named as the platform).
 fn block_text(out: &mut String, b: &BlockAssemblies, seed: u64, one: bool) {
     let (report, system, solved) = (&b.report, &b.system, &b.solved);
-    let randomised = if solved.len() < system.len() {
+    let mut randomised = if solved.len() < system.len() {
         format!(
             "; over-constrained: randomised to {} equations, Bézout number {}",
             solved.len(),
@@ -88,6 +88,22 @@ fn block_text(out: &mut String, b: &BlockAssemblies, seed: u64, one: bool) {
     } else {
         format!(", Bézout number {}", system.bezout_number())
     };
+    if report.start == kinsyn::homotopy::StartSystem::MultiHomogeneous {
+        let groups: Vec<String> = solved
+            .groups()
+            .iter()
+            .map(|g| {
+                let names: Vec<&str> = g.iter().map(|&v| solved.variables()[v].as_str()).collect();
+                format!("{{{}}}", names.join(","))
+            })
+            .collect();
+        let _ = write!(
+            randomised,
+            "; multi-homogeneous start over {}: {} paths",
+            groups.join(" "),
+            solved.multihomogeneous_bezout().unwrap_or(0)
+        );
+    }
     let frame = if one {
         "the platform frame".to_string()
     } else {
