@@ -34,7 +34,7 @@ mod singularity;
 pub mod stacking;
 mod sub_mechanism;
 
-pub use body_tree::{BodyBlock, BodyNode};
+pub use body_tree::{BodyBlock, BodyNode, Member};
 pub use component_motion::{BlockPart, ComponentMotion, ComponentMotionError, MOVING_TOLERANCE};
 pub use jacobian::{Jacobians, RowKind, WrenchRow};
 pub use leg::{LegCheck, LegWarning, LegWarningKind};
