@@ -176,6 +176,14 @@ fn free_labels(m: &Manipulator, text: &str, given: Option<&str>) -> Result<Vec<u
     let free = m
         .parse_locks(text)
         .map_err(|e| Error::Input(format!("--free {text:?}: {e}")))?;
+    if free.is_empty() {
+        return Err(Error::Input(format!(
+            "--free {text:?}: name at least one input (e.g. {}); --free-inputs frees them all",
+            m.actuators()
+                .first()
+                .map_or_else(String::new, |a| a.label())
+        )));
+    }
     if let Some(given) = given {
         let named = m
             .parse_inputs(given)
@@ -261,9 +269,13 @@ pub fn components_of(path: &Path, options: &ComponentsOptions) -> Result<Compone
     if text.trim_start().starts_with('{') {
         return manipulator_components(path, options, settings);
     }
-    if options.inputs.is_some() || options.free_inputs {
+    if options.inputs.is_some()
+        || options.free_inputs
+        || options.free.is_some()
+        || options.body.is_some()
+    {
         return Err(Error::Input(format!(
-            "{}: --inputs and --free-inputs apply to manipulator files, not to polynomial systems",
+            "{}: --inputs, --free-inputs, --free and --body apply to manipulator files, not to polynomial systems",
             path.display()
         )));
     }

@@ -132,6 +132,56 @@ fn bad_requests_are_refused_in_one_line() {
     assert_refused(&o, "--inputs with --free-inputs", &["exclude each other"]);
     let o = kinsyn(&["components", "mechanisms/4-ruu.json", "--inputs", "R9.1=3"]);
     assert_refused(&o, "an unknown input", &["R9.1"]);
+    for (args, what, words) in [
+        (
+            &["--free", "R1.1"][..],
+            "--free with a polynomial system",
+            &["apply to manipulator files"][..],
+        ),
+        (
+            &["--body", "B"][..],
+            "--body with a polynomial system",
+            &["apply to manipulator files"][..],
+        ),
+    ] {
+        let mut all = vec![
+            "components",
+            "examples/systems/twisted-cubic-and-line.bertini",
+        ];
+        all.extend_from_slice(args);
+        assert_refused(&kinsyn(&all), what, words);
+    }
+    for (args, what, words) in [
+        (
+            &["--free", ""][..],
+            "an empty --free",
+            &["name at least one input"][..],
+        ),
+        (
+            &["--free", "R1.1\u{1b}[31m"][..],
+            "an unknown --free label",
+            &["is not an actuator"][..],
+        ),
+        (
+            &["--free", "R1.1", "--inputs", "R1.1=3"][..],
+            "an input both free and given",
+            &["is given a value by --inputs too"][..],
+        ),
+        (
+            &["--free", "R1.1", "--free-inputs"][..],
+            "--free with --free-inputs",
+            &["cannot be used with"][..],
+        ),
+        (
+            &["--body", "nothing"][..],
+            "an unknown --body",
+            &["is not a moving body"][..],
+        ),
+    ] {
+        let mut all = vec!["components", "mechanisms/4-ruu.json"];
+        all.extend_from_slice(args);
+        assert_refused(&kinsyn(&all), what, words);
+    }
     let o = kinsyn(&["components", "mechanisms/6-ruu-hexa.json"]);
     assert_refused(
         &o,
