@@ -181,7 +181,7 @@ fn free_labels(m: &Manipulator, text: &str, given: Option<&str>) -> Result<Vec<u
             "--free {text:?}: name at least one input (e.g. {}); --free-inputs frees them all",
             m.actuators()
                 .first()
-                .map_or_else(String::new, |a| a.label())
+                .map_or_else(String::new, kinsyn::manipulator::Actuator::label)
         )));
     }
     if let Some(given) = given {
