@@ -240,9 +240,16 @@ impl Manipulator {
                 .map(|i| self.legs[i].from)
                 .collect();
             if sources.len() > 1 {
-                held.push((k, leg));
+                held.push((k, leg, g));
             }
         }
+        // A body held by a held body is not taken in: the block it would join moves itself.
+        let singles: Vec<usize> = held.iter().map(|&(k, _, _)| group[k]).collect();
+        let held: Vec<(usize, usize)> = held
+            .into_iter()
+            .filter(|(_, _, g)| !singles.contains(g))
+            .map(|(k, leg, _)| (k, leg))
+            .collect();
         for &(k, _) in &held {
             let body = self.bodies[k].body;
             if let Some(t) = self
