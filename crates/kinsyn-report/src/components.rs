@@ -750,7 +750,8 @@ pub struct MechanismReport {
 
 impl MechanismReport {
     /// The report of the mechanism `m` placed on a component (or why it could not be).
-    fn new(m: &Manipulator, on: Result<&ComponentMotion, &String>) -> Self {
+    #[must_use]
+    pub fn new(m: &Manipulator, on: Result<&ComponentMotion, &String>) -> Self {
         let body = m
             .bodies()
             .get(m.end_effector())

@@ -96,7 +96,8 @@ pub fn multihomogeneous_text(system: &System) -> String {
         .map_or_else(|| "not counted".into(), paths_text)
 }
 
-fn start_name(start: StartSystem) -> &'static str {
+/// A start system's name, as `kinsyn solve --start` takes it.
+pub(crate) fn start_name(start: StartSystem) -> &'static str {
     match start {
         StartSystem::TotalDegree => "total-degree",
         StartSystem::MultiHomogeneous => "multi-homogeneous",

@@ -791,6 +791,10 @@ fn bad_all_assemblies_input_is_one_line_and_exit_2() {
         "with --pose",
         &["'--all-assemblies' cannot be used with '--pose"],
     );
+    // The HEXA's unknowns by hand: the platform linkage's 15 bodies joined by 15 revolutes
+    // (one loop, the four-bar's) are one block, the root's 8 Study parameters and 14 hinge
+    // tangents; the six upper bars join it, each through its crank leg R!R whose second
+    // revolute is an unknown: 8 + 14 + 6 = 28.
     assert_refused(
         &kinsyn(&["analyze", "mechanisms/6-ruu-hexa.json", "--all-assemblies"]),
         "the HEXA (its platform linkage held by six crank-and-bar limbs: 28 unknowns)",

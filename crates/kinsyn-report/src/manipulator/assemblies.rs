@@ -4,7 +4,7 @@
 
 use super::{Loaded, clean, input_texts, inputs_or_reference, leg_warnings, load_with_body};
 use crate::Error;
-use crate::solve::{PathOption, solve_with_bar};
+use crate::solve::{PathOption, solve_with_bar, start_name};
 use itertools::Itertools;
 use kinsyn::geometry::Chart;
 use kinsyn::homotopy::{
@@ -644,16 +644,9 @@ pub struct Formulation {
     pub groups: Vec<Vec<String>>,
 }
 
-/// The name of a start system, as `kinsyn solve --start` takes it.
-fn start_name(start: StartSystem) -> &'static str {
-    match start {
-        StartSystem::TotalDegree => "total-degree",
-        StartSystem::MultiHomogeneous => "multi-homogeneous",
-    }
-}
-
 /// The variable groups of `solved` named, for a multi-homogeneous start; empty otherwise.
-fn start_groups(solved: &System, start: StartSystem) -> Vec<Vec<String>> {
+#[must_use]
+pub fn start_groups(solved: &System, start: StartSystem) -> Vec<Vec<String>> {
     match start {
         StartSystem::TotalDegree => Vec::new(),
         StartSystem::MultiHomogeneous => solved

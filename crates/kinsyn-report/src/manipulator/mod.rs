@@ -15,7 +15,7 @@ pub use analyze::{
 pub use assemblies::{
     AllAssemblies, AssembliesReport, Assembly, AssemblyCounts, BlockAssemblies, BlockReport,
     BodyPose, Formulation, MAX_COMBINATIONS, RealAssembly, all_assemblies, all_assemblies_of,
-    pose_text,
+    pose_text, start_groups,
 };
 pub use modes::{
     DEFAULT_MAX_SUBSETS, MAX_SAMPLES, MAX_SUBSETS_CEILING, ModesReport, Selection, modes,

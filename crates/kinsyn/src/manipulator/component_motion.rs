@@ -8,6 +8,12 @@
 //! the component's, so this is the component's motion read by a second method (the loop
 //! closure of the joint graph rather than the polynomial constraints), for a body of any
 //! block and for the products of several blocks' components alike.
+//!
+//! A leg's inverse kinematics is solved here, leg by leg, rather than by the mechanism's own
+//! assembly (`Mechanism::assemble_to`): that Newton's method closes every loop at once from
+//! one start, and a point of another operation mode is rarely within its reach; one leg of
+//! at most six joints, from 32 random starts, is cheap (its Jacobian by central differences
+//! of the product of exponentials, which needs no joint screws of the whole mechanism).
 
 use super::polynomial::PositionSystem;
 use super::{Manipulator, ManipulatorError, Mode};

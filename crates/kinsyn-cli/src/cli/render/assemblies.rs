@@ -89,13 +89,9 @@ fn block_text(out: &mut String, b: &BlockAssemblies, seed: u64, one: bool) {
         format!(", Bézout number {}", system.bezout_number())
     };
     if report.start == kinsyn::homotopy::StartSystem::MultiHomogeneous {
-        let groups: Vec<String> = solved
-            .groups()
+        let groups: Vec<String> = kinsyn_report::manipulator::start_groups(solved, report.start)
             .iter()
-            .map(|g| {
-                let names: Vec<&str> = g.iter().map(|&v| solved.variables()[v].as_str()).collect();
-                format!("{{{}}}", names.join(","))
-            })
+            .map(|g| format!("{{{}}}", g.join(",")))
             .collect();
         let _ = write!(
             randomised,

@@ -8,7 +8,7 @@ use kinsyn::manipulator::{
 };
 use kinsyn::poly::{C64, System};
 use kinsyn_report::components::{
-    Components, ComponentsOptions, Decomposed, method_name, product_factors,
+    Components, ComponentsOptions, Decomposed, MechanismReport, method_name, product_factors,
 };
 use kinsyn_report::manipulator::pose_text;
 use std::fmt::Write as _;
@@ -222,48 +222,35 @@ fn manipulator_text(
 /// The whole mechanism on one component, if placed ([`Decomposed::Manipulator`]).
 type Placed = Option<Result<ComponentMotion, String>>;
 
-/// The whole mechanism on a component in words: the end-effector's motion with the held
-/// inputs locked, and the inputs that move; `None` for a component without a real point.
+/// The whole mechanism on a component in words ([`MechanismReport`]): the end-effector's
+/// motion with the held inputs locked, and the inputs that move; `None` for a component
+/// without a real point.
 fn mechanism_text(m: &Manipulator, placed: &Placed) -> Option<String> {
-    let body = m
-        .bodies()
-        .get(m.end_effector())
-        .map_or("platform", |b| b.name.as_str());
-    let on = placed.as_ref()?;
-    Some(match on {
-        Err(e) => format!("the whole mechanism not placed on a real point of it ({e})"),
-        Ok(c) => {
-            let labels = |keep: &dyn Fn(usize) -> bool| {
-                let l: Vec<String> = (0..m.actuators().len())
-                    .filter(|&a| keep(a))
-                    .map(|a| m.actuators()[a].label())
-                    .collect();
-                if l.is_empty() {
-                    "none".to_string()
-                } else {
-                    l.join(" ")
-                }
-            };
-            let pattern = c
-                .mode
-                .pattern
-                .as_ref()
-                .map_or_else(|| "?".to_string(), ToString::to_string);
-            let mut text = format!(
-                "whole mechanism: \"{body}\" {} dof, {pattern}; inputs moving: {}",
-                c.mode.dof,
-                labels(&|a| c.moving[a])
-            );
-            if c.held.len() < m.actuators().len() {
-                let _ = write!(
-                    text,
-                    "; free but still: {}",
-                    labels(&|a| !c.moving[a] && !c.held.contains(&a))
-                );
-            }
-            text
+    let r = MechanismReport::new(m, placed.as_ref()?.as_ref());
+    if r.dof.is_none() {
+        return Some(format!(
+            "the whole mechanism not placed on a real point of it ({})",
+            r.error.unwrap_or_default()
+        ));
+    }
+    let labels = |l: &[String]| {
+        if l.is_empty() {
+            "none".to_string()
+        } else {
+            l.join(" ")
         }
-    })
+    };
+    let mut text = format!(
+        "whole mechanism: \"{}\" {} dof, {}; inputs moving: {}",
+        r.body,
+        r.dof.unwrap_or(0),
+        r.pattern.unwrap_or_default(),
+        labels(&r.moving_inputs)
+    );
+    if !r.still_inputs.is_empty() || r.held_inputs.len() < m.actuators().len() {
+        let _ = write!(text, "; free but still: {}", labels(&r.still_inputs));
+    }
+    Some(text)
 }
 
 /// The text report of a manipulator of several moving bodies: each block of its body tree,
