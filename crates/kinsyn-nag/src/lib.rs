@@ -33,3 +33,4 @@
 pub mod certify;
 pub mod homotopy;
 pub mod poly;
+pub mod polyhedral;

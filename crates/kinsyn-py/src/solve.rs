@@ -14,8 +14,9 @@ fn start_system(text: &str) -> Result<StartSystem, Error> {
     match text {
         "total-degree" => Ok(StartSystem::TotalDegree),
         "multi-homogeneous" => Ok(StartSystem::MultiHomogeneous),
+        "polyhedral" => Ok(StartSystem::Polyhedral),
         _ => Err(Error::Input(format!(
-            "--start {text:?}: give total-degree or multi-homogeneous"
+            "--start {text:?}: give total-degree, multi-homogeneous or polyhedral"
         ))),
     }
 }

@@ -101,6 +101,7 @@ pub(crate) fn start_name(start: StartSystem) -> &'static str {
     match start {
         StartSystem::TotalDegree => "total-degree",
         StartSystem::MultiHomogeneous => "multi-homogeneous",
+        StartSystem::Polyhedral => "polyhedral",
     }
 }
 
@@ -160,7 +161,7 @@ pub fn check_cost(
                             format!("; --start multi-homogeneous needs {m} for these variable groups")
                         })
                         .unwrap_or_default(),
-                    StartSystem::MultiHomogeneous => String::new(),
+                    StartSystem::MultiHomogeneous | StartSystem::Polyhedral => String::new(),
                 };
                 let raise = match option {
                     PathOption::MaxPaths if limit < homotopy::MAX_PATHS => format!(

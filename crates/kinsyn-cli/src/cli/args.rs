@@ -660,6 +660,8 @@ pub(super) enum StartArg {
     TotalDegree,
     /// The multi-homogeneous Bézout number of paths, for the file's variable groups.
     MultiHomogeneous,
+    /// The mixed volume's number of paths (the BKK bound): fewest for sparse systems.
+    Polyhedral,
 }
 
 impl From<StartArg> for kinsyn::homotopy::StartSystem {
@@ -667,6 +669,7 @@ impl From<StartArg> for kinsyn::homotopy::StartSystem {
         match s {
             StartArg::TotalDegree => Self::TotalDegree,
             StartArg::MultiHomogeneous => Self::MultiHomogeneous,
+            StartArg::Polyhedral => Self::Polyhedral,
         }
     }
 }

@@ -36,6 +36,7 @@
 pub mod nearby;
 mod overdetermined;
 mod parameter;
+mod polyhedral;
 mod real_branch;
 mod regeneration;
 mod start;
@@ -68,6 +69,7 @@ pub use witness::{
 use crate::certify::{Certificate, Reality, certify_roots};
 pub use crate::poly::C64;
 use crate::poly::System;
+use crate::polyhedral::MixedSubdivision;
 use nalgebra::{DMatrix, DVector};
 use nearby::NearPoints;
 use rand::SeedableRng;
@@ -176,6 +178,9 @@ pub enum HomotopyError {
         /// The system's variable groups.
         groups: usize,
     },
+    /// The mixed cells of the polyhedral start system could not be enumerated.
+    #[error("the polyhedral start system: {0}")]
+    MixedCells(#[from] crate::polyhedral::MixedCellError),
     /// More paths than the limit ([`SolveSettings::max_paths`], at most [`MAX_PATHS`]), each
     /// counting [`path_weight`] times.
     #[error("{paths} paths, each counting {weight} times, exceed the limit of {limit}")]
@@ -417,20 +422,25 @@ pub fn solve_with_progress(
     let clock = std::time::Instant::now();
     check_solvable(system, settings)?;
     let mut rng = ChaCha8Rng::seed_from_u64(settings.seed);
-    let homotopy = ProjectiveHomotopy::new(system, settings.start, &mut rng);
-    let starts = homotopy.start_solutions();
+    let (homotopy, starts) = start_paths(system, settings, &mut rng)?;
     let mut ends: Vec<PathEnd> = starts
         .par_iter()
         .enumerate()
         .map(|(k, z)| {
-            let end = track_path(&homotopy, settings.tracker, k, z.clone());
+            let end = match z {
+                Ok(z) => track_path(&homotopy, settings.tracker, k, z.clone()),
+                Err(failure) => failed_start(k, *failure),
+            };
             progress();
             end
         })
         .collect();
     let mut retracked = 0;
     for _ in 0..settings.retrack_rounds {
-        let suspects = suspect_paths(&ends);
+        let suspects: Vec<usize> = suspect_paths(&ends)
+            .into_iter()
+            .filter(|k| starts[*k].is_ok())
+            .collect();
         if suspects.is_empty() {
             break;
         }
@@ -438,9 +448,12 @@ pub fn solve_with_progress(
         let stricter = settings.tracker.stricter();
         let again: Vec<PathEnd> = suspects
             .par_iter()
-            .map(|k| PathEnd {
-                retracked: true,
-                ..track_path(&homotopy, stricter, *k, starts[*k].clone())
+            .filter_map(|k| {
+                let z = starts[*k].as_ref().ok()?;
+                Some(PathEnd {
+                    retracked: true,
+                    ..track_path(&homotopy, stricter, *k, z.clone())
+                })
             })
             .collect();
         for e in again {
@@ -462,14 +475,101 @@ pub fn solve_with_progress(
     })
 }
 
-/// The number of paths of the start system `start` for `system`: its Bézout number, or its
+/// The homotopy of `settings.start` for `system` and its start points, one per path; the
+/// failure of a path whose start could not be found (a polyhedral first-stage path).
+type StartPaths = (ProjectiveHomotopy, Vec<Result<DVector<C64>, PathFailure>>);
+
+fn start_paths(
+    system: &System,
+    settings: &SolveSettings,
+    rng: &mut ChaCha8Rng,
+) -> Result<StartPaths, HomotopyError> {
+    if settings.start != StartSystem::Polyhedral {
+        let homotopy = ProjectiveHomotopy::new(system, settings.start, rng);
+        let starts = homotopy.start_solutions().into_iter().map(Ok).collect();
+        return Ok((homotopy, starts));
+    }
+    let subdivision = polyhedral_subdivision(system, settings.seed)?;
+    let first = polyhedral::polyhedral_start(system, &subdivision, rng, settings.tracker);
+    let found: Vec<Vec<C64>> = first
+        .roots
+        .iter()
+        .filter_map(|r| r.as_ref().ok().cloned())
+        .collect();
+    let homotopy = ProjectiveHomotopy::with_start_system(system, &first.system, found, rng);
+    let mut points = homotopy.start_solutions().into_iter();
+    let starts = first
+        .roots
+        .iter()
+        .map(|r| match r {
+            Ok(_) => Ok(points.next().expect("a start point per root found")),
+            Err(f) => Err(*f),
+        })
+        .collect();
+    Ok((homotopy, starts))
+}
+
+/// The end of a path whose start was not found.
+fn failed_start(k: usize, failure: PathFailure) -> PathEnd {
+    PathEnd {
+        path: k,
+        kind: EndpointKind::Failed,
+        x: None,
+        winding: 0,
+        inverse_condition: 0.0,
+        steps: 0,
+        failure: Some(failure),
+        retracked: false,
+    }
+}
+
+/// The mixed cells of `system`'s supports with the origin ([`crate::polyhedral`]) for the
+/// lifting of `seed`, within [`crate::polyhedral::DEFAULT_MAX_LINEAR_PROGRAMS`]. The last
+/// subdivision computed is kept, so that counting the paths ([`check_solvable`]) and solving
+/// pay for it once.
+///
+/// # Errors
+/// [`HomotopyError::MixedCells`] when the enumeration exceeds its budget.
+pub fn polyhedral_subdivision(
+    system: &System,
+    seed: u64,
+) -> Result<std::sync::Arc<MixedSubdivision>, HomotopyError> {
+    type Kept = Option<(u64, std::sync::Arc<MixedSubdivision>)>;
+    static LAST: std::sync::Mutex<Kept> = std::sync::Mutex::new(None);
+    let supports = crate::polyhedral::supports_of(system, true);
+    if let Ok(last) = LAST.lock()
+        && let Some((s, kept)) = last.as_ref()
+        && *s == seed
+        && kept.supports == supports
+    {
+        return Ok(kept.clone());
+    }
+    let subdivision = std::sync::Arc::new(crate::polyhedral::mixed_cells(
+        &supports,
+        &crate::polyhedral::MixedCellSettings {
+            seed,
+            ..crate::polyhedral::MixedCellSettings::default()
+        },
+    )?);
+    if let Ok(mut last) = LAST.lock() {
+        *last = Some((seed, subdivision.clone()));
+    }
+    Ok(subdivision)
+}
+
+/// The number of paths of the start system `start` for `system`: its Bézout number, its
 /// multi-homogeneous Bézout number for its variable groups (`None` when those are too many to
-/// count, [`crate::poly::multihomogeneous::MAX_GROUP_STATES`]).
+/// count, [`crate::poly::multihomogeneous::MAX_GROUP_STATES`]), or its mixed volume with the
+/// origin (`None` when the mixed cells exceed their budget; the lifting of seed 1, the count
+/// does not depend on it).
 #[must_use]
 pub fn path_count(system: &System, start: StartSystem) -> Option<u128> {
     match start {
         StartSystem::TotalDegree => Some(system.bezout_number()),
         StartSystem::MultiHomogeneous => system.multihomogeneous_bezout(),
+        StartSystem::Polyhedral => polyhedral_subdivision(system, 1)
+            .ok()
+            .map(|s| s.mixed_volume()),
     }
 }
 
@@ -500,9 +600,13 @@ pub fn check_solvable(system: &System, settings: &SolveSettings) -> Result<u128,
     if let Some(i) = system.degrees().iter().position(|d| *d == 0) {
         return Err(HomotopyError::ConstantEquation(i));
     }
-    let count = path_count(system, settings.start).ok_or(HomotopyError::TooManyGroups {
-        groups: system.groups().len(),
-    })?;
+    let count = if settings.start == StartSystem::Polyhedral {
+        polyhedral_subdivision(system, settings.seed)?.mixed_volume()
+    } else {
+        path_count(system, settings.start).ok_or(HomotopyError::TooManyGroups {
+            groups: system.groups().len(),
+        })?
+    };
     let limit = settings.max_paths.min(MAX_PATHS);
     let weight = path_weight(system.nvars());
     if count.saturating_mul(u128::from(weight)) > u128::from(limit) {

@@ -36,6 +36,11 @@ pub enum StartSystem {
     /// Products of random linear forms per variable group: the multi-homogeneous Bézout
     /// number of paths, for the system's variable groups.
     MultiHomogeneous,
+    /// The polyhedral homotopy: a start system with the target's supports (and the origin)
+    /// and random coefficients, solved by the mixed cells of a random lifting: the mixed
+    /// volume's number of paths (the BKK bound), never more than Bézout's
+    /// ([`crate::polyhedral`]).
+    Polyhedral,
 }
 
 /// The start system that tracks the fewest paths for the square `system`: the total degree,
@@ -75,6 +80,9 @@ enum Start {
     /// in group order, then its homogenising coordinate); and the assignments of equations to
     /// groups that complete, which the enumeration of the start solutions follows.
     LinearProduct(Vec<Vec<Vec<Vec<C64>>>>, Assignments),
+    /// A start system given with its roots (the polyhedral homotopy's `G`): its homogenised
+    /// program and the affine roots.
+    Explicit(Program, Vec<Vec<C64>>),
 }
 
 /// The γ-trick homotopy from a start system to a homogenised target, in projective coordinates
@@ -107,6 +115,9 @@ pub(crate) struct ProjectiveWorkspace {
     magnitude_program: Workspace<C64>,
     magnitude_values: Vec<C64>,
     magnitude_jacobian: Vec<C64>,
+    /// The evaluation scratch of an explicit start system.
+    start_program: Option<Workspace<C64>>,
+    start_jacobian: Vec<C64>,
 }
 
 impl ProjectiveHomotopy {
@@ -115,7 +126,7 @@ impl ProjectiveHomotopy {
     pub(crate) fn new(system: &System, kind: StartSystem, rng: &mut ChaCha8Rng) -> Self {
         let n = system.nvars();
         let variable_groups: Vec<Vec<usize>> = match kind {
-            StartSystem::TotalDegree => vec![(0..n).collect()],
+            StartSystem::TotalDegree | StartSystem::Polyhedral => vec![(0..n).collect()],
             StartSystem::MultiHomogeneous => system.groups().to_vec(),
         };
         let homogenised: Vec<_> = system
@@ -141,7 +152,10 @@ impl ProjectiveHomotopy {
             .map(|g| g.iter().map(|_| random_complex(rng)).collect())
             .collect();
         let start = match kind {
-            StartSystem::TotalDegree => Start::TotalDegree(system.degrees()),
+            // The polyhedral start is given with its roots (`with_start_system`).
+            StartSystem::TotalDegree | StartSystem::Polyhedral => {
+                Start::TotalDegree(system.degrees())
+            }
             StartSystem::MultiHomogeneous => {
                 let d = system.multihomogeneous_degrees();
                 let assignments = system
@@ -176,6 +190,34 @@ impl ProjectiveHomotopy {
         }
     }
 
+    /// The γ-trick homotopy from `start_system` (square, in the target's variables, each
+    /// equation of the same degree as the target's) whose affine roots are `roots`, to
+    /// `system`, in one projective group: the second stage of the polyhedral homotopy.
+    pub(crate) fn with_start_system(
+        system: &System,
+        start_system: &System,
+        roots: Vec<Vec<C64>>,
+        rng: &mut ChaCha8Rng,
+    ) -> Self {
+        let mut homotopy = Self::new(system, StartSystem::TotalDegree, rng);
+        let everything = [(0..system.nvars()).collect::<Vec<_>>()];
+        let homogenised: Vec<_> = start_system
+            .equations()
+            .iter()
+            .zip(system.degrees())
+            .map(|(p, d)| {
+                debug_assert_eq!(
+                    p.total_degree(),
+                    d,
+                    "a start equation of the target's degree"
+                );
+                p.homogenize(&everything)
+            })
+            .collect();
+        homotopy.start = Start::Explicit(Program::new(&homogenised, system.nvars() + 1), roots);
+        homotopy
+    }
+
     /// The start solutions, in a fixed order (the path numbers).
     pub(crate) fn start_solutions(&self) -> Vec<DVector<C64>> {
         match &self.start {
@@ -183,6 +225,16 @@ impl ProjectiveHomotopy {
             Start::LinearProduct(forms, assignments) => {
                 self.linear_product_solutions(forms, assignments)
             }
+            Start::Explicit(_, roots) => roots
+                .iter()
+                .map(|x| {
+                    let z = DVector::from_iterator(
+                        self.n + 1,
+                        x.iter().copied().chain([C64::from(1.0)]),
+                    );
+                    self.on_patches(z)
+                })
+                .collect(),
         }
     }
 
@@ -292,9 +344,28 @@ impl ProjectiveHomotopy {
         Some(z)
     }
 
-    /// `Ĝ(z)` into `g` and its Jacobian into `gz`.
-    fn start_values(&self, z: &DVector<C64>, g: &mut [C64], gz: &mut DMatrix<C64>) {
+    /// `Ĝ(z)` into `g` and its Jacobian into `gz`; `scratch` evaluates an explicit start
+    /// system.
+    fn start_values(
+        &self,
+        z: &DVector<C64>,
+        g: &mut [C64],
+        gz: &mut DMatrix<C64>,
+        scratch: (&mut Option<Workspace<C64>>, &mut Vec<C64>),
+    ) {
         match &self.start {
+            Start::Explicit(program, _) => {
+                let (ws, jacobian) = scratch;
+                let ws = ws.get_or_insert_with(|| program.workspace());
+                let dim = self.n + 1;
+                jacobian.resize(self.n * dim, C64::from(0.0));
+                program.evaluate_with_jacobian(z.as_slice(), g, jacobian, ws);
+                for i in 0..self.n {
+                    for c in 0..dim {
+                        gz[(i, c)] = jacobian[i * dim + c];
+                    }
+                }
+            }
             Start::TotalDegree(degrees) => {
                 let h = z[self.n];
                 for (i, d) in degrees.iter().enumerate() {
@@ -387,6 +458,8 @@ impl Homotopy for ProjectiveHomotopy {
             magnitude_program: self.magnitudes.workspace(),
             magnitude_values: vec![C64::from(0.0); n],
             magnitude_jacobian: vec![C64::from(0.0); n * self.dim()],
+            start_program: None,
+            start_jacobian: Vec::new(),
         }
     }
 
@@ -471,13 +544,17 @@ impl Homotopy for ProjectiveHomotopy {
             &mut ws.program,
         );
         hz.fill(C64::from(0.0));
-        let g = &mut ws.start;
-        self.start_values(z, g, hz);
+        self.start_values(
+            z,
+            &mut ws.start,
+            hz,
+            (&mut ws.start_program, &mut ws.start_jacobian),
+        );
         let one_minus_t = C64::from(1.0) - t;
         let gt = self.gamma * t;
         for i in 0..self.n {
-            h[i] = one_minus_t * ws.values[i] + gt * g[i];
-            ht[i] = self.gamma * g[i] - ws.values[i];
+            h[i] = one_minus_t * ws.values[i] + gt * ws.start[i];
+            ht[i] = self.gamma * ws.start[i] - ws.values[i];
             for c in 0..dim {
                 hz[(i, c)] = one_minus_t * ws.jacobian[i * dim + c] + gt * hz[(i, c)];
             }

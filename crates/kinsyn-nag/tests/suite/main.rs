@@ -9,6 +9,7 @@ mod certify;
 mod homotopy;
 mod homotopy_known_roots;
 mod poly;
+mod polyhedral;
 mod real_branch;
 mod system_files;
 mod witness;

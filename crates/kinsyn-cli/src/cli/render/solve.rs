@@ -54,6 +54,7 @@ pub(in crate::cli) fn text(solved: &Solved) -> String {
         match options.start {
             StartSystem::TotalDegree => "total degree",
             StartSystem::MultiHomogeneous => "multi-homogeneous",
+            StartSystem::Polyhedral => "polyhedral",
         },
         report.paths(),
         paths_text(system.bezout_number()),
