@@ -15,8 +15,9 @@ fn start_system(text: &str) -> Result<StartSystem, Error> {
         "total-degree" => Ok(StartSystem::TotalDegree),
         "multi-homogeneous" => Ok(StartSystem::MultiHomogeneous),
         "polyhedral" => Ok(StartSystem::Polyhedral),
+        "auto" => Ok(StartSystem::Auto),
         _ => Err(Error::Input(format!(
-            "--start {text:?}: give total-degree, multi-homogeneous or polyhedral"
+            "--start {text:?}: give auto, total-degree, multi-homogeneous or polyhedral"
         ))),
     }
 }
@@ -48,7 +49,7 @@ fn solve_report(
 /// Every isolated solution of the Bertini input `text` (named `source` in messages), as
 /// `kinsyn solve FILE --json`, as JSON text.
 #[pyfunction]
-#[pyo3(signature = (text, source = "<string>", seed = 1, start = "total-degree", runs = 1,
+#[pyo3(signature = (text, source = "<string>", seed = 1, start = "auto", runs = 1,
     threads = None, certify = true))]
 #[expect(clippy::too_many_arguments, reason = "the options of `kinsyn solve`")]
 pub fn solve_json(
@@ -66,7 +67,7 @@ pub fn solve_json(
 
 /// [`solve_json`] for the Bertini input file at `path` (messages name the file).
 #[pyfunction]
-#[pyo3(signature = (path, seed = 1, start = "total-degree", runs = 1, threads = None,
+#[pyo3(signature = (path, seed = 1, start = "auto", runs = 1, threads = None,
     certify = true))]
 #[expect(
     clippy::needless_pass_by_value,

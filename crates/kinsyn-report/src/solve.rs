@@ -102,6 +102,7 @@ pub(crate) fn start_name(start: StartSystem) -> &'static str {
         StartSystem::TotalDegree => "total-degree",
         StartSystem::MultiHomogeneous => "multi-homogeneous",
         StartSystem::Polyhedral => "polyhedral",
+        StartSystem::Auto => "auto",
     }
 }
 
@@ -161,7 +162,9 @@ pub fn check_cost(
                             format!("; --start multi-homogeneous needs {m} for these variable groups")
                         })
                         .unwrap_or_default(),
-                    StartSystem::MultiHomogeneous | StartSystem::Polyhedral => String::new(),
+                    StartSystem::MultiHomogeneous
+                    | StartSystem::Polyhedral
+                    | StartSystem::Auto => String::new(),
                 };
                 let raise = match option {
                     PathOption::MaxPaths if limit < homotopy::MAX_PATHS => format!(
@@ -173,9 +176,11 @@ pub fn check_cost(
                     ),
                     PathOption::Default => format!("more than the limit of {limit}"),
                 };
+                let start = homotopy::resolve_start(system, settings.start, settings.seed)
+                    .map_or(settings.start, |(s, _)| s);
                 format!(
                     "{source}: the {} start system has {}, {raise}{hint}",
-                    start_name(settings.start),
+                    start_name(start),
                     weighted_paths(paths, weight, system.nvars())
                 )
             }
@@ -431,7 +436,10 @@ struct SolveJson {
     equations: usize,
     bezout_number: String,
     multihomogeneous_bezout_number: String,
+    /// The start system tracked (`auto` resolved).
     start: StartSystem,
+    /// The start system asked for (`auto` by default).
+    start_asked: StartSystem,
     seed: u64,
     threads: usize,
     summary: String,
@@ -441,6 +449,8 @@ struct SolveJson {
     singular: usize,
     at_infinity: usize,
     failed: usize,
+    /// Whether every path ended: only then can the solutions be complete.
+    complete: bool,
     certified: Option<usize>,
     certified_real: Option<usize>,
     retracked: usize,
@@ -501,7 +511,8 @@ impl SolveJson {
             equations: system.len(),
             bezout_number: paths_text(system.bezout_number()),
             multihomogeneous_bezout_number: multihomogeneous_text(system),
-            start: options.start,
+            start: r.start,
+            start_asked: options.start,
             seed: options.seed,
             threads,
             summary: r.summary(),
@@ -511,6 +522,7 @@ impl SolveJson {
             singular: r.singular(),
             at_infinity: r.at_infinity(),
             failed: r.failed(),
+            complete: r.complete(),
             certified: options.certify.then(|| r.certified()),
             certified_real: options.certify.then(|| r.certified_real()),
             retracked: r.retracked,

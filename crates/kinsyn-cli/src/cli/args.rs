@@ -246,10 +246,13 @@ pub(super) enum Command {
     Solve {
         /// A Bertini input file, e.g. examples/systems/cyclic5.bertini.
         file: PathBuf,
-        /// The start system: total-degree (Bézout's number of paths) or multi-homogeneous
-        /// (products of linear forms per `variable_group`: fewer paths when the equations have
-        /// low degree in each group).
-        #[arg(long, value_enum, default_value = "total-degree")]
+        /// The start system: auto (whichever of the others has the fewest paths, named in the
+        /// report), total-degree (Bézout's number of paths), multi-homogeneous (products of
+        /// linear forms per `variable_group`: fewer paths when the equations have low degree in
+        /// each group) or polyhedral (the mixed volume of the Newton polytopes: fewer paths for
+        /// sparse systems, after a search for the mixed cells that auto bounds to 25 linear
+        /// programs per path saved).
+        #[arg(long, value_enum, default_value = "auto")]
         start: StartArg,
         /// Seed of every random choice (γ, patches, start forms): the same seed, the same paths.
         #[arg(long, default_value_t = 1)]
@@ -656,6 +659,8 @@ impl From<ShowArg> for kinsyn_report::solve::Show {
 /// `--start` of `kinsyn solve`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
 pub(super) enum StartArg {
+    /// The fewest paths of the three below.
+    Auto,
     /// Bézout's number of paths.
     TotalDegree,
     /// The multi-homogeneous Bézout number of paths, for the file's variable groups.
@@ -670,6 +675,7 @@ impl From<StartArg> for kinsyn::homotopy::StartSystem {
             StartArg::TotalDegree => Self::TotalDegree,
             StartArg::MultiHomogeneous => Self::MultiHomogeneous,
             StartArg::Polyhedral => Self::Polyhedral,
+            StartArg::Auto => Self::Auto,
         }
     }
 }

@@ -164,11 +164,27 @@ fn katsura5_has_32_certified_roots() {
 
 /// Cyclic-5 has 70 isolated solutions (Björck & Fröberg 1991): of Bézout's 1·2·3·4·5 = 120
 /// paths, 120 − 70 = 50 end at infinity. The equations are invariant under the cyclic shift
-/// `x_i → x_{i+1}` and have real coefficients, so the solution set is closed under both.
+/// `x_i → x_{i+1}` and have real coefficients, so the solution set is closed under both. The
+/// default start (auto) takes the polyhedral one: 70 paths, the mixed volume, none to spare.
 #[test]
 fn cyclic5_has_70_roots_and_50_at_infinity() {
     let file = "examples/systems/cyclic5.bertini";
-    let v = json(&["solve", file, "--json", "--show", "none"]);
+    let auto = json(&["solve", file, "--json", "--show", "none"]);
+    assert_eq!(auto["start"], "polyhedral");
+    assert_eq!(auto["start_asked"], "auto");
+    assert_eq!(count(&auto, "paths"), 70);
+    assert_eq!(count(&auto, "nonsingular"), 70);
+    assert_eq!(count(&auto, "at_infinity"), 0);
+    assert_eq!(auto["complete"], true);
+    let v = json(&[
+        "solve",
+        file,
+        "--json",
+        "--show",
+        "none",
+        "--start",
+        "total-degree",
+    ]);
     assert_eq!(v["bezout_number"], "120");
     assert_eq!(count(&v, "paths"), 120);
     assert_eq!(count(&v, "nonsingular"), 70);
@@ -275,8 +291,13 @@ fn multi_homogeneous_start_tracks_two_paths_for_two_bilinear_equations() {
     assert_eq!(count(&mh, "paths"), 2);
     assert_eq!(count(&mh, "at_infinity"), 0);
     assert_eq!(count(&mh, "certified_real"), 2);
-    let td = json(&["solve", &file, "--json"]);
+    let td = json(&["solve", &file, "--json", "--start", "total-degree"]);
     assert_eq!(count(&td, "paths"), 4);
+    // auto: the fewest paths, the multi-homogeneous start's 2 (the mixed volume is 2 too, and a
+    // tie keeps the start without a first stage).
+    let auto = json(&["solve", &file, "--json"]);
+    assert_eq!(auto["start"], "multi-homogeneous");
+    assert_eq!(count(&auto, "paths"), 2);
     assert_eq!(count(&td, "at_infinity"), 2);
     assert!(same_set(&solutions(&mh), &expected, 1e-10), "{mh:#}");
     assert!(same_set(&solutions(&td), &expected, 1e-10), "{td:#}");
@@ -472,7 +493,11 @@ fn bad_solve_input_is_one_line_and_exit_2() {
         (vec![circle, "--threads", "0"], vec!["--threads 0"]),
         (
             vec![circle, "--start", "random"],
-            vec!["'random'", "--start", "total-degree, multi-homogeneous"],
+            vec![
+                "'random'",
+                "--start",
+                "auto, total-degree, multi-homogeneous, polyhedral",
+            ],
         ),
         (vec![circle, "--show", "some"], vec!["'some'"]),
     ];

@@ -206,7 +206,8 @@ pub struct SolveSettings {
     /// Whether to certify the regular solutions (Krawczyk, [`crate::certify`]).
     pub certify: bool,
     /// How many times paths with suspect endpoints (coinciding regular endpoints: a path jump;
-    /// failures) are tracked again with stricter steps.
+    /// failures) are tracked again, each round with stricter steps than the last
+    /// ([`TrackerSettings::stricter`]).
     pub retrack_rounds: usize,
     /// The most paths to track, each counting [`path_weight`] times: a start system with more
     /// is refused before any is tracked ([`DEFAULT_MAX_PATHS`]; at most [`MAX_PATHS`] is
@@ -221,7 +222,7 @@ impl Default for SolveSettings {
             start: StartSystem::TotalDegree,
             tracker: TrackerSettings::default(),
             certify: true,
-            retrack_rounds: 2,
+            retrack_rounds: 3,
             max_paths: DEFAULT_MAX_PATHS,
         }
     }
@@ -382,6 +383,13 @@ impl SolveReport {
             .count()
     }
 
+    /// Whether every path ended (none failed, after the re-tracking rounds): only then can the
+    /// solutions be complete. A failed path may have been the only one to a root.
+    #[must_use]
+    pub fn complete(&self) -> bool {
+        self.failed() == 0
+    }
+
     /// One line: "12 non-singular solutions (2 real), 52 at infinity, 64 paths".
     #[must_use]
     pub fn summary(&self) -> String {
@@ -420,9 +428,15 @@ pub fn solve_with_progress(
     progress: &(dyn Fn() + Sync),
 ) -> Result<SolveReport, HomotopyError> {
     let clock = std::time::Instant::now();
-    check_solvable(system, settings)?;
+    let (start, _) = check(system, settings)?;
+    // The time of the mixed cells is theirs whether found now or for an earlier count.
+    let checked = clock.elapsed().as_secs_f64();
+    let settings = &SolveSettings {
+        start,
+        ..settings.clone()
+    };
     let mut rng = ChaCha8Rng::seed_from_u64(settings.seed);
-    let (homotopy, starts) = start_paths(system, settings, &mut rng)?;
+    let (homotopy, starts, cells_seconds) = start_paths(system, settings, &mut rng)?;
     let mut ends: Vec<PathEnd> = starts
         .par_iter()
         .enumerate()
@@ -436,7 +450,11 @@ pub fn solve_with_progress(
         })
         .collect();
     let mut retracked = 0;
+    let mut stricter = settings.tracker;
     for _ in 0..settings.retrack_rounds {
+        // Each round stricter than the last: a path that failed or jumped twice gets smaller
+        // steps still.
+        stricter = stricter.stricter();
         let suspects: Vec<usize> = suspect_paths(&ends)
             .into_iter()
             .filter(|k| starts[*k].is_ok())
@@ -445,7 +463,6 @@ pub fn solve_with_progress(
             break;
         }
         retracked += suspects.len();
-        let stricter = settings.tracker.stricter();
         let again: Vec<PathEnd> = suspects
             .par_iter()
             .filter_map(|k| {
@@ -471,13 +488,14 @@ pub fn solve_with_progress(
         ends,
         solutions,
         retracked,
-        seconds: clock.elapsed().as_secs_f64(),
+        seconds: clock.elapsed().as_secs_f64() - checked + cells_seconds,
     })
 }
 
 /// The homotopy of `settings.start` for `system` and its start points, one per path; the
 /// failure of a path whose start could not be found (a polyhedral first-stage path).
-type StartPaths = (ProjectiveHomotopy, Vec<Result<DVector<C64>, PathFailure>>);
+/// And the seconds spent on the mixed cells.
+type StartPaths = (ProjectiveHomotopy, Vec<Result<DVector<C64>, PathFailure>>, f64);
 
 fn start_paths(
     system: &System,
@@ -487,9 +505,13 @@ fn start_paths(
     if settings.start != StartSystem::Polyhedral {
         let homotopy = ProjectiveHomotopy::new(system, settings.start, rng);
         let starts = homotopy.start_solutions().into_iter().map(Ok).collect();
-        return Ok((homotopy, starts));
+        return Ok((homotopy, starts, 0.0));
     }
-    let subdivision = polyhedral_subdivision(system, settings.seed)?;
+    let subdivision = polyhedral_subdivision(
+        system,
+        settings.seed,
+        crate::polyhedral::DEFAULT_MAX_LINEAR_PROGRAMS,
+    )?;
     let first = polyhedral::polyhedral_start(system, &subdivision, rng, settings.tracker);
     let found: Vec<Vec<C64>> = first
         .roots
@@ -506,7 +528,7 @@ fn start_paths(
             Err(f) => Err(*f),
         })
         .collect();
-    Ok((homotopy, starts))
+    Ok((homotopy, starts, subdivision.seconds))
 }
 
 /// The end of a path whose start was not found.
@@ -524,15 +546,15 @@ fn failed_start(k: usize, failure: PathFailure) -> PathEnd {
 }
 
 /// The mixed cells of `system`'s supports with the origin ([`crate::polyhedral`]) for the
-/// lifting of `seed`, within [`crate::polyhedral::DEFAULT_MAX_LINEAR_PROGRAMS`]. The last
-/// subdivision computed is kept, so that counting the paths ([`check_solvable`]) and solving
-/// pay for it once.
+/// lifting of `seed`, within `max_linear_programs`. The last subdivision computed is kept, so
+/// that counting the paths ([`check_solvable`]) and solving pay for it once.
 ///
 /// # Errors
 /// [`HomotopyError::MixedCells`] when the enumeration exceeds its budget.
 pub fn polyhedral_subdivision(
     system: &System,
     seed: u64,
+    max_linear_programs: usize,
 ) -> Result<std::sync::Arc<MixedSubdivision>, HomotopyError> {
     type Kept = Option<(u64, std::sync::Arc<MixedSubdivision>)>;
     static LAST: std::sync::Mutex<Kept> = std::sync::Mutex::new(None);
@@ -548,7 +570,7 @@ pub fn polyhedral_subdivision(
         &supports,
         &crate::polyhedral::MixedCellSettings {
             seed,
-            ..crate::polyhedral::MixedCellSettings::default()
+            max_linear_programs,
         },
     )?);
     if let Ok(mut last) = LAST.lock() {
@@ -561,15 +583,70 @@ pub fn polyhedral_subdivision(
 /// multi-homogeneous Bézout number for its variable groups (`None` when those are too many to
 /// count, [`crate::poly::multihomogeneous::MAX_GROUP_STATES`]), or its mixed volume with the
 /// origin (`None` when the mixed cells exceed their budget; the lifting of seed 1, the count
-/// does not depend on it).
+/// does not depend on it), or the fewest of these ([`StartSystem::Auto`]).
 #[must_use]
 pub fn path_count(system: &System, start: StartSystem) -> Option<u128> {
+    resolve_start(system, start, 1).ok().map(|(_, paths)| paths)
+}
+
+/// How many linear programs per path of the best Bézout-type start [`StartSystem::Auto`] spends
+/// looking for the mixed cells (at least [`AUTO_MIN_PROGRAMS`]) before it keeps that start: a
+/// linear program costs about 50–150 µs of CPU, a path about 0.3–5 ms (more for one that
+/// diverges), so a search that fails costs about as much as the paths.
+pub const AUTO_PROGRAMS_PER_PATH: u128 = 25;
+
+/// The fewest linear programs [`StartSystem::Auto`] allows the mixed cells, whatever the paths.
+pub const AUTO_MIN_PROGRAMS: u128 = 2000;
+
+/// The start system `start` stands for and its number of paths: [`StartSystem::Auto`] resolved to
+/// the one with the fewest paths (ties keep the total degree, then the multi-homogeneous start),
+/// the others as they are; `seed` draws the polyhedral lifting.
+///
+/// # Errors
+/// [`HomotopyError::TooManyGroups`] for a multi-homogeneous start whose groups are too many to
+/// count; [`HomotopyError::MixedCells`] for a polyhedral start whose cells exceed their budget.
+pub fn resolve_start(
+    system: &System,
+    start: StartSystem,
+    seed: u64,
+) -> Result<(StartSystem, u128), HomotopyError> {
+    let too_many_groups = || HomotopyError::TooManyGroups {
+        groups: system.groups().len(),
+    };
     match start {
-        StartSystem::TotalDegree => Some(system.bezout_number()),
-        StartSystem::MultiHomogeneous => system.multihomogeneous_bezout(),
-        StartSystem::Polyhedral => polyhedral_subdivision(system, 1)
-            .ok()
-            .map(|s| s.mixed_volume()),
+        StartSystem::TotalDegree => Ok((start, system.bezout_number())),
+        StartSystem::MultiHomogeneous => Ok((
+            start,
+            system.multihomogeneous_bezout().ok_or_else(too_many_groups)?,
+        )),
+        StartSystem::Polyhedral => Ok((
+            start,
+            polyhedral_subdivision(system, seed, crate::polyhedral::DEFAULT_MAX_LINEAR_PROGRAMS)?
+                .mixed_volume(),
+        )),
+        StartSystem::Auto => {
+            let mut best = (StartSystem::TotalDegree, system.bezout_number());
+            if system.groups().len() > 1
+                && let Some(m) = system.multihomogeneous_bezout()
+                && m < best.1
+            {
+                best = (StartSystem::MultiHomogeneous, m);
+            }
+            let budget = best
+                .1
+                .saturating_mul(AUTO_PROGRAMS_PER_PATH)
+                .clamp(
+                    AUTO_MIN_PROGRAMS,
+                    crate::polyhedral::DEFAULT_MAX_LINEAR_PROGRAMS as u128,
+                );
+            let budget = usize::try_from(budget).unwrap_or(usize::MAX);
+            if let Ok(cells) = polyhedral_subdivision(system, seed, budget)
+                && cells.mixed_volume() < best.1
+            {
+                best = (StartSystem::Polyhedral, cells.mixed_volume());
+            }
+            Ok(best)
+        }
     }
 }
 
@@ -582,6 +659,11 @@ pub fn path_count(system: &System, start: StartSystem) -> Option<u128> {
 /// # Errors
 /// The [`HomotopyError`] [`solve`] would return before tracking.
 pub fn check_solvable(system: &System, settings: &SolveSettings) -> Result<u128, HomotopyError> {
+    check(system, settings).map(|(_, paths)| paths)
+}
+
+/// [`check_solvable`], with the start system resolved ([`resolve_start`]).
+fn check(system: &System, settings: &SolveSettings) -> Result<(StartSystem, u128), HomotopyError> {
     if !system.is_square() {
         return Err(HomotopyError::NotSquare {
             equations: system.len(),
@@ -600,13 +682,7 @@ pub fn check_solvable(system: &System, settings: &SolveSettings) -> Result<u128,
     if let Some(i) = system.degrees().iter().position(|d| *d == 0) {
         return Err(HomotopyError::ConstantEquation(i));
     }
-    let count = if settings.start == StartSystem::Polyhedral {
-        polyhedral_subdivision(system, settings.seed)?.mixed_volume()
-    } else {
-        path_count(system, settings.start).ok_or(HomotopyError::TooManyGroups {
-            groups: system.groups().len(),
-        })?
-    };
+    let (start, count) = resolve_start(system, settings.start, settings.seed)?;
     let limit = settings.max_paths.min(MAX_PATHS);
     let weight = path_weight(system.nvars());
     if count.saturating_mul(u128::from(weight)) > u128::from(limit) {
@@ -616,7 +692,7 @@ pub fn check_solvable(system: &System, settings: &SolveSettings) -> Result<u128,
             limit,
         });
     }
-    Ok(count)
+    Ok((start, count))
 }
 
 /// Independent solves of one system with different random choices (seeds `seed, seed + 1, …`):

@@ -82,7 +82,9 @@ pub(crate) fn polyhedral_start(
         .enumerate()
         .flat_map(|(k, h)| match h.binomial_start() {
             Ok(roots) => roots.into_iter().map(|r| (k, Ok(r))).collect::<Vec<_>>(),
-            Err(_) => (0..h.volume)
+            // Only a cell beyond the path limit has too many roots to list, and the path count
+            // refuses such a system before this stage.
+            Err(_) => (0..h.volume.min(crate::polyhedral::MAX_BINOMIAL_SOLUTIONS))
                 .map(|_| (k, Err(PathFailure::NotFinite)))
                 .collect(),
         })
@@ -91,9 +93,11 @@ pub(crate) fn polyhedral_start(
         .par_iter()
         .map(|(k, start)| {
             let y = start.as_ref().map_err(|f| *f)?;
+            let stricter = settings.stricter();
             cells[*k]
                 .follow(y, settings)
-                .or_else(|_| cells[*k].follow(y, settings.stricter()))
+                .or_else(|_| cells[*k].follow(y, stricter))
+                .or_else(|_| cells[*k].follow(y, stricter.stricter()))
         })
         .collect();
     PolyhedralStart {
@@ -116,7 +120,7 @@ struct CellHomotopy {
     equations: Vec<Vec<(Vec<u32>, C64, f64)>>,
     /// The binomial system: per equation the exponent row `q − p` and `−c_p / c_q`.
     binomial: (Vec<Vec<i64>>, Vec<C64>),
-    volume: u64,
+    volume: u128,
 }
 
 impl CellHomotopy {

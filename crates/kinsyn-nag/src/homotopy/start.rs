@@ -41,6 +41,12 @@ pub enum StartSystem {
     /// volume's number of paths (the BKK bound), never more than Bézout's
     /// ([`crate::polyhedral`]).
     Polyhedral,
+    /// Whichever of the others tracks the fewest paths ([`super::resolve_start`]): the total
+    /// degree, the multi-homogeneous start for the system's variable groups (when it has more
+    /// than one), or the polyhedral start when its mixed cells are found within
+    /// [`super::AUTO_PROGRAMS_PER_PATH`] linear programs per path of the best of the other two.
+    /// A report names the start chosen.
+    Auto,
 }
 
 /// The start system that tracks the fewest paths for the square `system`: the total degree,
@@ -126,7 +132,9 @@ impl ProjectiveHomotopy {
     pub(crate) fn new(system: &System, kind: StartSystem, rng: &mut ChaCha8Rng) -> Self {
         let n = system.nvars();
         let variable_groups: Vec<Vec<usize>> = match kind {
-            StartSystem::TotalDegree | StartSystem::Polyhedral => vec![(0..n).collect()],
+            StartSystem::TotalDegree | StartSystem::Polyhedral | StartSystem::Auto => {
+                vec![(0..n).collect()]
+            }
             StartSystem::MultiHomogeneous => system.groups().to_vec(),
         };
         let homogenised: Vec<_> = system
@@ -153,7 +161,7 @@ impl ProjectiveHomotopy {
             .collect();
         let start = match kind {
             // The polyhedral start is given with its roots (`with_start_system`).
-            StartSystem::TotalDegree | StartSystem::Polyhedral => {
+            StartSystem::TotalDegree | StartSystem::Polyhedral | StartSystem::Auto => {
                 Start::TotalDegree(system.degrees())
             }
             StartSystem::MultiHomogeneous => {

@@ -65,3 +65,47 @@ pub fn cyclic(n: usize) -> System {
     equations.push(product - Poly::real(n, 1.0));
     System::new(names("x", n), equations).expect("well formed")
 }
+
+/// Noon-n (V. W. Noonburg, *A neural network modeled by an adaptive Lotka–Volterra system*, SIAM
+/// J. Appl. Math. 49, 1989; the PoSSo and PHCpack test suites): `x_i Σ_{j≠i} x_j² − 1.1 x_i + 1 = 0`
+/// for `i = 1 … n`. Bézout number `3ⁿ`; it has `3ⁿ − 2n` isolated roots (21, 73, 233 for
+/// `n` = 3, 4, 5), all regular.
+#[must_use]
+pub fn noon(n: usize) -> System {
+    let x: Vec<Poly> = (0..n).map(|i| Poly::variable(n, i)).collect();
+    let equations = (0..n)
+        .map(|i| {
+            let squares = (0..n)
+                .filter(|j| *j != i)
+                .fold(Poly::zero(n), |s, j| s + &x[j] * &x[j]);
+            &x[i] * &squares - x[i].clone() * 1.1 + Poly::real(n, 1.0)
+        })
+        .collect();
+    System::new(names("x", n), equations).expect("well formed")
+}
+
+/// Eco-n (A. Morgan, *Solving Polynomial Systems Using Continuation for Engineering and
+/// Scientific Problems*, 1987, the economics modelling problem; the PoSSo and PHCpack test
+/// suites): `(x_k + Σ_{i=1}^{n−k−1} x_i x_{i+k}) x_n − k = 0` for `k = 1 … n − 1` and
+/// `Σ_{i=1}^{n−1} x_i + 1 = 0`. It has `2^{n−2}` isolated roots (8, 16, 32 for `n` = 5, 6,
+/// 7), all regular.
+///
+/// # Panics
+/// For `n < 2` (the system needs a last variable and one more).
+#[must_use]
+pub fn eco(n: usize) -> System {
+    assert!(n >= 2, "eco-n takes n ≥ 2");
+    let x: Vec<Poly> = (0..n).map(|i| Poly::variable(n, i)).collect();
+    let mut equations = Vec::new();
+    for k in 1..n {
+        // x_k (1-based) is x[k − 1].
+        let mut inner = x[k - 1].clone();
+        for i in 1..n.saturating_sub(k) {
+            inner = inner + &x[i - 1] * &x[i + k - 1];
+        }
+        equations.push(inner * &x[n - 1] - Poly::real(n, k as f64));
+    }
+    let sum = (0..n - 1).fold(Poly::real(n, 1.0), |s, i| s + &x[i]);
+    equations.push(sum);
+    System::new(names("x", n), equations).expect("well formed")
+}

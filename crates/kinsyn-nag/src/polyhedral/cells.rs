@@ -43,7 +43,7 @@ pub struct MixedCell {
     /// binomial system at `t = 0`.
     pub normal: Vec<f64>,
     /// `|det(q_i − p_i)|`: the cell's volume, its number of start solutions.
-    pub volume: u64,
+    pub volume: u128,
 }
 
 /// The mixed cells of a lifting: a fine mixed subdivision's cells of type `(2, …, 2)`.
@@ -57,13 +57,17 @@ pub struct MixedSubdivision {
     pub cells: Vec<MixedCell>,
     /// The linear programs solved to find them.
     pub linear_programs: usize,
+    /// The wall time of the enumeration, in seconds.
+    pub seconds: f64,
 }
 
 impl MixedSubdivision {
     /// The mixed volume: the sum of the cells' volumes.
     #[must_use]
     pub fn mixed_volume(&self) -> u128 {
-        self.cells.iter().map(|c| u128::from(c.volume)).sum()
+        self.cells
+            .iter()
+            .fold(0u128, |sum, c| sum.saturating_add(c.volume))
     }
 }
 
@@ -80,6 +84,9 @@ pub enum MixedCellError {
         /// The points' dimension.
         dimension: usize,
     },
+    /// A cell's volume (an integer determinant) overflowed 128 bits.
+    #[error("a mixed cell's volume overflows 128-bit integers")]
+    Overflow,
     /// The enumeration needed more linear programs than allowed.
     #[error("the mixed-cell enumeration needs more than {limit} linear programs")]
     Budget {
@@ -145,6 +152,7 @@ pub fn mixed_cells(
                 .unwrap_or(n),
         });
     }
+    let clock = std::time::Instant::now();
     let mut rng = ChaCha8Rng::seed_from_u64(settings.seed);
     let lifting: Vec<Vec<f64>> = supports
         .iter()
@@ -164,6 +172,7 @@ pub fn mixed_cells(
         lifting,
         cells,
         linear_programs,
+        seconds: clock.elapsed().as_secs_f64(),
     })
 }
 
@@ -203,15 +212,15 @@ impl Search<'_> {
         if lower.iter().any(Vec::is_empty) {
             return Ok(Vec::new());
         }
-        let mut order: Vec<usize> = (0..self.n).collect();
-        order.sort_by_key(|i| (lower[*i].len(), *i));
+        let first = (0..self.n)
+            .min_by_key(|i| (lower[*i].len(), *i))
+            .expect("at least one support");
         let compatible = self.compatibility(&lower)?;
         let tables = Tables {
             lower: &lower,
-            order: &order,
             compatible: &compatible,
         };
-        let found = lower[order[0]]
+        let found = lower[first]
             .par_iter()
             .enumerate()
             .map(|(k, e)| {
@@ -224,7 +233,7 @@ impl Search<'_> {
         Ok(found.into_iter().flatten().collect())
     }
 
-    /// For each ordered pair of supports `(i, k)`, `i < k` in the search order, and each lower
+    /// For each pair of supports `(i, k)`, `i < k`, and each lower
     /// edge of `i`: the lower edges of `k` compatible with it (their two-support program is
     /// feasible).
     fn compatibility(
@@ -254,7 +263,7 @@ impl Search<'_> {
     }
 
     /// Extends the partial choice `chosen` (edge, its index among its support's lower edges),
-    /// feasible, by the next support in the search order.
+    /// feasible, by each compatible lower edge of the support with the fewest.
     fn extend(
         &self,
         tables: &Tables<'_>,
@@ -262,19 +271,35 @@ impl Search<'_> {
         cells: &mut Vec<MixedCell>,
     ) -> Result<(), MixedCellError> {
         if chosen.len() == self.n {
-            if let Some(cell) = self.cell(chosen) {
+            if let Some(cell) = self.cell(chosen)? {
                 cells.push(cell);
             }
             return Ok(());
         }
-        let next = tables.order[chosen.len()];
-        for (k, f) in tables.lower[next].iter().enumerate() {
-            let fits = chosen
-                .iter()
-                .all(|((i, _, _), e)| tables.compatible_pair(*i, *e, next, k));
-            if !fits {
+        // The support to extend by: the one with the fewest lower edges compatible with every
+        // edge chosen (fail first); none left for some support ends this branch.
+        let mut best: Option<(usize, Vec<usize>)> = None;
+        for next in 0..self.n {
+            if chosen.iter().any(|((i, _, _), _)| *i == next) {
                 continue;
             }
+            let candidates: Vec<usize> = (0..tables.lower[next].len())
+                .filter(|k| {
+                    chosen
+                        .iter()
+                        .all(|((i, _, _), e)| tables.compatible_pair(*i, *e, next, *k))
+                })
+                .collect();
+            if candidates.is_empty() {
+                return Ok(());
+            }
+            if best.as_ref().is_none_or(|(_, b)| candidates.len() < b.len()) {
+                best = Some((next, candidates));
+            }
+        }
+        let (next, candidates) = best.expect("a support not chosen yet");
+        for k in candidates {
+            let f = &tables.lower[next][k];
             chosen.push((*f, k));
             // Two supports are settled by the table; a complete choice by its cell's own check.
             let open = chosen.len() > 2 && chosen.len() < self.n;
@@ -287,8 +312,8 @@ impl Search<'_> {
     }
 
     /// The cell of a complete feasible choice: its inner normal and volume (`None` for a
-    /// degenerate choice of zero volume).
-    fn cell(&self, chosen: &[(Edge, usize)]) -> Option<MixedCell> {
+    /// degenerate choice of zero volume, or a choice whose edges are not all least).
+    fn cell(&self, chosen: &[(Edge, usize)]) -> Result<Option<MixedCell>, MixedCellError> {
         let mut sorted: Vec<Edge> = chosen.iter().map(|(e, _)| *e).collect();
         sorted.sort_by_key(|e| e.0);
         let n = self.n;
@@ -300,16 +325,20 @@ impl Search<'_> {
                     .collect()
             })
             .collect();
-        let volume = integer_determinant(&rows)?.unsigned_abs();
+        let volume = integer_determinant(&rows)
+            .ok_or(MixedCellError::Overflow)?
+            .unsigned_abs();
         if volume == 0 {
-            return None;
+            return Ok(None);
         }
         let a = DMatrix::from_fn(n, n, |r, c| rows[r][c] as f64);
         let b = DVector::from_fn(n, |r, _| {
             let (i, p, q) = sorted[r];
             self.lifting[i][p] - self.lifting[i][q]
         });
-        let normal = a.lu().solve(&b)?;
+        let Some(normal) = a.lu().solve(&b) else {
+            return Ok(None);
+        };
         // The cell's test, decided here by the inequalities themselves (the linear programs
         // only prune): each edge's points least over their support, up to rounding.
         let least = sorted.iter().all(|(i, p, _)| {
@@ -328,13 +357,13 @@ impl Search<'_> {
             (0..support.len()).all(|c| value(c) >= minimum - 1e-9 * scale)
         });
         if !least {
-            return None;
+            return Ok(None);
         }
-        Some(MixedCell {
+        Ok(Some(MixedCell {
             edges: sorted.iter().map(|(_, p, q)| (*p, *q)).collect(),
             normal: normal.iter().copied().collect(),
-            volume: u64::try_from(volume).ok()?,
-        })
+            volume,
+        }))
     }
 
     /// Whether some `α` puts each edge's two lifted points at the minimum of `⟨(a, ω(a)), (α, 1)⟩`
@@ -383,10 +412,9 @@ impl Search<'_> {
     }
 }
 
-/// The search's fixed data: the lower edges, the order of the supports, the compatibility table.
+/// The search's fixed data: the lower edges and the compatibility table.
 struct Tables<'a> {
     lower: &'a [Vec<Edge>],
-    order: &'a [usize],
     compatible: &'a [Vec<Vec<Vec<bool>>>],
 }
 

@@ -33,8 +33,9 @@
 mod binomial;
 mod cells;
 
-pub use binomial::{BinomialError, binomial_roots, hermite_lower};
+pub use binomial::{BinomialError, MAX_BINOMIAL_SOLUTIONS, binomial_roots, hermite_lower};
 pub use cells::{
-    MixedCell, MixedCellError, MixedCellSettings, MixedSubdivision, mixed_cells, mixed_volume,
+    DEFAULT_MAX_LINEAR_PROGRAMS, MixedCell, MixedCellError, MixedCellSettings, MixedSubdivision,
+    mixed_cells, mixed_volume,
     supports_of,
 };

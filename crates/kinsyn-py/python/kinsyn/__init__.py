@@ -564,7 +564,7 @@ class Solutions:
 def solve(
     system: str,
     seed: int = 1,
-    start: str = "total-degree",
+    start: str = "auto",
     runs: int = 1,
     threads: Optional[int] = None,
     certify: bool = True,
@@ -572,7 +572,8 @@ def solve(
 ) -> Solutions:
     """Every isolated solution of the polynomial system ``system``, Bertini input text as
     ``kinsyn solve`` reads it, by homotopy continuation from a ``start`` system
-    (``"total-degree"`` or ``"multi-homogeneous"``), certified by the Krawczyk test unless
+    (``"auto"``, the fewest paths of the others; ``"total-degree"``, ``"multi-homogeneous"`` or
+    ``"polyhedral"``), certified by the Krawczyk test unless
     ``certify`` is false. Messages name the text ``source`` where the command names the file."""
     return Solutions._from_report(
         json.loads(_native.solve_json(system, source, seed, start, runs, threads, certify))
@@ -582,7 +583,7 @@ def solve(
 def solve_file(
     path: Union[str, "PathLike[str]"],
     seed: int = 1,
-    start: str = "total-degree",
+    start: str = "auto",
     runs: int = 1,
     threads: Optional[int] = None,
     certify: bool = True,

@@ -13,7 +13,7 @@ def solve_json(
     text: str,
     source: str = "<string>",
     seed: int = 1,
-    start: str = "total-degree",
+    start: str = "auto",
     runs: int = 1,
     threads: Optional[int] = None,
     certify: bool = True,
@@ -21,7 +21,7 @@ def solve_json(
 def solve_file_json(
     path: Union[str, PathLike[str]],
     seed: int = 1,
-    start: str = "total-degree",
+    start: str = "auto",
     runs: int = 1,
     threads: Optional[int] = None,
     certify: bool = True,

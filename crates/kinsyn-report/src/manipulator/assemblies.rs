@@ -648,7 +648,7 @@ pub struct Formulation {
 #[must_use]
 pub fn start_groups(solved: &System, start: StartSystem) -> Vec<Vec<String>> {
     match start {
-        StartSystem::TotalDegree | StartSystem::Polyhedral => Vec::new(),
+        StartSystem::TotalDegree | StartSystem::Polyhedral | StartSystem::Auto => Vec::new(),
         StartSystem::MultiHomogeneous => solved
             .groups()
             .iter()

@@ -50,11 +50,17 @@ pub(in crate::cli) fn text(solved: &Solved) -> String {
     );
     let _ = writeln!(
         out,
-        "start system: {}, {} paths (Bézout number {}, multi-homogeneous {} for {} variable group{}), seed {}",
-        match options.start {
+        "start system: {}{}, {} paths (Bézout number {}, multi-homogeneous {} for {} variable group{}), seed {}",
+        match report.start {
             StartSystem::TotalDegree => "total degree",
             StartSystem::MultiHomogeneous => "multi-homogeneous",
             StartSystem::Polyhedral => "polyhedral",
+            StartSystem::Auto => "auto",
+        },
+        if options.start == StartSystem::Auto {
+            " (chosen by auto: the fewest paths)"
+        } else {
+            ""
         },
         report.paths(),
         paths_text(system.bezout_number()),
@@ -64,6 +70,15 @@ pub(in crate::cli) fn text(solved: &Solved) -> String {
         options.seed
     );
     let _ = writeln!(out, "{}", report.summary());
+    if !report.complete() {
+        let _ = writeln!(
+            out,
+            "incomplete: {} path{} failed even after {} rounds of stricter steps; a root may be missing (another --seed, or --runs K, finds it)",
+            report.failed(),
+            if report.failed() == 1 { "" } else { "s" },
+            kinsyn::homotopy::SolveSettings::default().retrack_rounds
+        );
+    }
     if options.certify {
         let _ = writeln!(out, "{}", certificate_line(report));
     }
