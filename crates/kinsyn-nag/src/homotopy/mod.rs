@@ -495,7 +495,11 @@ pub fn solve_with_progress(
 /// The homotopy of `settings.start` for `system` and its start points, one per path; the
 /// failure of a path whose start could not be found (a polyhedral first-stage path).
 /// And the seconds spent on the mixed cells.
-type StartPaths = (ProjectiveHomotopy, Vec<Result<DVector<C64>, PathFailure>>, f64);
+type StartPaths = (
+    ProjectiveHomotopy,
+    Vec<Result<DVector<C64>, PathFailure>>,
+    f64,
+);
 
 fn start_paths(
     system: &System,
@@ -617,7 +621,9 @@ pub fn resolve_start(
         StartSystem::TotalDegree => Ok((start, system.bezout_number())),
         StartSystem::MultiHomogeneous => Ok((
             start,
-            system.multihomogeneous_bezout().ok_or_else(too_many_groups)?,
+            system
+                .multihomogeneous_bezout()
+                .ok_or_else(too_many_groups)?,
         )),
         StartSystem::Polyhedral => Ok((
             start,
@@ -632,13 +638,10 @@ pub fn resolve_start(
             {
                 best = (StartSystem::MultiHomogeneous, m);
             }
-            let budget = best
-                .1
-                .saturating_mul(AUTO_PROGRAMS_PER_PATH)
-                .clamp(
-                    AUTO_MIN_PROGRAMS,
-                    crate::polyhedral::DEFAULT_MAX_LINEAR_PROGRAMS as u128,
-                );
+            let budget = best.1.saturating_mul(AUTO_PROGRAMS_PER_PATH).clamp(
+                AUTO_MIN_PROGRAMS,
+                crate::polyhedral::DEFAULT_MAX_LINEAR_PROGRAMS as u128,
+            );
             let budget = usize::try_from(budget).unwrap_or(usize::MAX);
             if let Ok(cells) = polyhedral_subdivision(system, seed, budget)
                 && cells.mixed_volume() < best.1

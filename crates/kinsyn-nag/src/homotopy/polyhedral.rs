@@ -255,17 +255,22 @@ impl Homotopy for CellHomotopy {
                     if *k == 0 {
                         continue;
                     }
-                    let partial: C64 = a
-                        .iter()
-                        .enumerate()
-                        .map(|(l, kl)| {
-                            if l == j {
-                                powers[l][*kl as usize - 1] * f64::from(*kl)
-                            } else {
-                                powers[l][*kl as usize]
-                            }
-                        })
-                        .product();
+                    // ∂(y^a)/∂y_j = a_j y^a / y_j on the torus, where the paths stay; the
+                    // product without y_j's factor near a zero coordinate.
+                    let partial = if z[j].norm() > 1e-100 {
+                        m * f64::from(*k) / z[j]
+                    } else {
+                        a.iter()
+                            .enumerate()
+                            .map(|(l, kl)| {
+                                if l == j {
+                                    powers[l][*kl as usize - 1] * f64::from(*kl)
+                                } else {
+                                    powers[l][*kl as usize]
+                                }
+                            })
+                            .product()
+                    };
                     hz[(i, j)] += w * partial;
                 }
             }

@@ -1,8 +1,8 @@
 //! The mixed cells of a random lifting, by depth-first search over lower edges with linear
 //! programs (the module documentation of [`super`]).
 
+use super::feasibility::{Row, feasible};
 use crate::poly::System;
-use microlp::{ComparisonOp, OptimizationDirection, Problem};
 use nalgebra::{DMatrix, DVector};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -293,7 +293,10 @@ impl Search<'_> {
             if candidates.is_empty() {
                 return Ok(());
             }
-            if best.as_ref().is_none_or(|(_, b)| candidates.len() < b.len()) {
+            if best
+                .as_ref()
+                .is_none_or(|(_, b)| candidates.len() < b.len())
+            {
                 best = Some((next, candidates));
             }
         }
@@ -373,42 +376,34 @@ impl Search<'_> {
         if used >= self.limit {
             return Err(MixedCellError::Budget { limit: self.limit });
         }
-        let mut lp = Problem::new(OptimizationDirection::Minimize);
-        let alpha: Vec<_> = (0..self.n)
-            .map(|_| lp.add_var(0.0, (f64::NEG_INFINITY, f64::INFINITY)))
-            .collect();
-        let row = |from: &[i64], to: &[i64]| -> Vec<(microlp::Variable, f64)> {
-            alpha
-                .iter()
-                .zip(from.iter().zip(to))
-                .filter(|(_, (a, b))| a != b)
-                .map(|(v, (a, b))| (*v, (b - a) as f64))
-                .collect()
-        };
+        let mut rows = Vec::new();
         for (i, p, q) in edges {
             let support = &self.supports[*i];
             let lift = &self.lifting[*i];
             let base = &support[*p];
+            let row = |to: &[i64]| -> Vec<f64> {
+                base.iter().zip(to).map(|(a, b)| (b - a) as f64).collect()
+            };
             // ⟨q − p, α⟩ = ω(p) − ω(q)
-            lp.add_constraint(
-                row(base, &support[*q]).as_slice(),
-                ComparisonOp::Eq,
-                lift[*p] - lift[*q],
-            );
+            rows.push(Row {
+                a: row(&support[*q]),
+                b: lift[*p] - lift[*q],
+                equal: true,
+            });
             for (c, point) in support.iter().enumerate() {
                 if c != *p && c != *q {
                     // ⟨c − p, α⟩ ≥ ω(p) − ω(c)
-                    lp.add_constraint(
-                        row(base, point).as_slice(),
-                        ComparisonOp::Ge,
-                        lift[*p] - lift[c],
-                    );
+                    rows.push(Row {
+                        a: row(point),
+                        b: lift[*p] - lift[c],
+                        equal: false,
+                    });
                 }
             }
         }
-        // Only a proof of infeasibility prunes: a program the simplex cannot finish is taken
-        // as feasible, and the complete choices below it are decided by their own test.
-        Ok(!matches!(lp.solve(), Err(microlp::Error::Infeasible)))
+        // Only a proof of infeasibility prunes: an undecided program counts as feasible, and
+        // the complete choices below it are decided by their own test.
+        Ok(feasible(self.n, &rows))
     }
 }
 

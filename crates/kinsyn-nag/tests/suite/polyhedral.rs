@@ -159,7 +159,12 @@ fn polyhedral_paths_find_every_cyclic_5_root_for_ten_seeds() {
         )
         .unwrap();
         assert_eq!(report.paths(), 70, "seed {seed}");
-        assert_eq!(report.nonsingular(), 70, "seed {seed}: {}", report.summary());
+        assert_eq!(
+            report.nonsingular(),
+            70,
+            "seed {seed}: {}",
+            report.summary()
+        );
         assert_eq!(report.certified(), 70, "seed {seed}");
         assert_eq!(report.at_infinity() + report.failed(), 0);
     }
@@ -199,7 +204,10 @@ fn random_sparse_system(n: usize, terms: usize, degree: u32) -> System {
                 n,
                 (0..terms).map(|_| {
                     let e: Vec<u32> = (0..n).map(|_| rng.random_range(0..=degree)).collect();
-                    (e, C64::new(rng.random_range(-1.0..1.0), rng.random_range(-1.0..1.0)))
+                    (
+                        e,
+                        C64::new(rng.random_range(-1.0..1.0), rng.random_range(-1.0..1.0)),
+                    )
                 }),
             )
         })
@@ -271,7 +279,11 @@ fn random_sparse_systems_agree_with_gfan() {
         let Some(expected) = gfan_mixed_volume(&system) else {
             return;
         };
-        assert_eq!(mv(&system, false, 1), expected, "{n} unknowns, {terms} terms");
+        assert_eq!(
+            mv(&system, false, 1),
+            expected,
+            "{n} unknowns, {terms} terms"
+        );
     }
 }
 
@@ -341,4 +353,66 @@ fn mixed_volume_checked(system: &System) -> usize {
         assert_eq!(ours, gfan, "{:?}", system.variables());
     }
     usize::try_from(ours).unwrap()
+}
+
+#[test]
+fn the_dense_dual_simplex_agrees_with_a_general_simplex() {
+    // The mixed-cell enumeration's own linear programs (polyhedral::feasibility) against
+    // microlp's sparse primal/dual simplex on 400 random systems of inequalities and
+    // equalities in 2–6 unknowns, small integer rows and random right-hand sides: the shape of
+    // the enumeration's programs, feasible and infeasible ones both common.
+    use kinsyn_nag::polyhedral::feasibility::{Row, feasible};
+    use microlp::{ComparisonOp, OptimizationDirection, Problem};
+    let mut rng = ChaCha8Rng::seed_from_u64(7);
+    let (mut agreed, mut infeasible) = (0, 0);
+    for _ in 0..400 {
+        let n = rng.random_range(2..=6usize);
+        let m = rng.random_range(1..=3 * n);
+        let rows: Vec<Row> = (0..m)
+            .map(|k| Row {
+                a: (0..n)
+                    .map(|_| f64::from(rng.random_range(-3i8..=3)))
+                    .collect(),
+                b: rng.random_range(-1.0..1.0),
+                equal: k < n / 3,
+            })
+            .collect();
+        let mut lp = Problem::new(OptimizationDirection::Minimize);
+        let vars: Vec<_> = (0..n)
+            .map(|_| lp.add_var(0.0, (f64::NEG_INFINITY, f64::INFINITY)))
+            .collect();
+        for r in &rows {
+            let terms: Vec<_> = vars
+                .iter()
+                .zip(&r.a)
+                .filter(|(_, c)| **c != 0.0)
+                .map(|(v, c)| (*v, *c))
+                .collect();
+            if terms.is_empty() {
+                continue;
+            }
+            let op = if r.equal {
+                ComparisonOp::Eq
+            } else {
+                ComparisonOp::Ge
+            };
+            lp.add_constraint(terms.as_slice(), op, r.b);
+        }
+        let rows: Vec<Row> = rows
+            .into_iter()
+            .filter(|r| r.a.iter().any(|c| *c != 0.0))
+            .collect();
+        let general = match lp.solve() {
+            Ok(_) => true,
+            Err(microlp::Error::Infeasible) => false,
+            Err(_) => continue,
+        };
+        assert_eq!(feasible(n, &rows), general, "{rows:?}");
+        agreed += 1;
+        infeasible += usize::from(!general);
+    }
+    assert!(
+        agreed > 350 && infeasible > 50,
+        "{agreed} compared, {infeasible} infeasible"
+    );
 }
