@@ -1,12 +1,14 @@
 //! Homotopy continuation side by side with `PHCpack` (`cargo bench -p kinsyn-bench --bench homotopy`): the
 //! forward kinematics of a general Gough–Stewart platform (40 roots of 128 paths), Katsura-7
-//! (128 roots) and cyclic-5 (70 roots). kinsyn on all cores and on one, and `phc -b` (the
-//! blackbox solver of `PHCpack`, Debian package `phcpack`; skipped when absent) on the same
-//! systems. Every measured solve is checked to find every root.
+//! (128 roots), cyclic-5 (70 roots), cyclic-7 (924 roots of 924 polyhedral paths) and noon-5
+//! (233 roots). kinsyn with its default start (`auto`: the polyhedral start for the cyclic and
+//! noon systems, mixed cells included, a new lifting every iteration) on all cores and on one,
+//! and `phc -b` (the blackbox solver of `PHCpack`, Debian package `phcpack`; skipped when
+//! absent) on the same systems. Every measured solve is checked to find every root.
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use kinsyn::geometry::{Chart, gough_stewart};
-use kinsyn::homotopy::{SolveSettings, solve};
+use kinsyn::homotopy::{SolveSettings, StartSystem, solve};
 use kinsyn::poly::{System, families, phc};
 use kinsyn::spatial::{self, Twist};
 use nalgebra::{Point3, Vector3};
@@ -44,29 +46,34 @@ fn bench(c: &mut Criterion) {
         .expect("a thread");
     let mut group = c.benchmark_group("homotopy");
     group.sample_size(10);
+    // Each iteration a new seed: a new lifting, so that the mixed cells are found every time
+    // (the last subdivision is kept for the same seed).
+    let seed = std::sync::atomic::AtomicU64::new(1);
+    let settings = || {
+        let next = seed.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
+        SolveSettings {
+            seed: next,
+            start: StartSystem::Auto,
+            ..SolveSettings::default()
+        }
+    };
     for (name, system, roots) in [
         ("gough-stewart", gough_stewart_system(11), 40),
         ("katsura-7", families::katsura(7), 128),
         ("cyclic-5", families::cyclic(5), 70),
+        ("cyclic-7", families::cyclic(7), 924),
+        ("noon-5", families::noon(5), 233),
     ] {
         let check = |found: usize| assert_eq!(found, roots, "{name}: every root");
         group.bench_function(format!("{name}/kinsyn"), |b| {
             b.iter(|| {
-                check(
-                    solve(&system, &SolveSettings::default())
-                        .expect("square")
-                        .nonsingular(),
-                );
+                check(solve(&system, &settings()).expect("square").nonsingular());
             });
         });
         group.bench_function(format!("{name}/kinsyn-1-thread"), |b| {
             b.iter(|| {
                 single.install(|| {
-                    check(
-                        solve(&system, &SolveSettings::default())
-                            .expect("square")
-                            .nonsingular(),
-                    );
+                    check(solve(&system, &settings()).expect("square").nonsingular());
                 });
             });
         });

@@ -74,7 +74,7 @@ fn main() {
                     continue;
                 }
             };
-            let (grouped, start) = fewest_paths_start(&square, &b.system.variable_groupings());
+            let (grouped, start) = fewest_paths_start(&square, &b.system.variable_groupings(), 1);
             let settings = SolveSettings {
                 start,
                 ..SolveSettings::default()

@@ -1,12 +1,14 @@
 //! kinsyn-nag: numerical algebraic geometry for square and non-square polynomial systems.
 //!
-//! Three layers, each using only those before it:
+//! Four layers, each using only those before it:
 //! - [`poly`]: sparse multivariate polynomials with complex coefficients and systems of them;
 //!   the Bertini and PHCpack input formats read and written ([`poly::bertini`], [`poly::phc`])
 //!   with limits decided before any expansion; multi-homogeneous Bézout counts; a compiled
 //!   straight-line [`poly::Program`] for the values and the Jacobian.
+//! - [`polyhedral`]: Newton polytopes: mixed volumes (the BKK root count) and mixed cells of a
+//!   random lifting, binomial systems.
 //! - [`homotopy`]: every isolated solution of a square system by homotopy continuation
-//!   (total-degree, multi-homogeneous and parameter homotopies, a predictor–corrector tracker
+//!   (total-degree, multi-homogeneous, polyhedral and parameter homotopies, a predictor–corrector tracker
 //!   with an endgame), and the numerical irreducible decomposition of a solution set into
 //!   witness sets (by dimension, or by regeneration; monodromy and the trace test).
 //! - [`certify`]: Krawczyk's operator in interval arithmetic, which proves that a box holds

@@ -226,9 +226,13 @@ def test_a_stack_of_two_modules_has_the_products_of_their_assemblies():
 
 def test_cyclic5_has_70_roots():
     # Björck & Fröberg 1991: cyclic-5 has 70 isolated roots; of Bézout's 120 paths, 50 diverge.
+    # The default start (auto) is the polyhedral one: 70 paths, the mixed volume.
     text = CYCLIC5.read_text()
+    td = kinsyn.solve(text, start="total-degree")
+    assert (td.paths, td.nonsingular, td.at_infinity, td.certified) == (120, 70, 50, 70)
     r = kinsyn.solve(text)
-    assert (r.paths, r.nonsingular, r.at_infinity, r.certified) == (120, 70, 50, 70)
+    assert (r.paths, r.nonsingular, r.at_infinity, r.certified) == (70, 70, 0, 70)
+    assert (r.start, td.start, r.complete) == ("polyhedral", "total-degree", True)
     want = cli_json("solve", str(CYCLIC5))
     np.testing.assert_allclose(
         r.solutions, [[complex(*c) for c in s["x"]] for s in want["solutions"]], atol=1e-12

@@ -49,4 +49,4 @@ pub mod synthesis;
 pub mod verification;
 pub mod workspace;
 
-pub use kinsyn_nag::{certify, homotopy, poly};
+pub use kinsyn_nag::{certify, homotopy, poly, polyhedral};

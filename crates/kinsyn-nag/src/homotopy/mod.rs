@@ -222,7 +222,7 @@ impl Default for SolveSettings {
             start: StartSystem::TotalDegree,
             tracker: TrackerSettings::default(),
             certify: true,
-            retrack_rounds: 3,
+            retrack_rounds: 2,
             max_paths: DEFAULT_MAX_PATHS,
         }
     }
@@ -452,7 +452,7 @@ pub fn solve_with_progress(
     let mut retracked = 0;
     let mut stricter = settings.tracker;
     for _ in 0..settings.retrack_rounds {
-        // Each round stricter than the last: a path that failed or jumped twice gets smaller
+        // Each round stricter than the last: a path that failed or jumped again gets smaller
         // steps still.
         stricter = stricter.stricter();
         let suspects: Vec<usize> = suspect_paths(&ends)
@@ -602,6 +602,16 @@ pub const AUTO_PROGRAMS_PER_PATH: u128 = 25;
 /// The fewest linear programs [`StartSystem::Auto`] allows the mixed cells, whatever the paths.
 pub const AUTO_MIN_PROGRAMS: u128 = 2000;
 
+/// The linear programs [`StartSystem::Auto`] allows the mixed cells against a start of `paths`
+/// paths ([`AUTO_PROGRAMS_PER_PATH`], [`AUTO_MIN_PROGRAMS`]).
+pub(crate) fn auto_budget(paths: u128) -> usize {
+    let budget = paths.saturating_mul(AUTO_PROGRAMS_PER_PATH).clamp(
+        AUTO_MIN_PROGRAMS,
+        crate::polyhedral::DEFAULT_MAX_LINEAR_PROGRAMS as u128,
+    );
+    usize::try_from(budget).unwrap_or(usize::MAX)
+}
+
 /// The start system `start` stands for and its number of paths: [`StartSystem::Auto`] resolved to
 /// the one with the fewest paths (ties keep the total degree, then the multi-homogeneous start),
 /// the others as they are; `seed` draws the polyhedral lifting.
@@ -638,12 +648,7 @@ pub fn resolve_start(
             {
                 best = (StartSystem::MultiHomogeneous, m);
             }
-            let budget = best.1.saturating_mul(AUTO_PROGRAMS_PER_PATH).clamp(
-                AUTO_MIN_PROGRAMS,
-                crate::polyhedral::DEFAULT_MAX_LINEAR_PROGRAMS as u128,
-            );
-            let budget = usize::try_from(budget).unwrap_or(usize::MAX);
-            if let Ok(cells) = polyhedral_subdivision(system, seed, budget)
+            if let Ok(cells) = polyhedral_subdivision(system, seed, auto_budget(best.1))
                 && cells.mixed_volume() < best.1
             {
                 best = (StartSystem::Polyhedral, cells.mixed_volume());

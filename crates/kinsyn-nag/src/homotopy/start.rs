@@ -50,16 +50,31 @@ pub enum StartSystem {
 }
 
 /// The start system that tracks the fewest paths for the square `system`: the total degree,
-/// or the multi-homogeneous start of one of the variable groupings `candidates` (each a
-/// partition of the variables into groups), whichever has the smallest Bézout number; ties
-/// keep the total degree. Returns the system with the grouping chosen (its own when the total
-/// degree wins) and the start. A grouping that is no partition, or whose states are too many
-/// to count, is passed over.
+/// the multi-homogeneous start of one of the variable groupings `candidates` (each a partition
+/// of the variables into groups), whichever has the smallest Bézout number (ties keep the total
+/// degree), or the polyhedral start when its mixed volume is smaller still and its mixed cells
+/// (for the lifting of `seed`) are found within the budget of [`StartSystem::Auto`]. Returns the
+/// system with the grouping chosen (its own when the total degree or the polyhedral start wins)
+/// and the start. A grouping that is no partition, or whose states are too many to count, is
+/// passed over.
 #[must_use]
 pub fn fewest_paths_start(
     system: &System,
     candidates: &[Vec<Vec<usize>>],
+    seed: u64,
 ) -> (System, StartSystem) {
+    let (chosen, start) = fewest_bezout_start(system, candidates);
+    let paths = super::path_count(&chosen, start).unwrap_or(u128::MAX);
+    if let Ok(cells) = super::polyhedral_subdivision(system, seed, super::auto_budget(paths))
+        && cells.mixed_volume() < paths
+    {
+        return (system.clone(), StartSystem::Polyhedral);
+    }
+    (chosen, start)
+}
+
+/// [`fewest_paths_start`] among the total degree and the multi-homogeneous starts only.
+fn fewest_bezout_start(system: &System, candidates: &[Vec<Vec<usize>>]) -> (System, StartSystem) {
     let total = system.bezout_number();
     let best = candidates
         .iter()

@@ -67,9 +67,12 @@ pub fn cyclic(n: usize) -> System {
 }
 
 /// Noon-n (V. W. Noonburg, *A neural network modeled by an adaptive Lotka–Volterra system*, SIAM
-/// J. Appl. Math. 49, 1989; the PoSSo and PHCpack test suites): `x_i Σ_{j≠i} x_j² − 1.1 x_i + 1 = 0`
+/// J. Appl. Math. 49, 1989; the `PoSSo` and `PHCpack` test suites): `x_i Σ_{j≠i} x_j² − 1.1 x_i + 1 = 0`
 /// for `i = 1 … n`. Bézout number `3ⁿ`; it has `3ⁿ − 2n` isolated roots (21, 73, 233 for
 /// `n` = 3, 4, 5), all regular.
+///
+/// # Panics
+/// Never: the system is well formed by construction.
 #[must_use]
 pub fn noon(n: usize) -> System {
     let x: Vec<Poly> = (0..n).map(|i| Poly::variable(n, i)).collect();
@@ -85,7 +88,7 @@ pub fn noon(n: usize) -> System {
 }
 
 /// Eco-n (A. Morgan, *Solving Polynomial Systems Using Continuation for Engineering and
-/// Scientific Problems*, 1987, the economics modelling problem; the PoSSo and PHCpack test
+/// Scientific Problems*, 1987, the economics modelling problem; the `PoSSo` and `PHCpack` test
 /// suites): `(x_k + Σ_{i=1}^{n−k−1} x_i x_{i+k}) x_n − k = 0` for `k = 1 … n − 1` and
 /// `Σ_{i=1}^{n−1} x_i + 1 = 0`. It has `2^{n−2}` isolated roots (8, 16, 32 for `n` = 5, 6,
 /// 7), all regular.

@@ -24,12 +24,15 @@ pub enum BinomialError {
 /// The most solutions of one binomial system (one mixed cell's volume) that are enumerated.
 pub const MAX_BINOMIAL_SOLUTIONS: u128 = 1 << 24;
 
+/// An integer matrix, row by row.
+pub type IntegerMatrix = Vec<Vec<i128>>;
+
 /// `(H, M)` with `V M = H` lower triangular with a positive diagonal and `M` unimodular, by
 /// extended-gcd column operations.
 ///
 /// # Errors
 /// [`BinomialError::Singular`] for a singular `V`, [`BinomialError::Overflow`] past 128 bits.
-pub fn hermite_lower(v: &[Vec<i64>]) -> Result<(Vec<Vec<i128>>, Vec<Vec<i128>>), BinomialError> {
+pub fn hermite_lower(v: &[Vec<i64>]) -> Result<(IntegerMatrix, IntegerMatrix), BinomialError> {
     let n = v.len();
     let mut h: Vec<Vec<i128>> = v
         .iter()
@@ -115,7 +118,7 @@ pub fn binomial_roots(v: &[Vec<i64>], beta: &[C64]) -> Result<Vec<Vec<C64>>, Bin
     let mut partial: Vec<Vec<C64>> = vec![Vec::new()];
     for i in 0..n {
         let hii = h[i][i] as f64;
-        let mut next = Vec::with_capacity(partial.len() * h[i][i] as usize);
+        let mut next = Vec::with_capacity(partial.len() * usize::try_from(h[i][i]).unwrap_or(0));
         for logs in &partial {
             let mut rhs = beta[i].ln();
             for (k, lk) in logs.iter().enumerate() {

@@ -15,8 +15,9 @@ pub struct MixedCellSettings {
     /// The seed of the random lifting.
     pub seed: u64,
     /// The most linear programs the enumeration may solve before it gives up
-    /// ([`MixedCellError::Budget`]): the cost bound, decided before the work. Each takes
-    /// microseconds to a fraction of a millisecond (tens of variables, hundreds of rows).
+    /// ([`MixedCellError::Budget`]): the cost bound. A program of more than 256 row entries
+    /// (rows × unknowns) counts in proportion; the lower edges' programs, one per pair of points
+    /// of a support, are counted before any is solved.
     pub max_linear_programs: usize,
 }
 
@@ -192,7 +193,19 @@ impl Search<'_> {
         if self.n == 0 {
             return Ok(Vec::new());
         }
-        // The lower edges of each lifted support.
+        // The lower edges of each lifted support: one program per pair of points, counted
+        // against the budget before any is solved.
+        let first: usize = self
+            .supports
+            .iter()
+            .map(|s| {
+                let m = s.len();
+                (m * m.saturating_sub(1) / 2).saturating_mul(program_weight(m, self.n))
+            })
+            .fold(0usize, usize::saturating_add);
+        if first > self.limit {
+            return Err(MixedCellError::Budget { limit: self.limit });
+        }
         let lower: Vec<Vec<Edge>> = (0..self.n)
             .map(|i| {
                 let pairs: Vec<Edge> = (0..self.supports[i].len())
@@ -372,8 +385,10 @@ impl Search<'_> {
     /// Whether some `α` puts each edge's two lifted points at the minimum of `⟨(a, ω(a)), (α, 1)⟩`
     /// over its support.
     fn feasible(&self, edges: &[Edge]) -> Result<bool, MixedCellError> {
-        let used = self.programs.fetch_add(1, Ordering::Relaxed);
-        if used >= self.limit {
+        let rows: usize = edges.iter().map(|(i, _, _)| self.supports[*i].len()).sum();
+        let weight = program_weight(rows, self.n);
+        let used = self.programs.fetch_add(weight, Ordering::Relaxed);
+        if used.saturating_add(weight) > self.limit {
             return Err(MixedCellError::Budget { limit: self.limit });
         }
         let mut rows = Vec::new();
@@ -405,6 +420,13 @@ impl Search<'_> {
         // the complete choices below it are decided by their own test.
         Ok(feasible(self.n, &rows))
     }
+}
+
+/// How many programs a linear program of `rows` rows in `n` unknowns counts against the budget:
+/// 1 up to 256 row entries (the enumeration's usual size, 5–30 µs), then in proportion, as
+/// its steps cost.
+fn program_weight(rows: usize, n: usize) -> usize {
+    (rows.saturating_mul(n)).div_ceil(256).max(1)
 }
 
 /// The search's fixed data: the lower edges and the compatibility table.

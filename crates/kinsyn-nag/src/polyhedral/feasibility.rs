@@ -42,6 +42,7 @@ pub struct Row {
 
 /// Whether the rows have a common solution `α ∈ ℝⁿ` (module documentation); "true" where the
 /// method cannot decide.
+#[must_use]
 pub fn feasible(n: usize, rows: &[Row]) -> bool {
     let mut all: Vec<(Vec<f64>, f64)> = Vec::with_capacity(2 * rows.len() + n);
     // Equalities first: they are the rows the first basis prefers.

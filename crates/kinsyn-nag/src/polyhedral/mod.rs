@@ -16,7 +16,7 @@
 //! `i`, `⟨(a, ω_i(a)), α̂⟩` is least over `A_i` exactly at `p_i` and `q_i`. The mixed volume is
 //! the sum of the cells' volumes `|det(q_i − p_i)|`.
 //!
-//! The enumeration is the depth-first search of Li's survey (§4.3) and of MixedVol (Gao, Li &
+//! The enumeration is the depth-first search of Li's survey (§4.3) and of `MixedVol` (Gao, Li &
 //! Wu, ACM TOMS 31, 2005) without its dynamic ordering: the **lower edges** of each lifted
 //! support are found first, each by a linear program; then, for each pair of supports, which
 //! lower edges are compatible (their two-support system is feasible), a table that prunes the
@@ -40,7 +40,9 @@ mod cells;
 #[doc(hidden)]
 pub mod feasibility;
 
-pub use binomial::{BinomialError, MAX_BINOMIAL_SOLUTIONS, binomial_roots, hermite_lower};
+pub use binomial::{
+    BinomialError, IntegerMatrix, MAX_BINOMIAL_SOLUTIONS, binomial_roots, hermite_lower,
+};
 pub use cells::{
     DEFAULT_MAX_LINEAR_PROGRAMS, MixedCell, MixedCellError, MixedCellSettings, MixedSubdivision,
     mixed_cells, mixed_volume, supports_of,

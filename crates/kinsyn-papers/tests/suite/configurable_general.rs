@@ -48,7 +48,7 @@ fn the_4_rrr_description_has_paper_003s_assemblies_and_those_of_the_folded_rhomb
     assert_eq!((ps.system().nvars(), ps.system().len()), (7, 7));
     // The start `analyze --all-assemblies` chooses: multi-homogeneous over the Study
     // parameters and each hinge tangent, 512 paths where the total degree has 5 760.
-    let (grouped, start) = fewest_paths_start(ps.system(), &ps.variable_groupings());
+    let (grouped, start) = fewest_paths_start(ps.system(), &ps.variable_groupings(), 1);
     // Its count by brute force: the coefficient of Π α_j^{n_j} in Π_i Σ_j d_ij α_j, summed
     // over every choice of a group per equation (4⁷ of them) — not the library's walk over
     // assignments — and below the total degree, the product of the degrees.

@@ -505,13 +505,16 @@ class Solutions:
     ``solutions``: every finite endpoint, one row of complex coordinates in the order of
     ``variables``; ``table``: the same with ``regular``, ``real``, ``reality``,
     ``multiplicity``, ``residual``, ``certified`` per solution. ``real`` (the real regular
-    solutions, a real array) and the counts as the command reports them.
+    solutions, a real array) and the counts as the command reports them; ``start`` the start
+    system tracked (``"auto"`` resolved) and ``complete`` whether every path ended.
     """
 
     report: Dict[str, Any] = field(repr=False)
     variables: List[str]
     solutions: np.ndarray = field(repr=False)
     table: pd.DataFrame = field(repr=False)
+    start: str
+    complete: bool
     paths: int
     nonsingular: int
     singular: int
@@ -551,6 +554,8 @@ class Solutions:
             variables=list(r["variables"]),
             solutions=sols,
             table=table,
+            start=r["start"],
+            complete=r["complete"],
             paths=r["paths"],
             nonsingular=r["nonsingular"],
             singular=r["singular"],

@@ -194,7 +194,7 @@ fn solve_block(
         .map_err(|e| Error::Input(format!("--all-assemblies: {e}")))?;
     // The start that tracks the fewest paths: the configurable 4-RRR's 5 760 total-degree
     // paths are 512 multi-homogeneous ones.
-    let (solved, start) = fewest_paths_start(&square, &ps.variable_groupings());
+    let (solved, start) = fewest_paths_start(&square, &ps.variable_groupings(), seed);
     let settings = SolveSettings {
         seed,
         start,
