@@ -17,7 +17,7 @@
 //! the equalities `⟨v, α⟩ = 0` for a basis `v` of the null space (an SVD), which changes nothing
 //! about feasibility. Equalities are written as two inequalities.
 //!
-//! Only a proof prunes: after [`MAX_STEPS_PER_ROW`] steps per row (cycling under degeneracy, in
+//! Only a proof prunes: after eight steps per row (cycling under degeneracy, in
 //! principle) the answer is "feasible", and the enumeration's cells are decided by their own
 //! exact test.
 
