@@ -250,7 +250,7 @@ pub(super) enum Command {
         /// report), total-degree (Bézout's number of paths), multi-homogeneous (products of
         /// linear forms per `variable_group`: fewer paths when the equations have low degree in
         /// each group) or polyhedral (the mixed volume of the Newton polytopes: fewer paths for
-        /// sparse systems, after a search for the mixed cells that auto bounds to 25 linear
+        /// sparse systems, after a search for the mixed cells that auto bounds to 12 linear
         /// programs per path saved).
         #[arg(long, value_enum, default_value = "auto")]
         start: StartArg,

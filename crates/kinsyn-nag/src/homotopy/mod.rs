@@ -595,9 +595,11 @@ pub fn path_count(system: &System, start: StartSystem) -> Option<u128> {
 
 /// How many linear programs per path of the best Bézout-type start [`StartSystem::Auto`] spends
 /// looking for the mixed cells (at least [`AUTO_MIN_PROGRAMS`]) before it keeps that start: a
-/// linear program costs about 50–150 µs of CPU, a path about 0.3–5 ms (more for one that
-/// diverges), so a search that fails costs about as much as the paths.
-pub const AUTO_PROGRAMS_PER_PATH: u128 = 25;
+/// linear program costs about 10–30 µs of CPU, a path about 0.5–5 ms (more for one that
+/// diverges), so a search that fails costs at most about a third of the paths (Katsura-7, whose
+/// mixed volume is its Bézout number: 74 ms in all, 90 ms with 25 per path). The sparse systems of the tests need 5–13 per path (cyclic-5: 1 549
+/// for 120 Bézout paths; cyclic-7: 26 914 for 5 040; noon-5: 2 466 for 243).
+pub const AUTO_PROGRAMS_PER_PATH: u128 = 12;
 
 /// The fewest linear programs [`StartSystem::Auto`] allows the mixed cells, whatever the paths.
 pub const AUTO_MIN_PROGRAMS: u128 = 2000;
