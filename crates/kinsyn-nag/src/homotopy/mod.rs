@@ -550,8 +550,9 @@ fn failed_start(k: usize, failure: PathFailure) -> PathEnd {
 }
 
 /// The mixed cells of `system`'s supports with the origin ([`crate::polyhedral`]) for the
-/// lifting of `seed`, within `max_linear_programs`. The last subdivision computed is kept, so
-/// that counting the paths ([`check_solvable`]) and solving pay for it once.
+/// lifting of `seed`, within `max_linear_programs`. The last outcome is kept — the subdivision,
+/// or the budget it exceeded — so that counting the paths ([`check_solvable`]) and solving pay
+/// for it once, found or not.
 ///
 /// # Errors
 /// [`HomotopyError::MixedCells`] when the enumeration exceeds its budget.
@@ -560,27 +561,41 @@ pub fn polyhedral_subdivision(
     seed: u64,
     max_linear_programs: usize,
 ) -> Result<std::sync::Arc<MixedSubdivision>, HomotopyError> {
-    type Kept = Option<(u64, std::sync::Arc<MixedSubdivision>)>;
+    use crate::polyhedral::MixedCellError;
+    type Outcome = Result<std::sync::Arc<MixedSubdivision>, MixedCellError>;
+    /// The seed, the supports and what came of them.
+    type Kept = Option<(u64, Vec<Vec<Vec<i64>>>, Outcome)>;
     static LAST: std::sync::Mutex<Kept> = std::sync::Mutex::new(None);
     let supports = crate::polyhedral::supports_of(system, true);
     if let Ok(last) = LAST.lock()
-        && let Some((s, kept)) = last.as_ref()
+        && let Some((s, kept_supports, outcome)) = last.as_ref()
         && *s == seed
-        && kept.supports == supports
+        && *kept_supports == supports
     {
-        return Ok(kept.clone());
+        match outcome {
+            Ok(kept) => return Ok(kept.clone()),
+            // A budget no larger than one already exceeded is exceeded again.
+            Err(MixedCellError::Budget { limit }) if max_linear_programs <= *limit => {
+                return Err(MixedCellError::Budget {
+                    limit: max_linear_programs,
+                }
+                .into());
+            }
+            Err(_) => {}
+        }
     }
-    let subdivision = std::sync::Arc::new(crate::polyhedral::mixed_cells(
+    let outcome = crate::polyhedral::mixed_cells(
         &supports,
         &crate::polyhedral::MixedCellSettings {
             seed,
             max_linear_programs,
         },
-    )?);
+    )
+    .map(std::sync::Arc::new);
     if let Ok(mut last) = LAST.lock() {
-        *last = Some((seed, subdivision.clone()));
+        *last = Some((seed, supports, outcome.clone()));
     }
-    Ok(subdivision)
+    Ok(outcome?)
 }
 
 /// The number of paths of the start system `start` for `system`: its Bézout number, its

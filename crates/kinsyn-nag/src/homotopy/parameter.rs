@@ -358,15 +358,7 @@ fn follow(
     settings: TrackerSettings,
     x: &[C64],
 ) -> Result<Vec<C64>, PathFailure> {
-    let mut tracker = Tracker::new(segment, settings);
-    let mut z = DVector::from_column_slice(x);
-    tracker.track(&mut z, C64::from(1.0), C64::from(0.0))?;
-    tracker.refine(&mut z, C64::from(0.0), 1e-14);
-    if z.iter().all(|c| c.re.is_finite() && c.im.is_finite()) {
-        Ok(z.iter().copied().collect())
-    } else {
-        Err(PathFailure::NotFinite)
-    }
+    Tracker::new(segment, settings).track_refined(DVector::from_column_slice(x))
 }
 
 /// When to stop the monodromy loops.

@@ -193,13 +193,7 @@ impl CellHomotopy {
         let mut tracker = Tracker::new(self, settings);
         let mut z = DVector::from_column_slice(y);
         tracker.refine(&mut z, C64::from(1.0), 1e-12);
-        tracker.track(&mut z, C64::from(1.0), C64::from(0.0))?;
-        tracker.refine(&mut z, C64::from(0.0), 1e-14);
-        if z.iter().all(|c| c.re.is_finite() && c.im.is_finite()) {
-            Ok(z.iter().copied().collect())
-        } else {
-            Err(PathFailure::NotFinite)
-        }
+        tracker.track_refined(z)
     }
 }
 

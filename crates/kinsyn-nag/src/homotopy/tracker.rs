@@ -559,6 +559,19 @@ impl<'a, H: Homotopy> Tracker<'a, H> {
             .ok_or(PathFailure::Endgame)
     }
 
+    /// From `z` at `t = 1` to the target at `t = 0` along the straight segment (no endgame: for
+    /// homotopies whose paths end regular), refined by Newton's method there; the endpoint, or
+    /// why the path was given up.
+    pub(crate) fn track_refined(&mut self, mut z: DVector<C64>) -> Result<Vec<C64>, PathFailure> {
+        self.track(&mut z, C64::from(1.0), C64::from(0.0))?;
+        self.refine(&mut z, C64::from(0.0), 1e-14);
+        if z.iter().all(|c| c.re.is_finite() && c.im.is_finite()) {
+            Ok(z.iter().copied().collect())
+        } else {
+            Err(PathFailure::NotFinite)
+        }
+    }
+
     /// Newton refinement at fixed `t`; true when it converged.
     pub(crate) fn refine(&mut self, z: &mut DVector<C64>, t: C64, tolerance: f64) -> bool {
         self.correct(z, t, tolerance, 6).is_some()

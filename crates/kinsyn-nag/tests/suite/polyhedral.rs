@@ -36,8 +36,9 @@ fn cyclic_mixed_volumes_are_the_root_counts() {
 
 #[test]
 fn katsura_mixed_volumes_are_two_to_the_n() {
-    // Katsura-n has 2^n isolated roots, its Bézout number, and that many is its BKK bound
-    // (the PoSSo test suite; PHCpack's demo database lists mixed volume 2^n).
+    // Katsura-n has 2^n isolated roots in ℂⁿ⁺¹ (the PoSSo test suite), a lower bound of the
+    // mixed volume with the origin (Li & Wang 1996), which is at most the Bézout number 2^n:
+    // so it is 2^n exactly.
     for n in 2..=5 {
         assert_eq!(mv(&katsura(n), true, 1), 1 << n, "katsura-{n}");
     }
@@ -62,10 +63,11 @@ fn the_mixed_volume_does_not_depend_on_the_lifting() {
 
 #[test]
 fn two_by_hand() {
-    // x² + y + 1, xy + x + 1: Newton polygons the triangle (0,0),(2,0),(0,1) and the triangle
-    // (0,0),(1,0),(1,1). MV = area(P + Q) − area(P) − area(Q) = 5 − 1 − ½ … counted by hand:
-    // eliminating y = −(x + 1)/x gives x³ − x − 1 = 0 after multiplying by x, 3 roots, none with
-    // a zero coordinate: MV = 3 (gfan _mixedvolume says 3 too).
+    // x² + y + 1, xy + x + 1: Newton polygons P = conv{(0,0),(2,0),(0,1)} (area 1) and
+    // Q = conv{(0,0),(1,0),(1,1)} (area ½); P + Q = conv{(0,0),(3,0),(3,1),(1,2),(0,1)}, area
+    // 9/2 by the shoelace formula, so MV = area(P + Q) − area(P) − area(Q) = 3. Also by
+    // elimination: y = −x² − 1 in the second gives 1 − x³ = 0, three roots, none with a zero
+    // coordinate (and gfan _mixedvolume says 3).
     let x = Poly::variable(2, 0);
     let y = Poly::variable(2, 1);
     let one = Poly::real(2, 1.0);
