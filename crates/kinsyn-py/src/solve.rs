@@ -11,15 +11,11 @@ use std::path::PathBuf;
 
 /// The start system named `text` (as `kinsyn solve --start`).
 fn start_system(text: &str) -> Result<StartSystem, Error> {
-    match text {
-        "total-degree" => Ok(StartSystem::TotalDegree),
-        "multi-homogeneous" => Ok(StartSystem::MultiHomogeneous),
-        "polyhedral" => Ok(StartSystem::Polyhedral),
-        "auto" => Ok(StartSystem::Auto),
-        _ => Err(Error::Input(format!(
+    StartSystem::from_name(text).ok_or_else(|| {
+        Error::Input(format!(
             "--start {text:?}: give auto, total-degree, multi-homogeneous or polyhedral"
-        ))),
-    }
+        ))
+    })
 }
 
 /// `kinsyn solve --json` for the system of `text` (named `source` in messages), with the GIL

@@ -49,6 +49,7 @@ pub mod files;
 pub mod manipulator;
 pub mod output;
 pub mod solve;
+pub mod solve_shards;
 pub mod sweep;
 pub mod terminal;
 

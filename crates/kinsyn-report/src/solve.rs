@@ -96,16 +96,6 @@ pub fn multihomogeneous_text(system: &System) -> String {
         .map_or_else(|| "not counted".into(), paths_text)
 }
 
-/// A start system's name, as `kinsyn solve --start` takes it.
-pub(crate) fn start_name(start: StartSystem) -> &'static str {
-    match start {
-        StartSystem::TotalDegree => "total-degree",
-        StartSystem::MultiHomogeneous => "multi-homogeneous",
-        StartSystem::Polyhedral => "polyhedral",
-        StartSystem::Auto => "auto",
-    }
-}
-
 /// `N paths`, and when each path of a system in `unknowns` unknowns counts `weight` times
 /// against the limit ([`homotopy::path_weight`]), what they count in all.
 pub(crate) fn weighted_paths(paths: u128, weight: u64, unknowns: usize) -> String {
@@ -180,7 +170,7 @@ pub fn check_cost(
                     .map_or(settings.start, |(s, _)| s);
                 format!(
                     "{source}: the {} start system has {}, {raise}{hint}",
-                    start_name(start),
+                    start.name(),
                     weighted_paths(paths, weight, system.nvars())
                 )
             }
@@ -200,7 +190,7 @@ pub fn check_cost(
 /// Refuses, naming the file and the equation, a system homotopy continuation cannot solve:
 /// not square, an equation that is a constant (no solution, or no isolated one if zero), a
 /// coefficient that overflowed double precision. The cost is checked next ([`check_cost`]).
-fn check_solvable(file: &str, input: &bertini::BertiniInput) -> Result<(), Error> {
+pub(crate) fn check_solvable(file: &str, input: &bertini::BertiniInput) -> Result<(), Error> {
     let system = &input.system;
     let (equations, variables) = (system.len(), system.nvars());
     if equations != variables {

@@ -281,6 +281,22 @@ pub(super) enum Command {
         /// Print JSON instead of text (every finite solution).
         #[arg(long)]
         json: bool,
+        /// Track only shard K of N of the paths (K is 1-based: the paths k with k mod N = K − 1)
+        /// and write their ends to --out, for --merge to finish: a solve spread over processes
+        /// or machines (docs/scale.md). --max-paths then applies to the shard's share.
+        #[arg(long, value_name = "K/N", requires = "out", conflicts_with_all = ["merge", "show"])]
+        shard: Option<String>,
+        /// The shard file --shard writes (JSON; whole or not at all).
+        #[arg(long, value_name = "PART", requires = "shard")]
+        out: Option<PathBuf>,
+        /// Replace the file --out names if it exists.
+        #[arg(long, requires = "out")]
+        force: bool,
+        /// Finish a solve from the shard files of --shard 1/N … N/N (any order, each once, of
+        /// the same FILE, --start, --seed and kinsyn version): the report of one process,
+        /// path for path.
+        #[arg(long, value_name = "PART", num_args = 1..)]
+        merge: Vec<PathBuf>,
     },
     /// The irreducible components of a polynomial system or of a manipulator's constraints:
     /// assemblies, self-motions and operation modes, by numerical irreducible decomposition.

@@ -22,7 +22,7 @@ mod terminal;
 /// The commands as functions (`kinsyn-report`), under the names the command's modules use.
 use kinsyn_report::{
     Error as CliError, components, configurable, json, list_or_none, manipulator, output, solve,
-    sorted_json, sweep,
+    solve_shards, sorted_json, sweep,
 };
 
 use args::{Cli, Command};
@@ -261,19 +261,34 @@ fn execute(command: Command) -> Result<String, CliError> {
             show,
             no_certify,
             json: as_json,
+            shard,
+            out,
+            force,
+            merge,
         } => {
-            let solved = solve::solve(
-                &file,
-                &solve::SolveOptions {
-                    start: start.into(),
-                    seed,
-                    runs,
-                    threads,
-                    max_paths,
-                    certify: !no_certify,
-                    show: show.into(),
-                },
-            )?;
+            let options = solve::SolveOptions {
+                start: start.into(),
+                seed,
+                runs,
+                threads,
+                max_paths,
+                certify: !no_certify,
+                show: show.into(),
+            };
+            if let (Some(shard), Some(out)) = (shard, out) {
+                let shard = solve_shards::parse_shard(&shard)?;
+                let summary = solve_shards::solve_shard_file(&file, &options, shard, &out, force)?;
+                return Ok(if as_json {
+                    json(&summary)
+                } else {
+                    render::solve::shard_text(&summary)
+                });
+            }
+            let solved = if merge.is_empty() {
+                solve::solve(&file, &options)?
+            } else {
+                solve_shards::merge_shard_files(&file, &options, &merge)?
+            };
             render::warn(&file, &solved.warnings());
             Ok(if as_json {
                 json(&solved.json())

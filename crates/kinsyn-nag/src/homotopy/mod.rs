@@ -39,6 +39,7 @@ mod parameter;
 mod polyhedral;
 mod real_branch;
 mod regeneration;
+mod shard;
 mod start;
 mod tracker;
 mod witness;
@@ -58,6 +59,7 @@ pub use real_branch::{
 pub use regeneration::{
     RegenerationProgress, regenerate, regenerate_with_progress, regeneration_paths,
 };
+pub use shard::{Shard, ShardEnds, merge_shards, solve_shard};
 pub use start::{StartSystem, fewest_paths_start};
 pub use tracker::{PathFailure, TrackerSettings};
 pub use witness::{
@@ -192,6 +194,10 @@ pub enum HomotopyError {
         /// The limit.
         limit: u64,
     },
+    /// Shards that do not make one solve ([`merge_shards`]): a shard missing or given twice,
+    /// shards of another count, start system or seed, a path missing or repeated.
+    #[error("the shards do not make one solve: {0}")]
+    Shards(String),
 }
 
 /// How to solve.
@@ -229,7 +235,7 @@ impl Default for SolveSettings {
 }
 
 /// What one path ended at.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum EndpointKind {
     /// A finite, non-singular solution (winding number 1, Jacobian of full rank).
@@ -428,7 +434,7 @@ pub fn solve_with_progress(
     progress: &(dyn Fn() + Sync),
 ) -> Result<SolveReport, HomotopyError> {
     let clock = std::time::Instant::now();
-    let (start, _) = check(system, settings)?;
+    let (start, _) = check(system, settings, 1)?;
     // The time of the mixed cells is theirs whether found now or for an earlier count.
     let checked = clock.elapsed().as_secs_f64();
     let settings = &SolveSettings {
@@ -437,18 +443,51 @@ pub fn solve_with_progress(
     };
     let mut rng = ChaCha8Rng::seed_from_u64(settings.seed);
     let (homotopy, starts, cells_seconds) = start_paths(system, settings, &mut rng)?;
-    let mut ends: Vec<PathEnd> = starts
+    let ends = first_ends(&homotopy, &starts, settings, |_| true, progress);
+    Ok(finish_solve(
+        system,
+        settings,
+        (&homotopy, &starts),
+        ends,
+        clock.elapsed().as_secs_f64() - checked + cells_seconds,
+    ))
+}
+
+/// The first tracking of the paths `k` for which `keep(k)` holds, in path order (a shard's,
+/// or all of them).
+fn first_ends(
+    homotopy: &ProjectiveHomotopy,
+    starts: &[Result<DVector<C64>, PathFailure>],
+    settings: &SolveSettings,
+    keep: impl Fn(usize) -> bool + Sync,
+    progress: &(dyn Fn() + Sync),
+) -> Vec<PathEnd> {
+    starts
         .par_iter()
         .enumerate()
+        .filter(|(k, _)| keep(*k))
         .map(|(k, z)| {
             let end = match z {
-                Ok(z) => track_path(&homotopy, settings.tracker, k, z.clone()),
+                Ok(z) => track_path(homotopy, settings.tracker, k, z.clone()),
                 Err(failure) => failed_start(k, *failure),
             };
             progress();
             end
         })
-        .collect();
+        .collect()
+}
+
+/// The rest of a solve once every path has been tracked once (`ends`, one per path in path
+/// order): the suspect paths tracked again, round by round stricter; the distinct solutions;
+/// their certificates. `seconds` is the time of the run so far.
+fn finish_solve(
+    system: &System,
+    settings: &SolveSettings,
+    (homotopy, starts): (&ProjectiveHomotopy, &[Result<DVector<C64>, PathFailure>]),
+    mut ends: Vec<PathEnd>,
+    seconds: f64,
+) -> SolveReport {
+    let clock = std::time::Instant::now();
     let mut retracked = 0;
     let mut stricter = settings.tracker;
     for _ in 0..settings.retrack_rounds {
@@ -469,7 +508,7 @@ pub fn solve_with_progress(
                 let z = starts[*k].as_ref().ok()?;
                 Some(PathEnd {
                     retracked: true,
-                    ..track_path(&homotopy, stricter, *k, z.clone())
+                    ..track_path(homotopy, stricter, *k, z.clone())
                 })
             })
             .collect();
@@ -482,14 +521,14 @@ pub fn solve_with_progress(
     if settings.certify {
         certify_solutions(system, &mut solutions);
     }
-    Ok(SolveReport {
+    SolveReport {
         start: settings.start,
         seed: settings.seed,
         ends,
         solutions,
         retracked,
-        seconds: clock.elapsed().as_secs_f64() - checked + cells_seconds,
-    })
+        seconds: seconds + clock.elapsed().as_secs_f64(),
+    }
 }
 
 /// The homotopy of `settings.start` for `system` and its start points, one per path; the
@@ -684,11 +723,16 @@ pub fn resolve_start(
 /// # Errors
 /// The [`HomotopyError`] [`solve`] would return before tracking.
 pub fn check_solvable(system: &System, settings: &SolveSettings) -> Result<u128, HomotopyError> {
-    check(system, settings).map(|(_, paths)| paths)
+    check(system, settings, 1).map(|(_, paths)| paths)
 }
 
-/// [`check_solvable`], with the start system resolved ([`resolve_start`]).
-fn check(system: &System, settings: &SolveSettings) -> Result<(StartSystem, u128), HomotopyError> {
+/// [`check_solvable`], with the start system resolved ([`resolve_start`]); the paths' limit
+/// applies to one `share` of them (a shard's, [`solve_shard`]).
+fn check(
+    system: &System,
+    settings: &SolveSettings,
+    share: u128,
+) -> Result<(StartSystem, u128), HomotopyError> {
     if !system.is_square() {
         return Err(HomotopyError::NotSquare {
             equations: system.len(),
@@ -710,9 +754,13 @@ fn check(system: &System, settings: &SolveSettings) -> Result<(StartSystem, u128
     let (start, count) = resolve_start(system, settings.start, settings.seed)?;
     let limit = settings.max_paths.min(MAX_PATHS);
     let weight = path_weight(system.nvars());
-    if count.saturating_mul(u128::from(weight)) > u128::from(limit) {
+    if count
+        .div_ceil(share.max(1))
+        .saturating_mul(u128::from(weight))
+        > u128::from(limit)
+    {
         return Err(HomotopyError::TooManyPaths {
-            paths: count,
+            paths: count.div_ceil(share.max(1)),
             weight,
             limit,
         });

@@ -16,7 +16,7 @@
 //! generic with probability one as complex ones are (the real points are Zariski-dense).
 
 use super::{HomotopyError, SolveReport, SolveSettings, solve_with_progress, witness};
-use crate::poly::{C64, Poly, System};
+use crate::poly::{C64, System};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
@@ -79,18 +79,19 @@ pub fn square_randomisation(system: &System, seed: u64) -> Result<System, Homoto
     // Stable: equal degrees keep their order.
     order.sort_by_key(|&i| std::cmp::Reverse(degrees[i]));
     let mut rng = ChaCha8Rng::seed_from_u64(seed ^ 0x0dd5_eed5);
-    let equations = system.equations();
-    let square: Vec<Poly> = order[..n]
+    let rows: Vec<Vec<C64>> = order[..n]
         .iter()
         .map(|&i| {
-            order[n..].iter().fold(equations[i].clone(), |acc, &j| {
+            let mut row = vec![C64::new(0.0, 0.0); big_n];
+            row[i] = C64::new(1.0, 0.0);
+            for &j in &order[n..] {
                 let lambda: f64 = rng.sample(rand_distr::StandardNormal);
-                &acc + &equations[j].scale(C64::new(lambda, 0.0))
-            })
+                row[j] = C64::new(lambda, 0.0);
+            }
+            row
         })
         .collect();
-    Ok(System::new(system.variables().to_vec(), square)
-        .expect("the system's own variables, and its equations in their ring"))
+    Ok(system.combinations(&rows))
 }
 
 /// Whether `x` satisfies every equation of `system` to the relative `tolerance`: each

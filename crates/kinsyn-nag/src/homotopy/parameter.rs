@@ -70,14 +70,7 @@ impl ParametrizedSystem {
             });
         }
         let program = system.program();
-        let magnitudes = Program::new(
-            &system
-                .equations()
-                .iter()
-                .map(Poly::magnitudes)
-                .collect::<Vec<_>>(),
-            system.nvars(),
-        );
+        let magnitudes = system.magnitudes_program();
         Ok(Self {
             system,
             unknowns,
@@ -120,24 +113,19 @@ impl ParametrizedSystem {
     pub fn at(&self, p: &[C64]) -> Result<System, ParameterError> {
         self.check(p)?;
         let n = self.unknowns;
-        let equations = self
+        let fix = |f: &Poly| {
+            Poly::from_terms(
+                n,
+                f.terms().map(|(e, c)| {
+                    let value = e[n..].iter().zip(p).fold(c, |acc, (k, v)| acc * v.powu(*k));
+                    (e[..n].to_vec(), value)
+                }),
+            )
+        };
+        Ok(self
             .system
-            .equations()
-            .iter()
-            .map(|f| {
-                Poly::from_terms(
-                    n,
-                    f.terms().map(|(e, c)| {
-                        let value = e[n..].iter().zip(p).fold(c, |acc, (k, v)| acc * v.powu(*k));
-                        (e[..n].to_vec(), value)
-                    }),
-                )
-            })
-            .collect();
-        Ok(
-            System::new(self.system.variables()[..n].to_vec(), equations)
-                .expect("the family's own names"),
-        )
+            .mapped(self.system.variables()[..n].to_vec(), fix)
+            .expect("the family's own names"))
     }
 
     /// The largest `|f_i(x; p)|`.

@@ -49,6 +49,34 @@ pub enum StartSystem {
     Auto,
 }
 
+impl StartSystem {
+    /// Every start system, in the order of the command line's choices.
+    pub const ALL: [Self; 4] = [
+        Self::Auto,
+        Self::TotalDegree,
+        Self::MultiHomogeneous,
+        Self::Polyhedral,
+    ];
+
+    /// The name the command line and JSON give it: `auto`, `total-degree`,
+    /// `multi-homogeneous`, `polyhedral`.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::TotalDegree => "total-degree",
+            Self::MultiHomogeneous => "multi-homogeneous",
+            Self::Polyhedral => "polyhedral",
+            Self::Auto => "auto",
+        }
+    }
+
+    /// The start system of a [`Self::name`].
+    #[must_use]
+    pub fn from_name(name: &str) -> Option<Self> {
+        Self::ALL.into_iter().find(|s| s.name() == name)
+    }
+}
+
 /// The start system that tracks the fewest paths for the square `system`: the total degree,
 /// the multi-homogeneous start of one of the variable groupings `candidates` (each a partition
 /// of the variables into groups), whichever has the smallest Bézout number (ties keep the total
@@ -152,19 +180,9 @@ impl ProjectiveHomotopy {
             }
             StartSystem::MultiHomogeneous => system.groups().to_vec(),
         };
-        let homogenised: Vec<_> = system
-            .equations()
-            .iter()
-            .map(|p| p.homogenize(&variable_groups))
-            .collect();
-        let target = Program::new(&homogenised, n + variable_groups.len());
-        let magnitudes = Program::new(
-            &homogenised
-                .iter()
-                .map(crate::poly::Poly::magnitudes)
-                .collect::<Vec<_>>(),
-            n + variable_groups.len(),
-        );
+        let homogenised = system.homogenized(&variable_groups);
+        let target = homogenised.program();
+        let magnitudes = homogenised.magnitudes_program();
         let groups: Vec<Vec<usize>> = variable_groups
             .iter()
             .enumerate()

@@ -409,15 +409,13 @@ pub fn decompose_paths(system: &System) -> u128 {
 /// Each dimension of [`decompose`] with the Bézout number of its sliced system.
 fn sliced_paths(system: &System) -> impl Iterator<Item = (usize, u128)> {
     let (n, big_n) = (system.len(), system.nvars());
-    let largest = u128::from(system.degrees().into_iter().max().unwrap_or(0));
-    let bezout = system.bezout_number();
+    let mut degrees = system.degrees();
+    degrees.sort_unstable_by(|a, b| b.cmp(a));
     (big_n.saturating_sub(n)..big_n).map(move |d| {
         let count = big_n - d;
-        let paths = if count == n {
-            bezout
-        } else {
-            (0..count).fold(1u128, |b, _| b.saturating_mul(largest))
-        };
+        let paths = degrees[..count]
+            .iter()
+            .fold(1u128, |b, e| b.saturating_mul(u128::from(*e)));
         (d, paths)
     })
 }
@@ -514,23 +512,58 @@ pub(super) fn hyperplane(row: &[C64], total: usize) -> Poly {
     h
 }
 
-/// The square family of the given equations (in the `N` unknowns of `system`, then
-/// `other_parameters` parameters), the `fixed` hyperplanes, and `sliced` hyperplanes whose
-/// coefficients are the last parameters (`slice#k#j`).
+/// The square family of `equations` (polynomials in the `N` unknowns of `system`, or in those
+/// and the `other_parameters` after them), then `other_parameters` parameters, the `fixed`
+/// hyperplanes, and `sliced` hyperplanes whose coefficients are the last parameters
+/// (`slice#k#j`).
 pub(super) fn family(
     system: &System,
-    mut equations: Vec<Poly>,
+    equations: Vec<Poly>,
     fixed: &[Vec<C64>],
     sliced: usize,
     other_parameters: usize,
 ) -> Result<ParametrizedSystem, DecomposeError> {
+    let (names, extra) = slices(system, fixed, sliced, other_parameters);
+    let total = names.len();
+    let mut equations: Vec<Poly> = equations
+        .into_iter()
+        .map(|f| f.relabel(total, &(0..f.nvars()).collect::<Vec<_>>()))
+        .collect();
+    equations.extend(extra);
+    let family =
+        System::new(names, equations).map_err(|e| DecomposeError::Family(e.to_string()))?;
+    ParametrizedSystem::new(family, other_parameters + sliced * (system.nvars() + 1))
+        .map_err(|e: ParameterError| DecomposeError::Family(e.to_string()))
+}
+
+/// [`family`] of the equations of `combined` (in the unknowns of `system`), composed when
+/// `combined` is ([`System::widened`]).
+pub(super) fn system_family(
+    system: &System,
+    combined: &System,
+    fixed: &[Vec<C64>],
+    sliced: usize,
+) -> Result<ParametrizedSystem, DecomposeError> {
+    let (names, extra) = slices(system, fixed, sliced, 0);
+    let family = combined
+        .widened(names, extra)
+        .map_err(|e| DecomposeError::Family(e.to_string()))?;
+    ParametrizedSystem::new(family, sliced * (system.nvars() + 1))
+        .map_err(|e: ParameterError| DecomposeError::Family(e.to_string()))
+}
+
+/// The names of a family's variables (the unknowns, `other_parameters`, then the
+/// coefficients of `sliced` hyperplanes) and its hyperplanes: the `fixed` ones, then the
+/// sliced ones with their coefficients as parameters.
+fn slices(
+    system: &System,
+    fixed: &[Vec<C64>],
+    sliced: usize,
+    other_parameters: usize,
+) -> (Vec<String>, Vec<Poly>) {
     let big_n = system.nvars();
     let total = big_n + other_parameters + sliced * (big_n + 1);
-    for f in &mut equations {
-        let widen: Vec<usize> = (0..f.nvars()).collect();
-        *f = f.relabel(total, &widen);
-    }
-    equations.extend(fixed.iter().map(|row| hyperplane(row, total)));
+    let mut extra: Vec<Poly> = fixed.iter().map(|row| hyperplane(row, total)).collect();
     let first = big_n + other_parameters;
     for k in 0..sliced {
         let p = |j: usize| Poly::variable(total, first + k * (big_n + 1) + j);
@@ -538,29 +571,52 @@ pub(super) fn family(
         for j in 0..big_n {
             h = &h + &(&p(j) * &Poly::variable(total, j));
         }
-        equations.push(h);
+        extra.push(h);
     }
     let mut names = system.variables().to_vec();
     names.extend((0..other_parameters).map(|k| format!("regeneration#{k}")));
     for k in 0..sliced {
         names.extend((0..=big_n).map(|j| format!("slice#{k}#{j}")));
     }
-    let family =
-        System::new(names, equations).map_err(|e| DecomposeError::Family(e.to_string()))?;
-    ParametrizedSystem::new(family, other_parameters + sliced * (big_n + 1))
-        .map_err(|e: ParameterError| DecomposeError::Family(e.to_string()))
+    (names, extra)
+}
+
+/// `count` random combinations of the equations of `system` in the form `[I | A]`: the
+/// equations by decreasing degree, each of the first `count` plus random multiples of the
+/// rest (the equations themselves when there are exactly `count`). Any generic `count × n`
+/// matrix is an invertible one times such a matrix, so by Bertini's theorem the solution set
+/// keeps every component of codimension `count` as a component of multiplicity one; and the
+/// combinations' degrees are the `count` largest, not `count` times the largest. Composed
+/// when `system` is.
+pub(super) fn randomized(system: &System, count: usize, rng: &mut ChaCha8Rng) -> System {
+    if system.len() == count {
+        return system.clone();
+    }
+    let degrees = system.degrees();
+    let mut order: Vec<usize> = (0..system.len()).collect();
+    order.sort_by_key(|&i| std::cmp::Reverse(degrees[i]));
+    let rows: Vec<Vec<C64>> = (0..count)
+        .map(|i| {
+            let mut row = vec![C64::new(0.0, 0.0); system.len()];
+            row[order[i]] = C64::new(1.0, 0.0);
+            for &j in &order[count..] {
+                row[j] = gaussian(rng);
+            }
+            row
+        })
+        .collect();
+    system.combinations(&rows)
 }
 
 /// The family, in the unknowns then the slice parameters, of `N − d` random combinations of
-/// `F` ([`random_combinations`]) and `d` affine hyperplanes whose coefficients are the
-/// parameters.
+/// `F` ([`randomized`]) and `d` affine hyperplanes whose coefficients are the parameters.
 fn slice_family(
     system: &System,
     d: usize,
     rng: &mut ChaCha8Rng,
 ) -> Result<ParametrizedSystem, DecomposeError> {
-    let equations = random_combinations(system.equations(), system.nvars() - d, rng);
-    family(system, equations, &[], d, 0)
+    let combined = randomized(system, system.nvars() - d, rng);
+    system_family(system, &combined, &[], d)
 }
 
 /// Whether `x` satisfies every equation of `system` to `tolerance` ([`vanishes`]).

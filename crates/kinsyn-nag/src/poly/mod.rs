@@ -24,12 +24,14 @@
 //! ```
 
 pub mod bertini;
+mod composition;
 pub mod expansion;
 pub mod families;
 pub mod multihomogeneous;
 pub mod phc;
 mod program;
 
+pub use composition::Composition;
 pub use program::{Program, Scalar, Workspace};
 
 use std::collections::BTreeMap;
@@ -533,6 +535,9 @@ pub struct System {
     variables: Vec<String>,
     equations: Vec<Poly>,
     groups: Vec<Vec<usize>>,
+    /// The equations as outer polynomials of inner ones, when they were given so
+    /// ([`Self::composed`]): how they are evaluated.
+    composition: Option<Composition>,
 }
 
 impl System {
@@ -563,7 +568,40 @@ impl System {
             variables,
             equations,
             groups,
+            composition: None,
         })
+    }
+
+    /// The system whose equations are `composition`'s, evaluated as composed
+    /// ([`Composition`]: an eliminated equation stays a product of small pieces); its
+    /// [`Self::equations`] are the expansions, for the degrees, supports and text.
+    ///
+    /// # Errors
+    /// As [`Self::new`], for the inner polynomials' ring.
+    pub fn composed(variables: Vec<String>, composition: Composition) -> Result<Self, PolyError> {
+        if composition.nvars() != variables.len() && !composition.inner().is_empty() {
+            return Err(PolyError::VariableCount {
+                equation: 0,
+                expected: variables.len(),
+                found: composition.nvars(),
+            });
+        }
+        let mut system = Self::new(variables, composition.expand())?;
+        system.composition = Some(composition);
+        Ok(system)
+    }
+
+    /// The same system with the composition `composition` of the same equations (trusted:
+    /// the transformations of [`Composition`] keep the expansions equal).
+    pub(crate) fn with_composition(mut self, composition: Option<Composition>) -> Self {
+        self.composition = composition;
+        self
+    }
+
+    /// The composition the equations are evaluated by, if they were given as one.
+    #[must_use]
+    pub fn composition(&self) -> Option<&Composition> {
+        self.composition.as_ref()
     }
 
     /// The same system with the variables partitioned into `groups` (indices into the
@@ -690,6 +728,12 @@ impl System {
     /// The values of the equations at `x`.
     #[must_use]
     pub fn evaluate(&self, x: &[C64]) -> Vec<C64> {
+        if self.composition.is_some() {
+            let program = self.program();
+            let mut values = vec![C64::new(0.0, 0.0); self.len()];
+            program.evaluate(x, &mut values, &mut program.workspace());
+            return values;
+        }
         self.equations.iter().map(|p| p.eval(x)).collect()
     }
 
@@ -739,21 +783,142 @@ impl System {
     /// variables a term involves (a term's monomial and those of its `s` partial derivatives
     /// list at most `s + 1` factors each, one more when homogenised). Known from the terms
     /// before anything is compiled; the solvers refuse beyond [`MAX_PROGRAM_SIZE`].
+    /// A composed system's is its composition's ([`Composition::program_size`]).
     #[must_use]
     pub fn program_size(&self) -> u128 {
-        self.equations
-            .iter()
-            .flat_map(Poly::terms)
-            .map(|(e, _)| {
-                let s = e.iter().filter(|k| **k > 0).count() as u128;
-                (s + 1) * (s + 2)
-            })
-            .fold(0, u128::saturating_add)
+        match &self.composition {
+            Some(c) => c.program_size(),
+            None => terms_program_size(&self.equations),
+        }
     }
 
     /// The straight-line program of the equations and their Jacobian.
     #[must_use]
     pub fn program(&self) -> Program {
-        Program::new(&self.equations, self.nvars())
+        match &self.composition {
+            Some(c) => Program::composed(c),
+            None => Program::new(&self.equations, self.nvars()),
+        }
     }
+
+    /// The program of the equations with every coefficient replaced by its modulus
+    /// ([`Poly::magnitudes`], [`Composition::magnitudes`]): the size of each equation's
+    /// terms at the moduli of a point.
+    #[must_use]
+    pub fn magnitudes_program(&self) -> Program {
+        match &self.composition {
+            Some(c) => Program::composed(&c.magnitudes()),
+            None => Program::new(
+                &self
+                    .equations
+                    .iter()
+                    .map(Poly::magnitudes)
+                    .collect::<Vec<_>>(),
+                self.nvars(),
+            ),
+        }
+    }
+
+    /// The equations homogenised with respect to `groups` ([`Poly::homogenize`]), as a
+    /// system in the variables then one homogenising coordinate per group (named `h#j`),
+    /// composed when this one is.
+    ///
+    /// # Panics
+    /// Never: the new names are distinct from the old (`#` is not in a variable's name).
+    #[must_use]
+    pub fn homogenized(&self, groups: &[Vec<usize>]) -> Self {
+        let equations: Vec<Poly> = self
+            .equations
+            .iter()
+            .map(|p| p.homogenize(groups))
+            .collect();
+        let composition = self.composition.as_ref().map(|c| {
+            let degrees: Vec<Vec<u32>> = self
+                .equations
+                .iter()
+                .map(|p| groups.iter().map(|g| p.degree_in(g)).collect())
+                .collect();
+            c.homogenize(groups, &degrees, &self.equations)
+        });
+        let mut variables = self.variables.clone();
+        variables.extend((0..groups.len()).map(|j| format!("h#{j}")));
+        Self {
+            groups: vec![(0..variables.len()).collect()],
+            variables,
+            equations,
+            composition,
+        }
+    }
+
+    /// The combinations `Σ_j rows[i][j] f_j` of the equations, one per row, composed when this
+    /// system is.
+    #[must_use]
+    pub fn combinations(&self, rows: &[Vec<C64>]) -> Self {
+        let n = self.nvars();
+        let equations = rows
+            .iter()
+            .map(|row| {
+                row.iter()
+                    .zip(&self.equations)
+                    .filter(|(c, _)| **c != C64::new(0.0, 0.0))
+                    .fold(Poly::zero(n), |acc, (c, f)| &acc + &f.scale(*c))
+            })
+            .collect();
+        Self {
+            variables: self.variables.clone(),
+            equations,
+            groups: self.groups.clone(),
+            composition: self.composition.as_ref().map(|c| c.combinations(rows)),
+        }
+    }
+
+    /// The equations in a ring of more variables (`variables`, the first ones this system's),
+    /// followed by `extra` (polynomials of the larger ring): how slices with parameters are
+    /// added. Composed when this system is, each extra polynomial a leaf.
+    ///
+    /// # Errors
+    /// As [`Self::new`].
+    pub fn widened(&self, variables: Vec<String>, extra: Vec<Poly>) -> Result<Self, PolyError> {
+        let total = variables.len();
+        let identity: Vec<usize> = (0..self.nvars()).collect();
+        let mut equations: Vec<Poly> = self
+            .equations
+            .iter()
+            .map(|f| f.relabel(total, &identity))
+            .collect();
+        let composition = self.composition.as_ref().map(|c| {
+            c.map_inner(|a| a.relabel(total, &identity))
+                .with_leaves(&extra)
+        });
+        equations.extend(extra);
+        Ok(Self::new(variables, equations)?.with_composition(composition))
+    }
+
+    /// The system with `f` applied to every polynomial (expanded and inner), into the ring of
+    /// `variables`: `f` must commute with sums and products (a substitution of values for
+    /// some variables, a relabelling).
+    ///
+    /// # Errors
+    /// As [`Self::new`].
+    pub fn mapped(
+        &self,
+        variables: Vec<String>,
+        f: impl Fn(&Poly) -> Poly,
+    ) -> Result<Self, PolyError> {
+        let equations = self.equations.iter().map(&f).collect();
+        let composition = self.composition.as_ref().map(|c| c.map_inner(&f));
+        Ok(Self::new(variables, equations)?.with_composition(composition))
+    }
+}
+
+/// [`System::program_size`] of plain equations: `Σ (s + 1)(s + 2)` over their terms.
+fn terms_program_size(equations: &[Poly]) -> u128 {
+    equations
+        .iter()
+        .flat_map(Poly::terms)
+        .map(|(e, _)| {
+            let s = e.iter().filter(|k| **k > 0).count() as u128;
+            (s + 1) * (s + 2)
+        })
+        .fold(0, u128::saturating_add)
 }

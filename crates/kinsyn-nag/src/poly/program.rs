@@ -4,7 +4,7 @@
 //! lists into a reusable [`Workspace`] — no allocation per evaluation — over any [`Scalar`]:
 //! complex numbers for path tracking, complex intervals for the certificates.
 
-use super::{C64, Poly};
+use super::{C64, Composition, Poly};
 use std::collections::HashMap;
 use std::ops::{Add, Mul, Neg, Sub};
 
@@ -39,9 +39,28 @@ impl Scalar for C64 {
     }
 }
 
-/// The compiled form of a list of polynomials in one ring and of their Jacobian.
+/// The compiled form of a list of polynomials in one ring and of their Jacobian: flat, or
+/// in two stages for a [`Composition`] (the inner polynomials and their Jacobian, then the
+/// outer ones at those values, the Jacobian by the chain rule).
 #[derive(Clone, Debug)]
 pub struct Program {
+    /// The polynomials (the inner ones of a composition).
+    flat: Flat,
+    /// A composition's outer stage.
+    outer: Option<Box<Outer>>,
+}
+
+/// The outer stage of a composed [`Program`]: the outer polynomials in the leaf variables, and
+/// for each the leaves it involves (the chain rule sums over those only).
+#[derive(Clone, Debug)]
+struct Outer {
+    flat: Flat,
+    leaves: Vec<Vec<usize>>,
+}
+
+/// A list of polynomials compiled flat.
+#[derive(Clone, Debug)]
+struct Flat {
     nvars: usize,
     len: usize,
     /// Offset of each variable's powers `x^0 … x^max` in the power table.
@@ -75,15 +94,185 @@ impl MonomialIndex {
 }
 
 /// Scratch space of a [`Program`] over one scalar type: the power table, the monomials and the
-/// coefficients converted once. Make one per thread with [`Program::workspace`].
+/// coefficients converted once (and a composition's intermediate values). Make one per thread
+/// with [`Program::workspace`].
 #[derive(Clone, Debug)]
 pub struct Workspace<S> {
+    flat: FlatWorkspace<S>,
+    outer: Option<Box<OuterWorkspace<S>>>,
+}
+
+#[derive(Clone, Debug)]
+struct OuterWorkspace<S> {
+    flat: FlatWorkspace<S>,
+    leaves: Vec<S>,
+    leaf_jacobian: Vec<S>,
+    outer_jacobian: Vec<S>,
+}
+
+#[derive(Clone, Debug)]
+struct FlatWorkspace<S> {
     powers: Vec<S>,
     monomials: Vec<S>,
     coefficients: Vec<S>,
 }
 
 impl Program {
+    /// Compiles `equations` (each a polynomial in `nvars` variables), flat ([`Flat::new`]).
+    ///
+    /// # Panics
+    /// If an equation's ring does not have `nvars` variables.
+    #[must_use]
+    pub fn new(equations: &[Poly], nvars: usize) -> Self {
+        Self {
+            flat: Flat::new(equations, nvars),
+            outer: None,
+        }
+    }
+
+    /// Compiles a composition in two stages: its inner polynomials, then its outer ones in the
+    /// leaf variables.
+    #[must_use]
+    pub fn composed(composition: &Composition) -> Self {
+        let m = composition.inner().len();
+        let leaves = composition
+            .outer()
+            .iter()
+            .map(|g| {
+                (0..m)
+                    .filter(|k| g.terms().any(|(e, _)| e[*k] > 0))
+                    .collect()
+            })
+            .collect();
+        Self {
+            flat: Flat::new(composition.inner(), composition.nvars()),
+            outer: Some(Box::new(Outer {
+                flat: Flat::new(composition.outer(), m),
+                leaves,
+            })),
+        }
+    }
+
+    /// The number of variables.
+    #[must_use]
+    pub fn nvars(&self) -> usize {
+        self.flat.nvars
+    }
+
+    /// The number of equations.
+    #[must_use]
+    pub fn len(&self) -> usize {
+        self.outer.as_ref().map_or(self.flat.len, |o| o.flat.len)
+    }
+
+    /// Whether there are no equations.
+    #[must_use]
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// The number of distinct monomials, those of the equations and of their derivatives
+    /// (both stages of a composition).
+    // Public for the tests in tests/suite/; not part of the API.
+    #[doc(hidden)]
+    #[must_use]
+    pub fn monomial_count(&self) -> usize {
+        self.flat.monomials.len() + self.outer.as_ref().map_or(0, |o| o.flat.monomials.len())
+    }
+
+    /// The number of factors (powers of variables) of all the monomials together.
+    // Public for the tests in tests/suite/; not part of the API.
+    #[doc(hidden)]
+    #[must_use]
+    pub fn factor_count(&self) -> usize {
+        self.flat.factors.len() + self.outer.as_ref().map_or(0, |o| o.flat.factors.len())
+    }
+
+    /// A workspace for evaluations over `S`.
+    #[must_use]
+    pub fn workspace<S: Scalar>(&self) -> Workspace<S> {
+        Workspace {
+            flat: self.flat.workspace(),
+            outer: self.outer.as_ref().map(|o| {
+                let m = o.flat.nvars;
+                Box::new(OuterWorkspace {
+                    flat: o.flat.workspace(),
+                    leaves: vec![S::zero(); m],
+                    leaf_jacobian: vec![S::zero(); m * self.flat.nvars],
+                    outer_jacobian: vec![S::zero(); o.flat.len * m],
+                })
+            }),
+        }
+    }
+
+    /// The values of the equations at `x`, into `values` (one per equation).
+    ///
+    /// # Panics
+    /// If `x` or `values` has the wrong length, or `ws` is another program's.
+    pub fn evaluate<S: Scalar>(&self, x: &[S], values: &mut [S], ws: &mut Workspace<S>) {
+        match (&self.outer, &mut ws.outer) {
+            (None, _) => self.flat.evaluate(x, values, &mut ws.flat),
+            (Some(o), Some(ow)) => {
+                self.flat.evaluate(x, &mut ow.leaves, &mut ws.flat);
+                o.flat.evaluate(&ow.leaves, values, &mut ow.flat);
+            }
+            (Some(_), None) => panic!("a workspace of another program"),
+        }
+    }
+
+    /// The values at `x` and the Jacobian `∂f_i/∂x_j`, row-major into `jacobian`
+    /// (`len() × nvars()` entries).
+    ///
+    /// # Panics
+    /// If a slice has the wrong length, or `ws` is another program's.
+    pub fn evaluate_with_jacobian<S: Scalar>(
+        &self,
+        x: &[S],
+        values: &mut [S],
+        jacobian: &mut [S],
+        ws: &mut Workspace<S>,
+    ) {
+        match (&self.outer, &mut ws.outer) {
+            (None, _) => self
+                .flat
+                .evaluate_with_jacobian(x, values, jacobian, &mut ws.flat),
+            (Some(o), Some(ow)) => {
+                let n = self.flat.nvars;
+                let m = o.flat.nvars;
+                assert_eq!(
+                    jacobian.len(),
+                    o.flat.len * n,
+                    "a Jacobian of len × nvars entries"
+                );
+                self.flat.evaluate_with_jacobian(
+                    x,
+                    &mut ow.leaves,
+                    &mut ow.leaf_jacobian,
+                    &mut ws.flat,
+                );
+                o.flat.evaluate_with_jacobian(
+                    &ow.leaves,
+                    values,
+                    &mut ow.outer_jacobian,
+                    &mut ow.flat,
+                );
+                // ∂f_i/∂x_j = Σ_k ∂g_i/∂a_k · ∂a_k/∂x_j over the leaves g_i involves.
+                for (i, row) in jacobian.chunks_mut(n).enumerate() {
+                    row.fill(S::zero());
+                    for &k in &o.leaves[i] {
+                        let dg = ow.outer_jacobian[i * m + k];
+                        for (r, da) in row.iter_mut().zip(&ow.leaf_jacobian[k * n..(k + 1) * n]) {
+                            *r = *r + dg * *da;
+                        }
+                    }
+                }
+            }
+            (Some(_), None) => panic!("a workspace of another program"),
+        }
+    }
+}
+
+impl Flat {
     /// Compiles `equations` (each a polynomial in `nvars` variables).
     ///
     /// The partial derivatives are taken term by term from the variables each term involves,
@@ -94,8 +283,7 @@ impl Program {
     ///
     /// # Panics
     /// If an equation's ring does not have `nvars` variables.
-    #[must_use]
-    pub fn new(equations: &[Poly], nvars: usize) -> Self {
+    fn new(equations: &[Poly], nvars: usize) -> Self {
         let mut max_power = vec![0u32; nvars];
         for p in equations {
             assert_eq!(p.nvars(), nvars, "an equation of another ring");
@@ -181,51 +369,15 @@ impl Program {
         }
     }
 
-    /// The number of variables.
-    #[must_use]
-    pub fn nvars(&self) -> usize {
-        self.nvars
-    }
-
-    /// The number of equations.
-    #[must_use]
-    pub fn len(&self) -> usize {
-        self.len
-    }
-
-    /// Whether there are no equations.
-    #[must_use]
-    pub fn is_empty(&self) -> bool {
-        self.len == 0
-    }
-
-    /// The number of distinct monomials, those of the equations and of their derivatives.
-    // Public for the tests in tests/suite/; not part of the API.
-    #[doc(hidden)]
-    #[must_use]
-    pub fn monomial_count(&self) -> usize {
-        self.monomials.len()
-    }
-
-    /// The number of factors (powers of variables) of all the monomials together.
-    // Public for the tests in tests/suite/; not part of the API.
-    #[doc(hidden)]
-    #[must_use]
-    pub fn factor_count(&self) -> usize {
-        self.factors.len()
-    }
-
-    /// A workspace for evaluations over `S`.
-    #[must_use]
-    pub fn workspace<S: Scalar>(&self) -> Workspace<S> {
-        Workspace {
+    fn workspace<S: Scalar>(&self) -> FlatWorkspace<S> {
+        FlatWorkspace {
             powers: vec![S::one(); self.power_len],
             monomials: vec![S::one(); self.monomials.len()],
             coefficients: self.terms.iter().map(|(c, _)| S::coefficient(*c)).collect(),
         }
     }
 
-    fn fill_monomials<S: Scalar>(&self, x: &[S], ws: &mut Workspace<S>) {
+    fn fill_monomials<S: Scalar>(&self, x: &[S], ws: &mut FlatWorkspace<S>) {
         assert_eq!(
             x.len(),
             self.nvars,
@@ -259,35 +411,26 @@ impl Program {
         }
     }
 
-    fn output<S: Scalar>(&self, k: usize, ws: &Workspace<S>) -> S {
+    fn output<S: Scalar>(&self, k: usize, ws: &FlatWorkspace<S>) -> S {
         let (a, b) = self.outputs[k];
         (a..b).fold(S::zero(), |acc, t| {
             acc + ws.coefficients[t] * ws.monomials[self.terms[t].1]
         })
     }
 
-    /// The values of the equations at `x`, into `values` (one per equation).
-    ///
-    /// # Panics
-    /// If `x` or `values` has the wrong length, or `ws` is another program's.
-    pub fn evaluate<S: Scalar>(&self, x: &[S], values: &mut [S], ws: &mut Workspace<S>) {
+    fn evaluate<S: Scalar>(&self, x: &[S], values: &mut [S], ws: &mut FlatWorkspace<S>) {
         self.fill_monomials(x, ws);
         for (k, v) in values[..self.len].iter_mut().enumerate() {
             *v = self.output(k, ws);
         }
     }
 
-    /// The values at `x` and the Jacobian `∂f_i/∂x_j`, row-major into `jacobian`
-    /// (`len() × nvars()` entries).
-    ///
-    /// # Panics
-    /// If a slice has the wrong length, or `ws` is another program's.
-    pub fn evaluate_with_jacobian<S: Scalar>(
+    fn evaluate_with_jacobian<S: Scalar>(
         &self,
         x: &[S],
         values: &mut [S],
         jacobian: &mut [S],
-        ws: &mut Workspace<S>,
+        ws: &mut FlatWorkspace<S>,
     ) {
         self.evaluate(x, values, ws);
         assert_eq!(

@@ -446,3 +446,57 @@ fn an_over_determined_system_keeps_the_solutions_that_satisfy_every_equation() {
         Err(HomotopyError::NotSquare { .. })
     ));
 }
+
+/// A solve split into shards and merged is the one-process solve, path for path: every end
+/// (kind, endpoint bits, winding, steps, re-tracking) and every solution, for a total-degree
+/// start (Katsura-5) and a polyhedral one (cyclic-5, chosen by auto), in 1, 3 and 7 shards
+/// given in any order; shards that do not make one solve are refused.
+#[test]
+fn shards_merged_are_the_one_process_solve() {
+    use kinsyn_nag::homotopy::{Shard, merge_shards, solve_shard};
+    use kinsyn_nag::poly::families;
+    for (system, start) in [
+        (families::katsura(5), StartSystem::TotalDegree),
+        (families::cyclic(5), StartSystem::Auto),
+    ] {
+        let settings = SolveSettings {
+            seed: 7,
+            start,
+            ..SolveSettings::default()
+        };
+        let one = solve(&system, &settings).unwrap();
+        for count in [1, 3, 7] {
+            let mut parts: Vec<_> = (1..=count)
+                .map(|k| {
+                    solve_shard(&system, &settings, Shard::new(k, count).unwrap(), &|| {}).unwrap()
+                })
+                .collect();
+            parts.reverse();
+            assert_eq!(
+                parts.iter().map(|p| p.ends.len()).sum::<usize>(),
+                one.ends.len()
+            );
+            let merged = merge_shards(&system, &settings, &parts).unwrap();
+            assert_eq!(merged.start, one.start);
+            assert_eq!(merged.ends, one.ends, "{count} shards");
+            assert_eq!(merged.solutions, one.solutions, "{count} shards");
+            assert_eq!(merged.retracked, one.retracked);
+        }
+        let parts: Vec<_> = (1..=3)
+            .map(|k| solve_shard(&system, &settings, Shard::new(k, 3).unwrap(), &|| {}).unwrap())
+            .collect();
+        let missing = merge_shards(&system, &settings, &parts[..2]).unwrap_err();
+        assert!(
+            missing.to_string().contains("missing shard 3/3"),
+            "{missing}"
+        );
+        let twice = [parts[0].clone(), parts[0].clone(), parts[1].clone()];
+        assert!(merge_shards(&system, &settings, &twice).is_err());
+        let other_seed = SolveSettings {
+            seed: 8,
+            ..settings.clone()
+        };
+        assert!(merge_shards(&system, &other_seed, &parts).is_err());
+    }
+    assert!(Shard::new(0, 3).is_none() && Shard::new(4, 3).is_none());
+}

@@ -6,6 +6,7 @@
 //! by `.ci/run` (`cargo test --locked -- --ignored`).
 
 mod certify;
+mod composition;
 mod homotopy;
 mod homotopy_known_roots;
 mod poly;

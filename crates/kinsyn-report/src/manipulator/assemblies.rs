@@ -4,7 +4,7 @@
 
 use super::{Loaded, clean, input_texts, inputs_or_reference, leg_warnings, load_with_body};
 use crate::Error;
-use crate::solve::{PathOption, solve_with_bar, start_name};
+use crate::solve::{PathOption, solve_with_bar};
 use itertools::Itertools;
 use kinsyn::geometry::Chart;
 use kinsyn::homotopy::{
@@ -426,7 +426,7 @@ impl BlockAssemblies {
                 bezout_number: solved.bezout_number().to_string(),
                 randomised: solved.len() < system.len(),
                 legs: self.kinds.clone(),
-                start: start_name(report.start).to_string(),
+                start: report.start.name().to_string(),
                 groups: start_groups(solved, report.start),
             },
             counts: AssemblyCounts {

@@ -6,7 +6,23 @@ use kinsyn::homotopy::{Solution, SolveReport, StartSystem};
 use kinsyn_report::solve::{
     Show, Solved, complex_text, count, multihomogeneous_text, paths_text, reality,
 };
+use kinsyn_report::solve_shards::ShardSummary;
 use std::fmt::Write as _;
+
+/// What `kinsyn solve --shard` did, in one line.
+pub(in crate::cli) fn shard_text(s: &ShardSummary) -> String {
+    format!(
+        "{}: shard {}/{} of the {} start system's {} paths: {} tracked in {:.3} s, written to {} (finish with --merge)\n",
+        s.source,
+        s.shard,
+        s.shards,
+        s.start,
+        s.paths,
+        s.tracked,
+        s.seconds,
+        s.out.display()
+    )
+}
 
 /// The certificate counts of a solve in one line.
 pub(super) fn certificate_line(report: &SolveReport) -> String {
