@@ -27,6 +27,8 @@ fn kinsyn_native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(catalogue::query_json, m)?)?;
     m.add_function(wrap_pyfunction!(solve::solve_json, m)?)?;
     m.add_function(wrap_pyfunction!(solve::solve_file_json, m)?)?;
+    m.add_function(wrap_pyfunction!(solve::solve_shard_json, m)?)?;
+    m.add_function(wrap_pyfunction!(solve::merge_shards_json, m)?)?;
     m.add_function(wrap_pyfunction!(papers::configurable_inverse_json, m)?)?;
     m.add_function(wrap_pyfunction!(papers::configurable_forward_json, m)?)?;
     m.add_function(wrap_pyfunction!(papers::configurable_velocity_json, m)?)?;

@@ -457,19 +457,18 @@ pub fn solve_with_progress(
 /// or all of them).
 fn first_ends(
     homotopy: &ProjectiveHomotopy,
-    starts: &[Result<DVector<C64>, PathFailure>],
+    starts: &StartPoints,
     settings: &SolveSettings,
     keep: impl Fn(usize) -> bool + Sync,
     progress: &(dyn Fn() + Sync),
 ) -> Vec<PathEnd> {
-    starts
-        .par_iter()
-        .enumerate()
-        .filter(|(k, _)| keep(*k))
-        .map(|(k, z)| {
-            let end = match z {
-                Ok(z) => track_path(homotopy, settings.tracker, k, z.clone()),
-                Err(failure) => failed_start(k, *failure),
+    (0..starts.len())
+        .into_par_iter()
+        .filter(|k| keep(*k))
+        .map(|k| {
+            let end = match starts.point(homotopy, k) {
+                Ok(z) => track_path(homotopy, settings.tracker, k, z),
+                Err(failure) => failed_start(k, failure),
             };
             progress();
             end
@@ -483,7 +482,7 @@ fn first_ends(
 fn finish_solve(
     system: &System,
     settings: &SolveSettings,
-    (homotopy, starts): (&ProjectiveHomotopy, &[Result<DVector<C64>, PathFailure>]),
+    (homotopy, starts): (&ProjectiveHomotopy, &StartPoints),
     mut ends: Vec<PathEnd>,
     seconds: f64,
 ) -> SolveReport {
@@ -494,22 +493,22 @@ fn finish_solve(
         // Each round stricter than the last: a path that failed or jumped again gets smaller
         // steps still.
         stricter = stricter.stricter();
-        let suspects: Vec<usize> = suspect_paths(&ends)
-            .into_iter()
-            .filter(|k| starts[*k].is_ok())
+        // A path without a start point (its polyhedral first stage failed) has nothing to
+        // track again.
+        let suspects: Vec<(usize, DVector<C64>)> = suspect_paths(&ends)
+            .into_par_iter()
+            .filter(|k| ends[*k].steps > 0 || ends[*k].kind != EndpointKind::Failed)
+            .filter_map(|k| starts.point(homotopy, k).ok().map(|z| (k, z)))
             .collect();
         if suspects.is_empty() {
             break;
         }
         retracked += suspects.len();
         let again: Vec<PathEnd> = suspects
-            .par_iter()
-            .filter_map(|k| {
-                let z = starts[*k].as_ref().ok()?;
-                Some(PathEnd {
-                    retracked: true,
-                    ..track_path(homotopy, stricter, *k, z.clone())
-                })
+            .into_par_iter()
+            .map(|(k, z)| PathEnd {
+                retracked: true,
+                ..track_path(homotopy, stricter, k, z)
             })
             .collect();
         for e in again {
@@ -531,23 +530,50 @@ fn finish_solve(
     }
 }
 
-/// The homotopy of `settings.start` for `system` and its start points, one per path; the
-/// failure of a path whose start could not be found (a polyhedral first-stage path).
-/// And the seconds spent on the mixed cells.
-type StartPaths = (
-    ProjectiveHomotopy,
-    Vec<Result<DVector<C64>, PathFailure>>,
-    f64,
-);
+/// The start points of a solve's paths, one per path in path order: listed (the total-degree
+/// and multi-homogeneous starts), or the polyhedral start's, each found when its path is
+/// tracked (its cell's homotopy followed to a root of `G`), so that a shard follows its own
+/// paths only.
+pub(crate) enum StartPoints {
+    /// Every start point.
+    Listed(Vec<DVector<C64>>),
+    /// The polyhedral first stage.
+    Polyhedral(polyhedral::PolyhedralStart),
+}
 
+impl StartPoints {
+    /// The number of paths.
+    pub(crate) fn len(&self) -> usize {
+        match self {
+            Self::Listed(points) => points.len(),
+            Self::Polyhedral(first) => first.paths(),
+        }
+    }
+
+    /// The start point of path `k` on `homotopy`'s patches, or why it has none (a polyhedral
+    /// first-stage path that failed).
+    fn point(
+        &self,
+        homotopy: &ProjectiveHomotopy,
+        k: usize,
+    ) -> Result<DVector<C64>, PathFailure> {
+        match self {
+            Self::Listed(points) => Ok(points[k].clone()),
+            Self::Polyhedral(first) => first.root(k).map(|x| homotopy.start_point(&x)),
+        }
+    }
+}
+
+/// The homotopy of `settings.start` for `system` and its start points, and the seconds spent
+/// on the mixed cells.
 fn start_paths(
     system: &System,
     settings: &SolveSettings,
     rng: &mut ChaCha8Rng,
-) -> Result<StartPaths, HomotopyError> {
+) -> Result<(ProjectiveHomotopy, StartPoints, f64), HomotopyError> {
     if settings.start != StartSystem::Polyhedral {
         let homotopy = ProjectiveHomotopy::new(system, settings.start, rng);
-        let starts = homotopy.start_solutions().into_iter().map(Ok).collect();
+        let starts = StartPoints::Listed(homotopy.start_solutions());
         return Ok((homotopy, starts, 0.0));
     }
     let subdivision = polyhedral_subdivision(
@@ -556,22 +582,8 @@ fn start_paths(
         crate::polyhedral::DEFAULT_MAX_LINEAR_PROGRAMS,
     )?;
     let first = polyhedral::polyhedral_start(system, &subdivision, rng, settings.tracker);
-    let found: Vec<Vec<C64>> = first
-        .roots
-        .iter()
-        .filter_map(|r| r.as_ref().ok().cloned())
-        .collect();
-    let homotopy = ProjectiveHomotopy::with_start_system(system, &first.system, found, rng);
-    let mut points = homotopy.start_solutions().into_iter();
-    let starts = first
-        .roots
-        .iter()
-        .map(|r| match r {
-            Ok(_) => Ok(points.next().expect("a start point per root found")),
-            Err(f) => Err(*f),
-        })
-        .collect();
-    Ok((homotopy, starts, subdivision.seconds))
+    let homotopy = ProjectiveHomotopy::with_start_system(system, &first.system, rng);
+    Ok((homotopy, StartPoints::Polyhedral(first), subdivision.seconds))
 }
 
 /// The end of a path whose start was not found.

@@ -25,25 +25,47 @@ use crate::polyhedral::{MixedCell, MixedSubdivision, binomial_roots};
 use nalgebra::{DMatrix, DVector};
 use rand::Rng;
 use rand_chacha::ChaCha8Rng;
-use rayon::prelude::*;
 
 /// `log t` at the start of every cell's path, with the least positive exponent scaled to 1:
 /// the terms off the cell weigh `e^{S0}` ≈ 10⁻¹² there.
 const S0: f64 = -27.631_021_115_928_547;
 
-/// The start system of the second stage and its roots.
+/// The start system of the second stage, and how to find its roots: each path's cell and
+/// binomial root, followed along the cell's homotopy on demand ([`Self::root`]), so that a
+/// shard of the solve follows only its own paths.
 pub(crate) struct PolyhedralStart {
     /// `G`: the target's supports (with the origin) and random coefficients on the unit
     /// circle.
     pub system: System,
-    /// `G`'s roots, one per unit of mixed volume, cell by cell; the failure of a path that could
-    /// not be followed even with stricter steps.
-    pub roots: Vec<Result<Vec<C64>, PathFailure>>,
+    cells: Vec<CellHomotopy>,
+    /// Per path (one per unit of mixed volume, cell by cell): its cell and binomial root, or
+    /// why it has none.
+    starts: Vec<(usize, Result<Vec<C64>, PathFailure>)>,
+    settings: TrackerSettings,
+}
+
+impl PolyhedralStart {
+    /// The number of paths: the mixed volume.
+    pub(crate) fn paths(&self) -> usize {
+        self.starts.len()
+    }
+
+    /// `G`'s root of path `k`: its cell's homotopy followed from the binomial root, with
+    /// stricter steps twice if need be; the failure of a path that could not be followed.
+    pub(crate) fn root(&self, k: usize) -> Result<Vec<C64>, PathFailure> {
+        let (cell, start) = &self.starts[k];
+        let y = start.as_ref().map_err(|f| *f)?;
+        let stricter = self.settings.stricter();
+        let cell = &self.cells[*cell];
+        cell.follow(y, self.settings)
+            .or_else(|_| cell.follow(y, stricter))
+            .or_else(|_| cell.follow(y, stricter.stricter()))
+    }
 }
 
 /// The first stage: `G` for `subdivision` (the mixed cells of `system`'s supports with the
-/// origin, [`crate::polyhedral::supports_of`]) and its roots, tracked in parallel, in cell
-/// order.
+/// origin, [`crate::polyhedral::supports_of`]), its cells' homotopies and binomial roots in
+/// cell order; the roots of `G` are followed path by path ([`PolyhedralStart::root`]).
 pub(crate) fn polyhedral_start(
     system: &System,
     subdivision: &MixedSubdivision,
@@ -89,20 +111,11 @@ pub(crate) fn polyhedral_start(
                 .collect(),
         })
         .collect();
-    let roots = starts
-        .par_iter()
-        .map(|(k, start)| {
-            let y = start.as_ref().map_err(|f| *f)?;
-            let stricter = settings.stricter();
-            cells[*k]
-                .follow(y, settings)
-                .or_else(|_| cells[*k].follow(y, stricter))
-                .or_else(|_| cells[*k].follow(y, stricter.stricter()))
-        })
-        .collect();
     PolyhedralStart {
         system: start_system,
-        roots,
+        cells,
+        starts,
+        settings,
     }
 }
 

@@ -129,9 +129,9 @@ enum Start {
     /// in group order, then its homogenising coordinate); and the assignments of equations to
     /// groups that complete, which the enumeration of the start solutions follows.
     LinearProduct(Vec<Vec<Vec<Vec<C64>>>>, Assignments),
-    /// A start system given with its roots (the polyhedral homotopy's `G`): its homogenised
-    /// program and the affine roots.
-    Explicit(Program, Vec<Vec<C64>>),
+    /// A start system whose roots are found apart (the polyhedral homotopy's `G`,
+    /// [`ProjectiveHomotopy::start_point`]): its homogenised program.
+    Explicit(Program),
 }
 
 /// The γ-trick homotopy from a start system to a homogenised target, in projective coordinates
@@ -232,12 +232,12 @@ impl ProjectiveHomotopy {
     }
 
     /// The γ-trick homotopy from `start_system` (square, in the target's variables, each
-    /// equation of the same degree as the target's) whose affine roots are `roots`, to
-    /// `system`, in one projective group: the second stage of the polyhedral homotopy.
+    /// equation of the same degree as the target's) to `system`, in one projective group: the
+    /// second stage of the polyhedral homotopy, whose start points are the start system's
+    /// roots ([`Self::start_point`]).
     pub(crate) fn with_start_system(
         system: &System,
         start_system: &System,
-        roots: Vec<Vec<C64>>,
         rng: &mut ChaCha8Rng,
     ) -> Self {
         let mut homotopy = Self::new(system, StartSystem::TotalDegree, rng);
@@ -255,8 +255,15 @@ impl ProjectiveHomotopy {
                 p.homogenize(&everything)
             })
             .collect();
-        homotopy.start = Start::Explicit(Program::new(&homogenised, system.nvars() + 1), roots);
+        homotopy.start = Start::Explicit(Program::new(&homogenised, system.nvars() + 1));
         homotopy
+    }
+
+    /// The start point of an explicit start system's affine root `x`: `(x, 1)` on the
+    /// patches.
+    pub(crate) fn start_point(&self, x: &[C64]) -> DVector<C64> {
+        let z = DVector::from_iterator(self.n + 1, x.iter().copied().chain([C64::from(1.0)]));
+        self.on_patches(z)
     }
 
     /// The start solutions, in a fixed order (the path numbers).
@@ -266,16 +273,8 @@ impl ProjectiveHomotopy {
             Start::LinearProduct(forms, assignments) => {
                 self.linear_product_solutions(forms, assignments)
             }
-            Start::Explicit(_, roots) => roots
-                .iter()
-                .map(|x| {
-                    let z = DVector::from_iterator(
-                        self.n + 1,
-                        x.iter().copied().chain([C64::from(1.0)]),
-                    );
-                    self.on_patches(z)
-                })
-                .collect(),
+            // An explicit start system's points come root by root ([`Self::start_point`]).
+            Start::Explicit(_) => Vec::new(),
         }
     }
 
@@ -395,7 +394,7 @@ impl ProjectiveHomotopy {
         scratch: (&mut Option<Workspace<C64>>, &mut Vec<C64>),
     ) {
         match &self.start {
-            Start::Explicit(program, _) => {
+            Start::Explicit(program) => {
                 let (ws, jacobian) = scratch;
                 let ws = ws.get_or_insert_with(|| program.workspace());
                 let dim = self.n + 1;

@@ -49,8 +49,10 @@ __all__ = [
     "components",
     "configurable",
     "query",
+    "merge_shards",
     "solve",
     "solve_file",
+    "solve_shard",
     "sweep",
 ]
 
@@ -596,6 +598,44 @@ def solve_file(
     """:func:`solve` for the Bertini input file at ``path`` (``kinsyn solve FILE --json``)."""
     return Solutions._from_report(
         json.loads(_native.solve_file_json(path, seed, start, runs, threads, certify))
+    )
+
+
+def solve_shard(
+    path: Union[str, "PathLike[str]"],
+    shard: int,
+    shards: int,
+    out: Union[str, "PathLike[str]"],
+    seed: int = 1,
+    start: str = "auto",
+    threads: Optional[int] = None,
+    force: bool = False,
+) -> Dict[str, Any]:
+    """Shard ``shard`` of ``shards`` (1-based) of the solve of the Bertini input file at
+    ``path``: its paths tracked once each and written to the shard file ``out``
+    (``kinsyn solve PATH --shard K/N --out OUT``), for :func:`merge_shards`. Returns the
+    summary (``shard``, ``shards``, ``start``, ``paths``, ``tracked``, ``seconds``). Every
+    shard and the merge must use the same ``seed`` and ``start``. Picklable arguments and the
+    GIL released: one shard per Dask task (docs/scale.md)."""
+    return json.loads(
+        _native.solve_shard_json(path, shard, shards, out, seed, start, threads, force)
+    )
+
+
+def merge_shards(
+    path: Union[str, "PathLike[str]"],
+    parts: Sequence[Union[str, "PathLike[str]"]],
+    seed: int = 1,
+    start: str = "auto",
+    threads: Optional[int] = None,
+    certify: bool = True,
+) -> Solutions:
+    """The solve of the Bertini input file at ``path`` finished from the shard files
+    ``parts`` of :func:`solve_shard` (any order, each of ``1 … N`` once): the same
+    :class:`Solutions` as :func:`solve_file` in one process, path for path
+    (``kinsyn solve PATH --merge PARTS…``)."""
+    return Solutions._from_report(
+        json.loads(_native.merge_shards_json(path, list(parts), seed, start, threads, certify))
     )
 
 

@@ -26,6 +26,24 @@ def solve_file_json(
     threads: Optional[int] = None,
     certify: bool = True,
 ) -> str: ...
+def solve_shard_json(
+    path: Union[str, PathLike[str]],
+    shard: int,
+    shards: int,
+    out: Union[str, PathLike[str]],
+    seed: int = 1,
+    start: str = "auto",
+    threads: Optional[int] = None,
+    force: bool = False,
+) -> str: ...
+def merge_shards_json(
+    path: Union[str, PathLike[str]],
+    parts: List[Union[str, PathLike[str]]],
+    seed: int = 1,
+    start: str = "auto",
+    threads: Optional[int] = None,
+    certify: bool = True,
+) -> str: ...
 
 def configurable_inverse_json(
     theta: float, phi: float, centre: Optional[str] = None, c4: Optional[str] = None
