@@ -80,7 +80,10 @@ pub fn solve_file_json(
 #[pyfunction]
 #[pyo3(signature = (path, shard, shards, out, seed = 1, start = "auto", threads = None,
     force = false))]
-#[expect(clippy::too_many_arguments, reason = "the options of `kinsyn solve --shard`")]
+#[expect(
+    clippy::too_many_arguments,
+    reason = "the options of `kinsyn solve --shard`"
+)]
 #[expect(
     clippy::needless_pass_by_value,
     reason = "PyO3 converts a Python path (str or os.PathLike) to an owned PathBuf"
@@ -96,8 +99,8 @@ pub fn solve_shard_json(
     threads: Option<usize>,
     force: bool,
 ) -> PyResult<String> {
-    let shard = kinsyn_report::solve_shards::parse_shard(&format!("{shard}/{shards}"))
-        .map_err(py_err)?;
+    let shard =
+        kinsyn_report::solve_shards::parse_shard(&format!("{shard}/{shards}")).map_err(py_err)?;
     let options = options(seed, start, 1, threads, true).map_err(py_err)?;
     let summary = py
         .detach(|| {

@@ -331,6 +331,7 @@ impl Components {
                         component: ComponentSummary {
                             dimension: c.dimension,
                             degree: c.degree,
+                            multiplicity: c.multiplicity,
                             trace_test_passed: c.trace_test_passed,
                             sample_point: complex(&c.sample_point),
                         },
@@ -405,6 +406,9 @@ fn products(blocks: &[BlockComponentsReport]) -> Vec<ModeComponentReport> {
                     degree: factors
                         .iter()
                         .fold(1_usize, |d, f| d.saturating_mul(f.component.degree)),
+                    multiplicity: factors
+                        .iter()
+                        .fold(1_usize, |d, f| d.saturating_mul(f.component.multiplicity)),
                     trace_test_passed: factors.iter().all(|f| f.component.trace_test_passed),
                     sample_point: factors
                         .iter()
@@ -448,6 +452,7 @@ impl BlockComponentsReport {
                     component: ComponentSummary {
                         dimension: c.dimension,
                         degree: c.degree,
+                        multiplicity: c.multiplicity,
                         trace_test_passed: c.trace_test_passed,
                         sample_point: complex(&c.sample),
                     },
@@ -658,8 +663,8 @@ pub struct DecompositionReport {
     pub method: &'static str,
     /// The seed of every random choice.
     pub seed: u64,
-    /// Singular witness points on no component found, by dimension: points of non-reduced
-    /// components (multiplicity > 1), not decomposed.
+    /// Singular witness points on no component found, by dimension: points that stayed
+    /// singular after deflation.
     pub unresolved: Vec<UnresolvedPoint>,
     /// The junk points removed (witness points of higher-dimensional components).
     pub junk: usize,
@@ -687,6 +692,9 @@ pub struct ComponentSummary {
     pub dimension: usize,
     /// Its degree: the points it meets a generic linear space of complementary dimension in.
     pub degree: usize,
+    /// Its multiplicity: 1 when reduced; at least 2 for a non-reduced component, found by
+    /// deflation (a product of blocks: the product of its factors').
+    pub multiplicity: usize,
     /// Whether the trace test confirmed its witness set is one irreducible component (false:
     /// perhaps a union of components).
     pub trace_test_passed: bool,

@@ -841,19 +841,14 @@ fn bad_all_assemblies_input_is_one_line_and_exit_2() {
     );
 }
 
-/// `kinsyn solve --shard K/N --out PART` in three processes and `--merge` of the parts (in
-/// another order) print the report of one process: every solution's coordinates to the bit,
-/// the counts, the start; a part missing, given twice, of another seed or system, a file that
-/// is no shard, a bad K/N or --runs with --shard are refused in one line.
-#[test]
-fn shards_merged_print_the_one_process_report() {
-    let dir = tempfile::tempdir().unwrap();
-    let file = "examples/systems/cyclic5.bertini";
-    let part = |k: usize| dir.path().join(format!("part{k}.json"));
+/// Shard files 1/3, 2/3, 3/3 of cyclic-5 with seed 4 in `dir`, written by three processes,
+/// listed 3, 1, 2.
+fn cyclic5_parts(dir: &Path) -> Vec<String> {
+    let part = |k: usize| dir.join(format!("part{k}.json"));
     for k in 1..=3 {
         let o = kinsyn(&[
             "solve",
-            file,
+            "examples/systems/cyclic5.bertini",
             "--seed",
             "4",
             "--shard",
@@ -862,55 +857,117 @@ fn shards_merged_print_the_one_process_report() {
             part(k).to_str().unwrap(),
         ]);
         assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
-        assert!(stdout(&o).contains(&format!("shard {k}/3")), "{}", stdout(&o));
+        assert!(
+            stdout(&o).contains(&format!("shard {k}/3")),
+            "{}",
+            stdout(&o)
+        );
     }
-    let parts: Vec<String> = [3, 1, 2]
+    [3, 1, 2]
         .iter()
         .map(|k| part(*k).to_str().unwrap().to_string())
-        .collect();
+        .collect()
+}
+
+/// `kinsyn solve --shard K/N --out PART` in three processes and `--merge` of the parts (in
+/// another order) print the report of one process: every solution's coordinates to the bit,
+/// the counts, the start.
+#[test]
+fn shards_merged_print_the_one_process_report() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = "examples/systems/cyclic5.bertini";
+    let parts = cyclic5_parts(dir.path());
     let mut args = vec!["solve", file, "--seed", "4", "--json", "--merge"];
     args.extend(parts.iter().map(String::as_str));
     let merged = json(&args);
     let one = json(&["solve", file, "--seed", "4", "--json"]);
     for key in [
-        "start", "paths", "nonsingular", "singular", "at_infinity", "failed", "complete",
-        "certified", "retracked",
+        "start",
+        "paths",
+        "nonsingular",
+        "singular",
+        "at_infinity",
+        "failed",
+        "complete",
+        "certified",
+        "retracked",
     ] {
         assert_eq!(merged[key], one[key], "{key}");
     }
     assert_eq!(merged["solutions"], one["solutions"]);
     // Cyclic-5's 70 roots (Björck & Fröberg 1991).
     assert_eq!(solutions(&merged).len(), 70);
+}
+
+/// A part missing, given twice, of another seed or system, a file that is no shard, a bad K/N
+/// or --runs with --shard are refused in one line, and nothing is written.
+#[test]
+fn shards_that_make_no_solve_are_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = "examples/systems/cyclic5.bertini";
+    let parts = cyclic5_parts(dir.path());
     let refused = |args: &[&str], needles: &[&str]| {
         assert_refused(&kinsyn(args), &format!("{args:?}"), needles);
     };
     refused(
-        &["solve", file, "--seed", "4", "--merge", &parts[0], &parts[1]],
+        &[
+            "solve", file, "--seed", "4", "--merge", &parts[0], &parts[1],
+        ],
         &["missing shard 2/3"],
     );
     refused(
-        &["solve", file, "--seed", "4", "--merge", &parts[0], &parts[0], &parts[1], &parts[2]],
+        &[
+            "solve", file, "--seed", "4", "--merge", &parts[0], &parts[0], &parts[1], &parts[2],
+        ],
         &["given twice"],
     );
     refused(
-        &["solve", file, "--seed", "5", "--merge", &parts[0], &parts[1], &parts[2]],
+        &[
+            "solve", file, "--seed", "5", "--merge", &parts[0], &parts[1], &parts[2],
+        ],
         &["shard of another solve"],
     );
     refused(
-        &["solve", "examples/systems/katsura5.bertini", "--seed", "4", "--merge", &parts[0]],
+        &[
+            "solve",
+            "examples/systems/katsura5.bertini",
+            "--seed",
+            "4",
+            "--merge",
+            &parts[0],
+        ],
         &["shard of another solve"],
     );
     let junk = write(dir.path(), "junk.json", b"{\"kind\": 3");
-    refused(&["solve", file, "--merge", &junk], &["not a kinsyn solve shard file"]);
+    refused(
+        &["solve", file, "--merge", &junk],
+        &["not a kinsyn solve shard file"],
+    );
     let out = dir.path().join("x.json");
     for bad in ["0/3", "4/3", "3", "a/b", "1/0"] {
         refused(
-            &["solve", file, "--shard", bad, "--out", out.to_str().unwrap()],
+            &[
+                "solve",
+                file,
+                "--shard",
+                bad,
+                "--out",
+                out.to_str().unwrap(),
+            ],
             &["--shard", "1-based"],
         );
     }
     refused(
-        &["solve", file, "--runs", "2", "--shard", "1/2", "--out", out.to_str().unwrap()],
+        &[
+            "solve",
+            file,
+            "--runs",
+            "2",
+            "--shard",
+            "1/2",
+            "--out",
+            out.to_str().unwrap(),
+        ],
         &["a sharded solve is one run"],
     );
     assert!(!out.exists(), "nothing written by a refused shard");

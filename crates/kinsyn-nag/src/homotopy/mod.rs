@@ -33,6 +33,7 @@
 
 // Public for the tests in tests/suite/; not part of the API.
 #[doc(hidden)]
+mod deflation;
 pub mod nearby;
 mod overdetermined;
 mod parameter;
@@ -538,7 +539,7 @@ pub(crate) enum StartPoints {
     /// Every start point.
     Listed(Vec<DVector<C64>>),
     /// The polyhedral first stage.
-    Polyhedral(polyhedral::PolyhedralStart),
+    Polyhedral(Box<polyhedral::PolyhedralStart>),
 }
 
 impl StartPoints {
@@ -552,11 +553,7 @@ impl StartPoints {
 
     /// The start point of path `k` on `homotopy`'s patches, or why it has none (a polyhedral
     /// first-stage path that failed).
-    fn point(
-        &self,
-        homotopy: &ProjectiveHomotopy,
-        k: usize,
-    ) -> Result<DVector<C64>, PathFailure> {
+    fn point(&self, homotopy: &ProjectiveHomotopy, k: usize) -> Result<DVector<C64>, PathFailure> {
         match self {
             Self::Listed(points) => Ok(points[k].clone()),
             Self::Polyhedral(first) => first.root(k).map(|x| homotopy.start_point(&x)),
@@ -583,7 +580,11 @@ fn start_paths(
     )?;
     let first = polyhedral::polyhedral_start(system, &subdivision, rng, settings.tracker);
     let homotopy = ProjectiveHomotopy::with_start_system(system, &first.system, rng);
-    Ok((homotopy, StartPoints::Polyhedral(first), subdivision.seconds))
+    Ok((
+        homotopy,
+        StartPoints::Polyhedral(Box::new(first)),
+        subdivision.seconds,
+    ))
 }
 
 /// The end of a path whose start was not found.

@@ -33,13 +33,14 @@
 //! The equations are brought in by increasing degree, then number of terms (in the order given
 //! among ties): short, low-degree equations first keep the intermediate sets small.
 
+use super::deflation::{Suspect, deflate};
 use super::nearby::PointList;
 use super::parameter::{FamilyEnd, track_parameters, track_parameters_to_end};
 use super::tracker::{PathFailure, TrackerSettings};
 use super::witness::{
     Component, DecomposeError, DecomposeSettings, Decomposition, MEMBERSHIP_TOLERANCE, PathBudget,
     SAME_POINT, Witness, family, gaussian, hyperplane, irreducible_pieces, on_larger_component,
-    random_combinations, vanishes,
+    random_combinations, satisfies, vanishes,
 };
 use super::{C64, relative_distance};
 use crate::poly::{Poly, Program, System};
@@ -209,10 +210,67 @@ pub fn regenerate_with_progress(
         &mut rng,
         &mut out,
     )?;
+    deflate_unresolved(system, &flag, (settings, &budget), &mut rng, &mut out)?;
     out.components
         .sort_by_key(|c| (std::cmp::Reverse(c.dimension), std::cmp::Reverse(c.degree)));
     out.seconds = clock.elapsed().as_secs_f64();
     Ok(out)
+}
+
+/// The singular points left unresolved that satisfy every equation, deflated dimension by
+/// dimension from the top ([`super::deflation`]): the non-reduced components of `V(F)`, each
+/// with the number of paths that ended at its witness points as its multiplicity. Points of
+/// an intermediate step that a later equation does not vanish on stay unresolved.
+fn deflate_unresolved(
+    system: &System,
+    flag: &[Vec<C64>],
+    (settings, budget): (&DecomposeSettings, &PathBudget),
+    rng: &mut ChaCha8Rng,
+    out: &mut Decomposition,
+) -> Result<(), DecomposeError> {
+    let unresolved = std::mem::take(&mut out.unresolved);
+    let mut dims: Vec<usize> = unresolved.iter().map(|(d, _)| *d).collect();
+    dims.sort_unstable_by(|a, b| b.cmp(a));
+    dims.dedup();
+    let mut deflated: Vec<Witness> = Vec::new();
+    for d in dims {
+        let mut suspects: Vec<Suspect> = Vec::new();
+        for (_, x) in unresolved.iter().filter(|(e, _)| *e == d) {
+            if !satisfies(system, x, settings.residual_tolerance.sqrt()) {
+                out.unresolved.push((d, x.clone()));
+            } else if let Some(s) = suspects
+                .iter_mut()
+                .find(|s| relative_distance(&s.x, x) <= MEMBERSHIP_TOLERANCE)
+            {
+                s.paths += 1;
+            } else {
+                suspects.push(Suspect {
+                    x: x.clone(),
+                    paths: 1,
+                });
+            }
+        }
+        if suspects.is_empty() {
+            continue;
+        }
+        // The larger deflated components; the branches' own were the first membership test.
+        let larger: Vec<&Witness> = deflated.iter().collect();
+        let found = deflate(
+            system,
+            d,
+            &flag[..d],
+            suspects,
+            &larger,
+            (settings, budget),
+            rng,
+        )?;
+        out.paths += found.paths;
+        out.junk += found.junk;
+        out.components.extend(found.components);
+        out.unresolved.extend(found.unresolved);
+        deflated.extend(found.witnesses);
+    }
+    Ok(())
 }
 
 /// The last stage: each branch split into irreducible pieces, and pieces inside a larger
@@ -260,6 +318,7 @@ fn finish(
                 sample_point: points[0].clone(),
                 witness_points: points,
                 trace_test_passed: passed,
+                multiplicity: 1,
             });
         }
     }
@@ -283,6 +342,7 @@ fn witness_of(system: &System, b: &Branch, flag: &[Vec<C64>]) -> Result<Witness,
         family: family(system, b.active.clone(), &[], b.dim, 0)?,
         base: flag[..b.dim].concat(),
         points: b.points.clone(),
+        sliced: system.nvars(),
     })
 }
 
@@ -498,7 +558,7 @@ fn rescue(
 
 /// The root of the square system `equations` that Newton's method reaches from `x`, if it
 /// converges there quadratically on a well-conditioned Jacobian.
-fn regular_root(equations: &[Poly], x: &[C64]) -> Option<Vec<C64>> {
+pub(super) fn regular_root(equations: &[Poly], x: &[C64]) -> Option<Vec<C64>> {
     let n = x.len();
     let system = System::new(
         (0..n).map(|j| format!("x{j}")).collect(),

@@ -15,9 +15,11 @@
 //!    so it is never a regular solution — junk is singular. Singular endpoints are put to the
 //!    **homotopy membership test** against every larger witness set (its slice is translated
 //!    to pass through the point; the point is on that component iff it is an endpoint); those
-//!    that pass are junk and dropped, those that fail would be witness points of non-reduced
-//!    components (multiplicity > 1), which this version does not decompose: they are reported
-//!    in [`Decomposition::unresolved`];
+//!    that pass are junk and dropped, those that fail are witness points of non-reduced
+//!    components (multiplicity > 1): they are **deflated** (`super::deflation`) into regular
+//!    points of a lifted system and decomposed like the rest, each component with its
+//!    multiplicity; points still singular after the deflation steps are reported in
+//!    [`Decomposition::unresolved`];
 //! 3. splits each witness set into irreducible pieces by **monodromy** (the slice moved
 //!    around loops through random complex slices; points that permute lie on one component)
 //!    and confirms each piece with the **linear trace test** (the sum of a linear function
@@ -27,6 +29,7 @@
 //!
 //! All random choices come from one seed.
 
+use super::deflation::{Suspect, deflate};
 use super::nearby::NearPoints;
 use super::parameter::{
     FamilyEnd, ParameterError, ParametrizedSystem, track_parameters, track_parameters_to_end,
@@ -196,6 +199,10 @@ pub struct Component {
     /// Whether the linear trace test confirmed the piece as a whole component (always true in
     /// dimension 0, where a point is a component).
     pub trace_test_passed: bool,
+    /// Its multiplicity: 1 for a reduced component; at least 2 for a component found by
+    /// deflation — by dimension, the paths that ended at each of its witness points;
+    /// regeneration, which merges its endpoints, gives a lower bound ([`super::deflation`]).
+    pub multiplicity: usize,
 }
 
 /// The irreducible decomposition of `V(F)`.
@@ -206,8 +213,9 @@ pub struct Decomposition {
     /// The slice of each dimension `d` (index `d`): `d` rows `[a_0, …, a_{N−1}, b]`, the
     /// hyperplanes `Σ a_j x_j + b = 0`.
     pub slices: Vec<Vec<Vec<C64>>>,
-    /// Singular points of the witness supersets that no larger component contains: witness
-    /// points of non-reduced components, not decomposed here (`(dimension, point)`).
+    /// Singular points of the witness supersets that no larger component contains and that
+    /// deflation did not make regular (`(dimension, point)`); with regeneration also the
+    /// singular points of an intermediate step that a later equation cuts.
     pub unresolved: Vec<(usize, Vec<C64>)>,
     /// Singular points of the witness supersets found on larger components and dropped.
     pub junk: usize,
@@ -240,6 +248,9 @@ pub(super) struct Witness {
     pub(super) family: ParametrizedSystem,
     pub(super) base: Vec<C64>,
     pub(super) points: Vec<Vec<C64>>,
+    /// The leading unknowns the slices cut, those of the system decomposed: all of the
+    /// family's, or fewer for a deflated family (whose multipliers `λ` follow them).
+    pub(super) sliced: usize,
 }
 
 /// The irreducible decomposition of `V(system)` (module documentation).
@@ -257,24 +268,12 @@ pub fn decompose(
     let estimated_paths = decompose_paths(system);
     let budget = PathBudget::new(system, settings, estimated_paths)?;
     let (n, big_n) = (system.len(), system.nvars());
-    // Each sliced system is a solve of its own, within the solver's ceiling.
-    let weight = super::path_weight(big_n);
-    let ceiling = u128::from(super::MAX_PATHS);
-    if let Some((dimension, paths)) =
-        sliced_paths(system).find(|(_, p)| p.saturating_mul(u128::from(weight)) > ceiling)
-    {
-        return Err(DecomposeError::Solve {
-            dimension,
-            source: HomotopyError::TooManyPaths {
-                paths,
-                weight,
-                limit: super::MAX_PATHS,
-            },
-        });
-    }
+    check_sliced_solves(system)?;
     let mut rng = ChaCha8Rng::seed_from_u64(settings.seed);
     let lowest = big_n.saturating_sub(n);
     let mut witnesses: Vec<Option<Witness>> = (0..big_n).map(|_| None).collect();
+    // The witness sets of the components found by deflation, for the membership tests.
+    let mut deflated: Vec<Witness> = Vec::new();
     let mut slices = vec![Vec::new(); big_n];
     let mut decomposition = Decomposition {
         components: Vec::new(),
@@ -305,53 +304,119 @@ pub fn decompose(
         budget.spend(report.retracked)?;
         decomposition.paths += report.paths();
         let mut points = Vec::new();
+        let mut suspects = Vec::new();
         for s in &report.solutions {
             if s.regular && satisfies(system, &s.x, settings.residual_tolerance) {
                 points.push(s.x.clone());
             } else if !s.regular && satisfies(system, &s.x, settings.residual_tolerance.sqrt()) {
-                let (on_larger, paths) =
-                    on_larger_component(witnesses.iter().flatten(), &s.x, settings, &budget)?;
+                let (on_larger, paths) = on_larger_component(
+                    witnesses.iter().flatten().chain(&deflated),
+                    &s.x,
+                    settings,
+                    &budget,
+                )?;
                 decomposition.paths += paths;
                 if on_larger {
                     decomposition.junk += 1;
                 } else {
-                    decomposition.unresolved.push((d, s.x.clone()));
+                    suspects.push(Suspect {
+                        x: s.x.clone(),
+                        paths: s.multiplicity,
+                    });
                 }
             }
         }
-        if points.is_empty() {
-            continue;
+        if !points.is_empty() {
+            let witness = Witness {
+                family,
+                base,
+                points,
+                sliced: big_n,
+            };
+            let (components, paths) = components_of(&witness, d, settings, &mut rng, &budget)?;
+            decomposition.paths += paths;
+            decomposition.components.extend(components);
+            witnesses[d] = Some(witness);
         }
-        let witness = Witness {
-            family,
-            base,
-            points,
-        };
-        let (pieces, paths) = if d == 0 {
-            (
-                (0..witness.points.len()).map(|i| (vec![i], true)).collect(),
-                0,
-            )
-        } else {
-            irreducible_pieces(&witness, settings, &mut rng, &budget)?
-        };
-        decomposition.paths += paths;
-        for (members, passed) in pieces {
+        // The singular points on no larger component: non-reduced components, deflated.
+        if !suspects.is_empty() {
+            let larger: Vec<&Witness> = witnesses[d + 1..]
+                .iter()
+                .flatten()
+                .chain(&deflated)
+                .collect();
+            let found = deflate(
+                system,
+                d,
+                &slices[d],
+                suspects,
+                &larger,
+                (settings, &budget),
+                &mut rng,
+            )?;
+            decomposition.paths += found.paths;
+            decomposition.junk += found.junk;
+            decomposition.components.extend(found.components);
+            decomposition.unresolved.extend(found.unresolved);
+            deflated.extend(found.witnesses);
+        }
+    }
+    decomposition.slices = slices;
+    decomposition.seconds = clock.elapsed().as_secs_f64();
+    Ok(decomposition)
+}
+
+/// Each sliced system of [`decompose`] is a solve of its own, within the solver's ceiling
+/// ([`super::MAX_PATHS`] weighted paths).
+fn check_sliced_solves(system: &System) -> Result<(), DecomposeError> {
+    let weight = super::path_weight(system.nvars());
+    let ceiling = u128::from(super::MAX_PATHS);
+    match sliced_paths(system).find(|(_, p)| p.saturating_mul(u128::from(weight)) > ceiling) {
+        Some((dimension, paths)) => Err(DecomposeError::Solve {
+            dimension,
+            source: HomotopyError::TooManyPaths {
+                paths,
+                weight,
+                limit: super::MAX_PATHS,
+            },
+        }),
+        None => Ok(()),
+    }
+}
+
+/// The components of the (reduced) witness set `witness` of dimension `d`: its irreducible
+/// pieces (each point a component in dimension 0), and the paths tracked.
+fn components_of(
+    witness: &Witness,
+    d: usize,
+    settings: &DecomposeSettings,
+    rng: &mut ChaCha8Rng,
+    budget: &PathBudget,
+) -> Result<(Vec<Component>, usize), DecomposeError> {
+    let (pieces, paths) = if d == 0 {
+        (
+            (0..witness.points.len()).map(|i| (vec![i], true)).collect(),
+            0,
+        )
+    } else {
+        irreducible_pieces(witness, settings, rng, budget)?
+    };
+    let components = pieces
+        .into_iter()
+        .map(|(members, passed)| {
             let witness_points: Vec<Vec<C64>> =
                 members.iter().map(|i| witness.points[*i].clone()).collect();
-            decomposition.components.push(Component {
+            Component {
                 dimension: d,
                 degree: witness_points.len(),
                 sample_point: witness_points[0].clone(),
                 witness_points,
                 trace_test_passed: passed,
-            });
-        }
-        witnesses[d] = Some(witness);
-    }
-    decomposition.slices = slices;
-    decomposition.seconds = clock.elapsed().as_secs_f64();
-    Ok(decomposition)
+                multiplicity: 1,
+            }
+        })
+        .collect();
+    Ok((components, paths))
 }
 
 pub(super) fn gaussian(rng: &mut ChaCha8Rng) -> C64 {
@@ -641,16 +706,34 @@ pub(super) fn vanishes(f: &Poly, x: &[C64], tolerance: f64) -> bool {
 
 /// The homotopy membership test of `y` against every larger witness set: each set's slice is
 /// translated to pass through `y` and its points followed; `y` lies on one of those
-/// components iff it is among the endpoints. Returns the verdict and the paths tracked.
+/// components iff it is among the endpoints. Returns the verdict and the paths tracked (a
+/// test with failed paths counts as outside: [`membership`] tells it apart).
 pub(super) fn on_larger_component<'a>(
     witnesses: impl IntoIterator<Item = &'a Witness>,
     y: &[C64],
     settings: &DecomposeSettings,
     budget: &PathBudget,
 ) -> Result<(bool, usize), DecomposeError> {
+    membership(witnesses, y, settings, budget).map(|(inside, paths)| (inside == Some(true), paths))
+}
+
+/// [`on_larger_component`] with its doubt: `Some(true)` when `y` is an endpoint, `Some(false)`
+/// when every path ended elsewhere, `None` when some path failed and none reached `y` (the
+/// path to `y`, a singular point where components meet, may be the one that failed).
+pub(super) fn membership<'a>(
+    witnesses: impl IntoIterator<Item = &'a Witness>,
+    y: &[C64],
+    settings: &DecomposeSettings,
+    budget: &PathBudget,
+) -> Result<(Option<bool>, usize), DecomposeError> {
     let big_n = y.len();
     let mut paths = 0;
+    let mut doubt = false;
     for w in witnesses {
+        debug_assert_eq!(
+            w.sliced, big_n,
+            "a point of the system the witness set slices"
+        );
         let mut target = w.base.clone();
         for row in target.chunks_mut(big_n + 1) {
             row[big_n] = -row[..big_n].iter().zip(y).map(|(a, v)| a * v).sum::<C64>();
@@ -666,18 +749,20 @@ pub(super) fn on_larger_component<'a>(
             &w.points,
             settings.solve.tracker,
         ) else {
+            doubt = true;
             continue;
         };
         if ends.iter().flatten().any(|e| match e {
             FamilyEnd::Regular(x) | FamilyEnd::Singular(x) => {
-                relative_distance(x, y) <= MEMBERSHIP_TOLERANCE
+                relative_distance(&x[..big_n], y) <= MEMBERSHIP_TOLERANCE
             }
             FamilyEnd::Infinite => false,
         }) {
-            return Ok((true, paths));
+            return Ok((Some(true), paths));
         }
+        doubt |= ends.iter().any(Result::is_err);
     }
-    Ok((false, paths))
+    Ok((if doubt { None } else { Some(false) }, paths))
 }
 
 /// A singular point and an endpoint of the membership test are the same point within this
@@ -817,7 +902,9 @@ fn trace_parts(
     settings: &DecomposeSettings,
     rng: &mut ChaCha8Rng,
 ) -> (Vec<C64>, Vec<f64>, Vec<bool>) {
-    let big_n = w.points[0].len();
+    // The form reads the sliced unknowns: a deflated point's multipliers are no linear
+    // function on the component.
+    let big_n = w.sliced;
     let form: Vec<C64> = (0..big_n).map(|_| gaussian(rng)).collect();
     let ell = |x: &[C64]| -> C64 { form.iter().zip(x).map(|(a, v)| a * v).sum() };
     let delta: Vec<C64> = (0..w.base.len() / (big_n + 1))

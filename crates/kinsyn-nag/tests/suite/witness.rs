@@ -162,26 +162,26 @@ fn trace_test_alone_groups_the_points() {
 }
 
 /// `x² = y = 0`: the z-axis counted twice, a non-reduced line. Its witness point is a singular
-/// endpoint that no larger component contains: reported as unresolved, not as a component.
+/// endpoint that no larger component contains; deflation makes it a regular point of
+/// `[F; J B λ; h·λ − 1]`, and the line is reported with multiplicity 2 by both methods (by
+/// dimension: the two paths that end there; regeneration brings in y first, then x² = 0 on the
+/// plane y = 0: two paths to the same point).
 #[test]
-fn non_reduced_line_is_unresolved() {
+fn non_reduced_line_by_deflation() {
     let (x, y, _) = xyz();
     let s = system(vec![&x * &x, y]);
-    let d = decompose(&s, &DecomposeSettings::default()).unwrap();
-    assert!(d.components.is_empty(), "{:?}", d.signature());
-    assert_eq!(d.unresolved.len(), 1);
-    let (dim, p) = &d.unresolved[0];
-    assert_eq!(*dim, 1);
-    assert!(p[0].norm() < 1e-5 && p[1].norm() < 1e-8, "{p:?}");
-    // Regeneration brings in y first (lower degree), then x² = 0 on the plane y = 0: the line
-    // counted twice; its witness point is singular, so the step cannot go on from it: it is
-    // reported (dimension 1, x = 0), nothing is made up.
-    let r = regenerate(&s, &DecomposeSettings::default()).unwrap();
-    assert!(r.components.is_empty(), "{:?}", r.signature());
-    assert_eq!(r.unresolved.len(), 1);
-    let (dim, p) = &r.unresolved[0];
-    assert_eq!(*dim, 1);
-    assert!(p[0].norm() < 1e-5, "{p:?}");
+    for d in [
+        decompose(&s, &DecomposeSettings::default()).unwrap(),
+        regenerate(&s, &DecomposeSettings::default()).unwrap(),
+    ] {
+        assert!(d.unresolved.is_empty(), "{:?}", d.unresolved);
+        assert_eq!(d.signature(), vec![(1, 1)]);
+        let line = &d.components[0];
+        assert_eq!(line.multiplicity, 2);
+        assert!(line.trace_test_passed);
+        let p = &line.witness_points[0];
+        assert!(p[0].norm() < 1e-6 && p[1].norm() < 1e-8, "{p:?}");
+    }
 }
 
 /// Bad input is an error, not a panic.
@@ -191,4 +191,68 @@ fn zero_equation_is_refused() {
     let s = system(vec![x, Poly::zero(3)]);
     assert!(decompose(&s, &DecomposeSettings::default()).is_err());
     assert!(regenerate(&s, &DecomposeSettings::default()).is_err());
+}
+
+/// A component's `(dimension, degree, multiplicity)`.
+type Signature = (usize, usize, usize);
+
+/// The components of `equations` (in x, y, z) by dimension: `(dimension, degree,
+/// multiplicity)`, sorted, with nothing left unresolved.
+fn with_multiplicities(equations: Vec<Poly>, seed: u64) -> Vec<Signature> {
+    let d = decompose(
+        &system(equations),
+        &DecomposeSettings {
+            seed,
+            ..DecomposeSettings::default()
+        },
+    )
+    .unwrap();
+    assert!(d.unresolved.is_empty(), "unresolved: {:?}", d.unresolved);
+    assert!(d.components.iter().all(|c| c.trace_test_passed), "{d:?}");
+    let mut found: Vec<Signature> = d
+        .components
+        .iter()
+        .map(|c| (c.dimension, c.degree, c.multiplicity))
+        .collect();
+    found.sort_unstable();
+    found
+}
+
+/// Non-reduced components by deflation, each against its hand count (Sommese & Wampler 2005,
+/// §13.3 and ch. 15 on multiplicity): `V(x², y)` is the z-axis counted twice; `V((y − x²)²,
+/// z − xy)` the twisted cubic (degree 3) twice; `x (y − 1)²` the plane `x = 0` once and the
+/// plane `y = 1` twice; `(x², y − 1, z)`'s point twice. Before deflation each was left
+/// unresolved. Three seeds each.
+#[test]
+fn non_reduced_components_by_deflation() {
+    let v = |i| Poly::variable(3, i);
+    let one = Poly::real(3, 1.0);
+    let cubic = &v(1) - &(&v(0) * &v(0));
+    let cases: Vec<(&str, Vec<Poly>, Vec<Signature>)> = vec![
+        ("double line", vec![&v(0) * &v(0), v(1)], vec![(1, 1, 2)]),
+        (
+            "double twisted cubic",
+            vec![&cubic * &cubic, &v(2) - &(&v(0) * &v(1))],
+            vec![(1, 3, 2)],
+        ),
+        (
+            "a plane and a double plane",
+            vec![&v(0) * &(&(&v(1) - &one) * &(&v(1) - &one))],
+            vec![(2, 1, 1), (2, 1, 2)],
+        ),
+        (
+            "a double point",
+            vec![&v(0) * &v(0), &v(1) - &one, v(2)],
+            vec![(0, 1, 2)],
+        ),
+    ];
+    for (name, equations, expected) in cases {
+        for seed in 1..=3 {
+            assert_eq!(
+                with_multiplicities(equations.clone(), seed),
+                expected,
+                "{name}, seed {seed}"
+            );
+        }
+    }
 }

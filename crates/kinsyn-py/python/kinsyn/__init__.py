@@ -664,7 +664,8 @@ def components(
 
     One row per component: ``dimension`` (0: isolated solutions, the assemblies; above 0: a
     self-motion, or with free inputs an operation mode of that many dof), ``degree``,
-    ``real_points``, ``trace_test_passed``, ``motion`` (for a manipulator's real assemblies,
+    ``multiplicity`` (1 when reduced; at least 2 for a non-reduced component, found by
+    deflation), ``real_points``, ``trace_test_passed``, ``motion`` (for a manipulator's real assemblies,
     the operation mode: dof and pattern with the inputs released), and ``mechanism`` (the whole
     mechanism placed at a real point the legs reach: the body's ``dof`` and ``pattern`` with
     the held inputs locked, ``moving_inputs``, ``still_inputs``, ``held_inputs``; ``None``
@@ -685,6 +686,7 @@ def components(
             {
                 "dimension": c["dimension"],
                 "degree": c["degree"],
+                "multiplicity": c["multiplicity"],
                 "real_points": c["real_points"],
                 "trace_test_passed": c["trace_test_passed"],
                 "motion": c.get("motion"),
@@ -695,6 +697,7 @@ def components(
         columns=[
             "dimension",
             "degree",
+            "multiplicity",
             "real_points",
             "trace_test_passed",
             "motion",

@@ -106,6 +106,9 @@ pub struct ModeComponent {
     pub dimension: usize,
     /// Its degree.
     pub degree: usize,
+    /// Its multiplicity: 1 when reduced, at least 2 for a non-reduced component (found by
+    /// deflation).
+    pub multiplicity: usize,
     /// Whether the trace test confirmed it.
     pub trace_test_passed: bool,
     /// A (complex) witness point.
@@ -295,6 +298,7 @@ impl Manipulator {
                     dimension: c.dimension,
                     degree: c.degree,
                     trace_test_passed: c.trace_test_passed,
+                    multiplicity: c.multiplicity,
                     sample: c.sample_point.clone(),
                     real,
                     real_points,

@@ -166,10 +166,22 @@ fn equal_inputs_give_a_one_dof_self_motion_in_the_second_mode() {
     // Paper 004 §5.2, Fig. 9: all actuated angles equal — the platform gains a 1-dof
     // self-motion in K2 (rotating about a vertical axis while its height changes:
     // h² = r² − a² − b² + 2ab cos φ, tests/suite/ruu_singularities.rs), with every input held.
+    // Besides it, complex curves counted twice (no real point, found by deflation: before it,
+    // their singular witness points were left unresolved): no configuration, no motion.
     for theta in [0.0, 0.3] {
         let m = modes([theta; 4], 1, DecompositionMethod::Regeneration);
-        let positive: Vec<&ModeComponent> =
-            m.components.iter().filter(|c| c.dimension > 0).collect();
+        let (positive, doubled): (Vec<&ModeComponent>, Vec<&ModeComponent>) = m
+            .components
+            .iter()
+            .filter(|c| c.dimension > 0)
+            .partition(|c| c.multiplicity == 1);
+        assert!(
+            doubled
+                .iter()
+                .all(|c| c.multiplicity >= 2 && c.real_points.is_empty()),
+            "θ = {theta}: {:?}",
+            m.decomposition.signature()
+        );
         assert_eq!(
             positive.len(),
             1,

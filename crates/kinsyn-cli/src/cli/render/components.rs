@@ -57,10 +57,11 @@ fn system_text(
     for (k, c) in d.components.iter().enumerate() {
         let _ = writeln!(
             out,
-            "  {}. dimension {}, degree {}{}; a point: {}",
+            "  {}. dimension {}, degree {}{}{}; a point: {}",
             k + 1,
             c.dimension,
             c.degree,
+            multiplicity_text(c.multiplicity),
             if c.trace_test_passed {
                 ""
             } else {
@@ -95,7 +96,7 @@ fn unresolved_text(out: &mut String, d: &Decomposition) {
         dims.dedup();
         let _ = writeln!(
             out,
-            "warning: {} singular witness point{} on no component found (dimension {}): a non-reduced component (multiplicity > 1), not decomposed here",
+            "warning: {} singular witness point{} on no component found (dimension {}): singular still after deflation, not decomposed here",
             d.unresolved.len(),
             if d.unresolved.len() == 1 { "" } else { "s" },
             dims.iter()
@@ -373,9 +374,10 @@ fn components_text(
         );
         let _ = writeln!(
             out,
-            "  dimension {}, degree {}{}: {what}{}; {motion}",
+            "  dimension {}, degree {}{}{}: {what}{}; {motion}",
             c.dimension,
             c.degree,
+            multiplicity_text(c.multiplicity),
             if c.trace_test_passed {
                 ""
             } else {
@@ -435,4 +437,13 @@ fn components_text(
         }
     }
     unresolved_text(out, d);
+}
+
+/// `, multiplicity μ` for a non-reduced component (found by deflation), nothing when reduced.
+fn multiplicity_text(multiplicity: usize) -> String {
+    if multiplicity > 1 {
+        format!(", multiplicity {multiplicity} (non-reduced, by deflation)")
+    } else {
+        String::new()
+    }
 }
