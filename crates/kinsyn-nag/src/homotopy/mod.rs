@@ -33,7 +33,7 @@
 
 // Public for the tests in tests/suite/; not part of the API.
 #[doc(hidden)]
-mod deflation;
+pub mod deflation;
 pub mod nearby;
 mod overdetermined;
 mod parameter;

@@ -118,7 +118,9 @@ struct FlatWorkspace<S> {
 }
 
 impl Program {
-    /// Compiles `equations` (each a polynomial in `nvars` variables), flat ([`Flat::new`]).
+    /// Compiles `equations` (each a polynomial in `nvars` variables), flat: the monomials of
+    /// the equations and of their partial derivatives listed once, each derivative taken term
+    /// by term from the variables the term involves.
     ///
     /// # Panics
     /// If an equation's ring does not have `nvars` variables.
