@@ -193,10 +193,11 @@ pub(super) fn deflate(
             out.unresolved.push((d, s.x));
             continue;
         };
-        // Every point of the same rank sequence, lifted through the same steps.
+        // Every point of the same rank sequence, lifted through the same steps; the first
+        // point is settled in this round whatever happens, so that the rounds end.
         let mut members: Vec<(Vec<C64>, usize)> = Vec::new();
         let mut rest = Vec::new();
-        for s in left.drain(..) {
+        for (k, s) in left.drain(..).enumerate() {
             let mut y = s.x.clone();
             let mut current = system.clone();
             let mut ok = true;
@@ -218,7 +219,11 @@ pub(super) fn deflate(
                 .then(|| super::regeneration::regular_root(&square, &y))
                 .flatten();
             let Some(y) = refined else {
-                rest.push(s);
+                if k == 0 {
+                    out.unresolved.push((d, s.x));
+                } else {
+                    rest.push(s);
+                }
                 continue;
             };
             if members
@@ -241,6 +246,9 @@ pub(super) fn deflate(
             }
         }
         left = rest;
+        if members.is_empty() {
+            continue;
+        }
         let family = system_family_of(&combined, n, d)?;
         let witness = Witness {
             family,
