@@ -334,27 +334,47 @@ fn equal_inputs_give_a_rotation_about_a_vertical_axis_in_the_second_schoenflies_
     // every leg exactly when |R(φ) b e_i − a e_i|² + h² = r², i.e. h² = r² − a² − b²
     // + 2ab cos φ = 4 cos φ − 1 (the coplanarity g1–g4 holds as z = Z).
     // Measured (θ = 0 and tan(θ/2) = 0.4, seeds 1 and 2): exactly one positive-dimensional
-    // reduced component, of dimension 1 and degree 8, in K2; 8 isolated points, all in K1;
-    // 8 unresolved points in dimension 1 and 32 in dimension 0, all in K2 — Singular shows why:
-    // besides the degree-8 curve, I has two more 1-dimensional components of degree 4 in K2
-    // (with 8 y0² + 1 = 0: no real point) which are non-reduced (primary of multiplicity 8 over
-    // a prime of degree 4 at θ = 0), and decompose does not decompose non-reduced components.
+    // reduced component, of dimension 1 and degree 8, in K2; 8 isolated points, all in K1.
+    // Singular: besides the degree-8 curve, I has two more 1-dimensional components of degree
+    // 4 in K2 (with 8 y0² + 1 = 0: no real point), non-reduced: a primary of multiplicity 8
+    // over a prime of degree 4 at θ = 0, so multiplicity 2. Deflation finds them: components
+    // of dimension 1 in K2 of multiplicity 2 whose degrees add up to 2 × 4 (over ℂ, each
+    // ℚ-prime splits into lines), and nothing is left unresolved (before deflation: 8 points
+    // in dimension 1 and 32 in dimension 0, now junk on the double lines).
     for (t, rational) in [(0.0, "0"), (0.4, "2/5")] {
         let inputs = InputMode::Given([t; 4]);
         let system = fibre(inputs);
         for seed in [1, 2] {
             let d = decomposition(inputs, seed);
+            let reduced = Decomposition {
+                components: d
+                    .components
+                    .iter()
+                    .filter(|c| c.multiplicity == 1)
+                    .cloned()
+                    .collect(),
+                ..d.clone()
+            };
             assert_eq!(
-                positive_dimensional(&d),
+                positive_dimensional(&reduced),
                 vec![(1, 8, Mode::K2)],
                 "t = {t}, seed {seed}"
             );
-            assert_eq!(isolated(&d), [8, 0, 0], "t = {t}, seed {seed}");
-            let unresolved: Vec<usize> = (0..2)
-                .map(|k| d.unresolved.iter().filter(|(dim, _)| *dim == k).count())
-                .collect();
-            assert_eq!(unresolved, vec![32, 8], "t = {t}, seed {seed}");
-            assert!(d.unresolved.iter().all(|(_, p)| mode(p) == Mode::K2));
+            assert_eq!(isolated(&reduced), [8, 0, 0], "t = {t}, seed {seed}");
+            let doubled: Vec<&Component> =
+                d.components.iter().filter(|c| c.multiplicity > 1).collect();
+            assert!(
+                doubled.iter().all(|c| c.dimension == 1
+                    && c.multiplicity == 2
+                    && component_mode(c) == Mode::K2),
+                "t = {t}, seed {seed}: {doubled:?}"
+            );
+            assert_eq!(
+                doubled.iter().map(|c| c.degree).sum::<usize>(),
+                8,
+                "t = {t}, seed {seed}"
+            );
+            assert!(d.unresolved.is_empty(), "t = {t}, seed {seed}");
             // Real points of the curve: its witness points moved to the real planes x3 = c.
             let curve = d.components.iter().find(|c| c.dimension == 1).unwrap();
             let theta = 2.0 * t.atan();
@@ -582,7 +602,11 @@ fn third_mode_self_motions_need_more_than_the_printed_conditions() {
     let fig14 = InputMode::Angles([deg(90.0), 0.0, deg(-90.0), deg(180.0)]);
     for (inputs, points) in [(InputMode::Given(FIG13), [4, 4, 0]), (fig14, [0, 4, 0])] {
         for seed in [1, 2] {
-            let d = decomposition(inputs, seed);
+            // The reduced components: deflation adds isolated points of multiplicity 2 or more
+            // (two in K1 at Fig. 14, where a crank is half a turn from the reference), which
+            // no exact computation here checks (the tangent of 180° is not finite).
+            let mut d = decomposition(inputs, seed);
+            d.components.retain(|c| c.multiplicity == 1);
             assert_eq!(positive_dimensional(&d), curves, "{inputs:?}, seed {seed}");
             assert_eq!(isolated(&d), points, "{inputs:?}, seed {seed}");
             let k3 = d.components.iter().find(|c| c.degree == 8).unwrap();
