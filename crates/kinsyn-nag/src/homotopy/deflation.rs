@@ -25,7 +25,7 @@
 
 use super::witness::{
     Component, DecomposeError, DecomposeSettings, PathBudget, SAME_POINT, Witness, gaussian,
-    irreducible_pieces, membership, randomized,
+    hyperplane, irreducible_pieces, membership, randomized, sliced_family,
 };
 use super::{C64, relative_distance};
 use crate::poly::{Poly, System};
@@ -147,16 +147,10 @@ fn multipliers(system: &System, x: &[C64], b: &DMatrix<C64>, h: &[C64]) -> Optio
 
 /// The sliced square system of `deflated` at dimension `d`: its random combinations
 /// `combined` and the `d` hyperplanes `slice` of the first `n` unknowns.
-fn sliced_square(combined: &System, slice: &[Vec<C64>], n: usize) -> Vec<Poly> {
+fn sliced_square(combined: &System, slice: &[Vec<C64>]) -> Vec<Poly> {
     let total = combined.nvars();
     let mut square = combined.equations().to_vec();
-    for row in slice {
-        let mut h = Poly::constant(total, row[n]);
-        for (j, a) in row[..n].iter().enumerate() {
-            h = &h + &Poly::variable(total, j).scale(*a);
-        }
-        square.push(h);
-    }
+    square.extend(slice.iter().map(|row| hyperplane(row, total)));
     square
 }
 
@@ -199,22 +193,22 @@ pub(super) fn deflate(
         let mut rest = Vec::new();
         for (k, s) in left.drain(..).enumerate() {
             let mut y = s.x.clone();
-            let mut current = system.clone();
+            let mut current = system;
             let mut ok = true;
             for ((next, b, h), r) in steps.iter().zip(&ranks) {
-                if rank(&jacobian_at(&current, &y)) != *r {
+                if rank(&jacobian_at(current, &y)) != *r {
                     ok = false;
                     break;
                 }
-                if let Some(lambda) = multipliers(&current, &y, b, h) {
+                if let Some(lambda) = multipliers(current, &y, b, h) {
                     y.extend(lambda);
                 } else {
                     ok = false;
                     break;
                 }
-                current = next.clone();
+                current = next;
             }
-            let square = sliced_square(&combined, slice, n);
+            let square = sliced_square(&combined, slice);
             let refined = ok
                 .then(|| super::regeneration::regular_root(&square, &y))
                 .flatten();
@@ -249,7 +243,7 @@ pub(super) fn deflate(
         if members.is_empty() {
             continue;
         }
-        let family = system_family_of(&combined, n, d)?;
+        let family = sliced_family(&combined, n, d)?;
         let witness = Witness {
             family,
             base: slice.concat(),
@@ -302,7 +296,6 @@ fn deflation_steps(
     slice: &[Vec<C64>],
     rng: &mut ChaCha8Rng,
 ) -> Result<Steps, DecomposeError> {
-    let n = system.nvars();
     let mut current = system.clone();
     let mut lifted_first = x.to_vec();
     // Each step's system, `B` and `h`.
@@ -317,7 +310,7 @@ fn deflation_steps(
         };
         lifted_first.extend(lambda);
         let combined = randomized(&deflated, deflated.nvars() - d, rng);
-        let square = sliced_square(&combined, slice, n);
+        let square = sliced_square(&combined, slice);
         steps.push((deflated.clone(), b, h));
         if super::regeneration::regular_root(&square, &lifted_first).is_some() {
             return Ok((steps, ranks, Some(combined)));
@@ -325,38 +318,4 @@ fn deflation_steps(
         current = deflated;
     }
     Ok((steps, ranks, None))
-}
-
-/// The family of the deflated system's combinations `combined` (in `n` unknowns then the
-/// multipliers) with `d` hyperplanes of the first `n` unknowns as parameters.
-fn system_family_of(
-    combined: &System,
-    n: usize,
-    d: usize,
-) -> Result<super::parameter::ParametrizedSystem, DecomposeError> {
-    let total = combined.nvars();
-    let params = d * (n + 1);
-    let all = total + params;
-    let identity: Vec<usize> = (0..total).collect();
-    let mut equations: Vec<Poly> = combined
-        .equations()
-        .iter()
-        .map(|f| f.relabel(all, &identity))
-        .collect();
-    for k in 0..d {
-        let p = |j: usize| Poly::variable(all, total + k * (n + 1) + j);
-        let mut h = p(n);
-        for j in 0..n {
-            h = &h + &(&p(j) * &Poly::variable(all, j));
-        }
-        equations.push(h);
-    }
-    let mut names = combined.variables().to_vec();
-    for k in 0..d {
-        names.extend((0..=n).map(|j| format!("slice#{k}#{j}")));
-    }
-    let family =
-        System::new(names, equations).map_err(|e| DecomposeError::Family(e.to_string()))?;
-    super::parameter::ParametrizedSystem::new(family, params)
-        .map_err(|e| DecomposeError::Family(e.to_string()))
 }

@@ -601,20 +601,36 @@ pub(super) fn family(
         .map_err(|e: ParameterError| DecomposeError::Family(e.to_string()))
 }
 
-/// [`family`] of the equations of `combined` (in the unknowns of `system`), composed when
-/// `combined` is ([`System::widened`]).
-pub(super) fn system_family(
-    system: &System,
+/// The family of the equations of `combined` and `sliced` hyperplanes of its first `n`
+/// unknowns whose coefficients are parameters after its unknowns (`slice#k#j`), composed when
+/// `combined` is ([`System::widened`]): [`family`] for a randomised system (`n` all its
+/// unknowns) or for a deflated one (`n` those of the system deflated, the multipliers after).
+pub(super) fn sliced_family(
     combined: &System,
-    fixed: &[Vec<C64>],
+    n: usize,
     sliced: usize,
 ) -> Result<ParametrizedSystem, DecomposeError> {
-    let (names, extra) = slices(system, fixed, sliced, 0);
+    let unknowns = combined.nvars();
+    let total = unknowns + sliced * (n + 1);
+    let extra = (0..sliced)
+        .map(|k| parameter_hyperplane(total, unknowns + k * (n + 1), n))
+        .collect();
+    let mut names = combined.variables().to_vec();
+    for k in 0..sliced {
+        names.extend((0..=n).map(|j| format!("slice#{k}#{j}")));
+    }
     let family = combined
         .widened(names, extra)
         .map_err(|e| DecomposeError::Family(e.to_string()))?;
-    ParametrizedSystem::new(family, sliced * (system.nvars() + 1))
+    ParametrizedSystem::new(family, sliced * (n + 1))
         .map_err(|e: ParameterError| DecomposeError::Family(e.to_string()))
+}
+
+/// The hyperplane `p_n + Σ_j p_j x_j` of the first `n` unknowns in a ring of `total`
+/// variables, its coefficients `p_0 … p_n` the variables from `first` on.
+fn parameter_hyperplane(total: usize, first: usize, n: usize) -> Poly {
+    let p = |j: usize| Poly::variable(total, first + j);
+    (0..n).fold(p(n), |h, j| &h + &(&p(j) * &Poly::variable(total, j)))
 }
 
 /// The names of a family's variables (the unknowns, `other_parameters`, then the
@@ -630,14 +646,7 @@ fn slices(
     let total = big_n + other_parameters + sliced * (big_n + 1);
     let mut extra: Vec<Poly> = fixed.iter().map(|row| hyperplane(row, total)).collect();
     let first = big_n + other_parameters;
-    for k in 0..sliced {
-        let p = |j: usize| Poly::variable(total, first + k * (big_n + 1) + j);
-        let mut h = p(big_n);
-        for j in 0..big_n {
-            h = &h + &(&p(j) * &Poly::variable(total, j));
-        }
-        extra.push(h);
-    }
+    extra.extend((0..sliced).map(|k| parameter_hyperplane(total, first + k * (big_n + 1), big_n)));
     let mut names = system.variables().to_vec();
     names.extend((0..other_parameters).map(|k| format!("regeneration#{k}")));
     for k in 0..sliced {
@@ -681,7 +690,7 @@ fn slice_family(
     rng: &mut ChaCha8Rng,
 ) -> Result<ParametrizedSystem, DecomposeError> {
     let combined = randomized(system, system.nvars() - d, rng);
-    system_family(system, &combined, &[], d)
+    sliced_family(&combined, system.nvars(), d)
 }
 
 /// Whether `x` satisfies every equation of `system` to `tolerance` ([`vanishes`]).

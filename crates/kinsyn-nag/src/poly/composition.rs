@@ -78,6 +78,15 @@ impl Composition {
             .collect()
     }
 
+    /// The values of the equations at `x`: the inner polynomials, then the outer ones at
+    /// their values (nothing compiled, for a point now and then; [`super::Program::composed`]
+    /// for many).
+    #[must_use]
+    pub fn evaluate(&self, x: &[C64]) -> Vec<C64> {
+        let leaves: Vec<C64> = self.inner.iter().map(|a| a.eval(x)).collect();
+        self.outer.iter().map(|g| g.eval(&leaves)).collect()
+    }
+
     /// Every coefficient, inner and outer, replaced by its modulus: at the moduli of a point
     /// its value bounds the sum of the moduli of the expanded terms, the scale of an equation
     /// in the endpoint tests ([`Poly::magnitudes`]).
@@ -116,19 +125,9 @@ impl Composition {
     /// The combinations `Σ_j rows[i][j] f_j` of the equations, one per row.
     #[must_use]
     pub fn combinations(&self, rows: &[Vec<C64>]) -> Self {
-        let m = self.inner.len();
-        let outer = rows
-            .iter()
-            .map(|row| {
-                row.iter()
-                    .zip(&self.outer)
-                    .filter(|(c, _)| **c != C64::new(0.0, 0.0))
-                    .fold(Poly::zero(m), |acc, (c, g)| &acc + &g.scale(*c))
-            })
-            .collect();
         Self {
             inner: self.inner.clone(),
-            outer,
+            outer: super::linear_combinations(&self.outer, rows, self.inner.len()),
         }
     }
 

@@ -728,13 +728,10 @@ impl System {
     /// The values of the equations at `x`.
     #[must_use]
     pub fn evaluate(&self, x: &[C64]) -> Vec<C64> {
-        if self.composition.is_some() {
-            let program = self.program();
-            let mut values = vec![C64::new(0.0, 0.0); self.len()];
-            program.evaluate(x, &mut values, &mut program.workspace());
-            return values;
+        match &self.composition {
+            Some(c) => c.evaluate(x),
+            None => self.equations.iter().map(|p| p.eval(x)).collect(),
         }
-        self.equations.iter().map(|p| p.eval(x)).collect()
     }
 
     /// The equations `equations` (indices) as a system in the variables `variables` alone
@@ -854,19 +851,9 @@ impl System {
     /// system is.
     #[must_use]
     pub fn combinations(&self, rows: &[Vec<C64>]) -> Self {
-        let n = self.nvars();
-        let equations = rows
-            .iter()
-            .map(|row| {
-                row.iter()
-                    .zip(&self.equations)
-                    .filter(|(c, _)| **c != C64::new(0.0, 0.0))
-                    .fold(Poly::zero(n), |acc, (c, f)| &acc + &f.scale(*c))
-            })
-            .collect();
         Self {
             variables: self.variables.clone(),
-            equations,
+            equations: linear_combinations(&self.equations, rows, self.nvars()),
             groups: self.groups.clone(),
             composition: self.composition.as_ref().map(|c| c.combinations(rows)),
         }
@@ -909,6 +896,19 @@ impl System {
         let composition = self.composition.as_ref().map(|c| c.map_inner(&f));
         Ok(Self::new(variables, equations)?.with_composition(composition))
     }
+}
+
+/// `Σ_j rows[i][j] p_j` for each row (polynomials in `nvars` variables; zero coefficients
+/// skipped).
+fn linear_combinations(polys: &[Poly], rows: &[Vec<C64>], nvars: usize) -> Vec<Poly> {
+    rows.iter()
+        .map(|row| {
+            row.iter()
+                .zip(polys)
+                .filter(|(c, _)| **c != C64::new(0.0, 0.0))
+                .fold(Poly::zero(nvars), |acc, (c, p)| &acc + &p.scale(*c))
+        })
+        .collect()
 }
 
 /// [`System::program_size`] of plain equations: `Σ (s + 1)(s + 2)` over their terms.
