@@ -13,7 +13,7 @@ use std::path::PathBuf;
 fn start_system(text: &str) -> Result<StartSystem, Error> {
     StartSystem::from_name(text).ok_or_else(|| {
         Error::Input(format!(
-            "--start {text:?}: give auto, total-degree, multi-homogeneous or polyhedral"
+            "--start {text:?}: give auto, total-degree, multi-homogeneous, linear-product or polyhedral"
         ))
     })
 }

@@ -153,6 +153,7 @@ pub fn check_cost(
                         })
                         .unwrap_or_default(),
                     StartSystem::MultiHomogeneous
+                    | StartSystem::LinearProduct
                     | StartSystem::Polyhedral
                     | StartSystem::Auto => String::new(),
                 };
@@ -368,11 +369,15 @@ impl Solved {
     /// start system asked for a system of one variable group.
     #[must_use]
     pub fn warnings(&self) -> Vec<String> {
-        if self.options.start == StartSystem::MultiHomogeneous && self.system.groups().len() < 2 {
-            vec![
-                "one variable group: the multi-homogeneous start system is the total-degree count"
-                    .to_string(),
-            ]
+        let grouped = matches!(
+            self.options.start,
+            StartSystem::MultiHomogeneous | StartSystem::LinearProduct
+        );
+        if grouped && self.system.groups().len() < 2 {
+            vec![format!(
+                "one variable group: the {} start system is the total-degree count",
+                self.options.start.name()
+            )]
         } else {
             Vec::new()
         }

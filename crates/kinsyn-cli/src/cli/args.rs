@@ -675,12 +675,15 @@ impl From<ShowArg> for kinsyn_report::solve::Show {
 /// `--start` of `kinsyn solve`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
 pub(super) enum StartArg {
-    /// The fewest paths of the three below.
+    /// The fewest paths of the four below.
     Auto,
     /// Bézout's number of paths.
     TotalDegree,
     /// The multi-homogeneous Bézout number of paths, for the file's variable groups.
     MultiHomogeneous,
+    /// One random linear factor per slot of the set structure of the file's variable groups:
+    /// fewer paths than multi-homogeneous when an equation is dense in several groups.
+    LinearProduct,
     /// The mixed volume's number of paths (the BKK bound): fewest for sparse systems.
     Polyhedral,
 }
@@ -690,6 +693,7 @@ impl From<StartArg> for kinsyn::homotopy::StartSystem {
         match s {
             StartArg::TotalDegree => Self::TotalDegree,
             StartArg::MultiHomogeneous => Self::MultiHomogeneous,
+            StartArg::LinearProduct => Self::LinearProduct,
             StartArg::Polyhedral => Self::Polyhedral,
             StartArg::Auto => Self::Auto,
         }

@@ -496,7 +496,7 @@ fn bad_solve_input_is_one_line_and_exit_2() {
             vec![
                 "'random'",
                 "--start",
-                "auto, total-degree, multi-homogeneous, polyhedral",
+                "auto, total-degree, multi-homogeneous, linear-product, polyhedral",
             ],
         ),
         (vec![circle, "--show", "some"], vec!["'some'"]),

@@ -66,7 +66,7 @@ pub use tracker::{PathFailure, TrackerSettings};
 pub use witness::{
     Component, DEFAULT_DECOMPOSE_PATHS, DecomposeError, DecomposeSettings, Decomposition,
     MAX_DECOMPOSE_EQUATIONS, MAX_DECOMPOSE_PATHS, MAX_DECOMPOSE_UNKNOWNS, check_system, decompose,
-    decompose_paths, points_on_slice,
+    decompose_paths, decompose_paths_by_dimension, points_on_slice,
 };
 
 use crate::certify::{Certificate, Reality, certify_roots};
@@ -181,6 +181,13 @@ pub enum HomotopyError {
         /// The system's variable groups.
         groups: usize,
     },
+    /// The set structure's choices of supports are too many to walk
+    /// ([`crate::poly::linear_product::MAX_NODES`]).
+    #[error(
+        "the linear-product start system's set structure has too many choices to count (more than {} steps)",
+        crate::poly::linear_product::MAX_NODES
+    )]
+    SetStructure,
     /// The mixed cells of the polyhedral start system could not be enumerated.
     #[error("the polyhedral start system: {0}")]
     MixedCells(#[from] crate::polyhedral::MixedCellError),
@@ -704,6 +711,12 @@ pub fn resolve_start(
                 .multihomogeneous_bezout()
                 .ok_or_else(too_many_groups)?,
         )),
+        StartSystem::LinearProduct => Ok((
+            start,
+            crate::poly::linear_product::SetStructure::of(system)
+                .count()
+                .ok_or(HomotopyError::SetStructure)?,
+        )),
         StartSystem::Polyhedral => Ok((
             start,
             polyhedral_subdivision(system, seed, crate::polyhedral::DEFAULT_MAX_LINEAR_PROGRAMS)?
@@ -716,6 +729,12 @@ pub fn resolve_start(
                 && m < best.1
             {
                 best = (StartSystem::MultiHomogeneous, m);
+            }
+            if system.groups().len() > 1
+                && let Some(m) = crate::poly::linear_product::SetStructure::of(system).count()
+                && m < best.1
+            {
+                best = (StartSystem::LinearProduct, m);
             }
             if let Ok(cells) = polyhedral_subdivision(system, seed, auto_budget(best.1))
                 && cells.mixed_volume() < best.1

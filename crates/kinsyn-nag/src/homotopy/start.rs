@@ -20,6 +20,7 @@
 
 use super::C64;
 use super::tracker::Homotopy;
+use crate::poly::linear_product::{SetStructure, SupportChoice};
 use crate::poly::multihomogeneous::Assignments;
 use crate::poly::{Program, System, Workspace};
 use nalgebra::{DMatrix, DVector};
@@ -36,6 +37,11 @@ pub enum StartSystem {
     /// Products of random linear forms per variable group: the multi-homogeneous Bézout
     /// number of paths, for the system's variable groups.
     MultiHomogeneous,
+    /// Products of random linear forms, one per slot of the system's set structure from its
+    /// variable groups ([`crate::poly::linear_product`]): the same as the multi-homogeneous
+    /// start for equations of one group per term, and far fewer paths when some equations
+    /// are dense in several groups (a generic slice, a random combination of equations).
+    LinearProduct,
     /// The polyhedral homotopy: a start system with the target's supports (and the origin)
     /// and random coefficients, solved by the mixed cells of a random lifting: the mixed
     /// volume's number of paths (the BKK bound), never more than Bézout's
@@ -51,20 +57,22 @@ pub enum StartSystem {
 
 impl StartSystem {
     /// Every start system, in the order of the command line's choices.
-    pub const ALL: [Self; 4] = [
+    pub const ALL: [Self; 5] = [
         Self::Auto,
         Self::TotalDegree,
         Self::MultiHomogeneous,
+        Self::LinearProduct,
         Self::Polyhedral,
     ];
 
     /// The name the command line and JSON give it: `auto`, `total-degree`,
-    /// `multi-homogeneous`, `polyhedral`.
+    /// `multi-homogeneous`, `linear-product`, `polyhedral`.
     #[must_use]
     pub fn name(self) -> &'static str {
         match self {
             Self::TotalDegree => "total-degree",
             Self::MultiHomogeneous => "multi-homogeneous",
+            Self::LinearProduct => "linear-product",
             Self::Polyhedral => "polyhedral",
             Self::Auto => "auto",
         }
@@ -123,12 +131,20 @@ fn random_complex(rng: &mut ChaCha8Rng) -> C64 {
     C64::from_polar(1.0, rng.random_range(0.0..std::f64::consts::TAU))
 }
 
+/// One equation's slot factors in a linear-product start: each support's variables (indices
+/// into `z`, the homogenising coordinate last) and one row of coefficients over them per slot.
+type SlotForms = Vec<(Vec<usize>, Vec<Vec<C64>>)>;
+
 enum Start {
     TotalDegree(Vec<u32>),
     /// `[equation][group][factor]` → coefficients over the group's coordinates (its variables
     /// in group order, then its homogenising coordinate); and the assignments of equations to
     /// groups that complete, which the enumeration of the start solutions follows.
-    LinearProduct(Vec<Vec<Vec<Vec<C64>>>>, Assignments),
+    MultiHomogeneous(Vec<Vec<Vec<Vec<C64>>>>, Assignments),
+    /// `[equation][support]` → the support's variables (indices into `z`, the homogenising
+    /// coordinate last) and one row of coefficients over them per slot; and the choices of
+    /// supports with a finite root ([`crate::poly::linear_product`]).
+    SetStructure(Vec<SlotForms>, Vec<SupportChoice>),
     /// A start system whose roots are found apart (the polyhedral homotopy's `G`,
     /// [`ProjectiveHomotopy::start_point`]): its homogenised program.
     Explicit(Program),
@@ -175,7 +191,10 @@ impl ProjectiveHomotopy {
     pub(crate) fn new(system: &System, kind: StartSystem, rng: &mut ChaCha8Rng) -> Self {
         let n = system.nvars();
         let variable_groups: Vec<Vec<usize>> = match kind {
-            StartSystem::TotalDegree | StartSystem::Polyhedral | StartSystem::Auto => {
+            StartSystem::TotalDegree
+            | StartSystem::LinearProduct
+            | StartSystem::Polyhedral
+            | StartSystem::Auto => {
                 vec![(0..n).collect()]
             }
             StartSystem::MultiHomogeneous => system.groups().to_vec(),
@@ -197,12 +216,35 @@ impl ProjectiveHomotopy {
             StartSystem::TotalDegree | StartSystem::Polyhedral | StartSystem::Auto => {
                 Start::TotalDegree(system.degrees())
             }
+            StartSystem::LinearProduct => {
+                let structure = SetStructure::of(system);
+                let choices = structure
+                    .choices()
+                    .expect("solve counts the set structure before it builds the homotopy");
+                let forms = structure
+                    .equations()
+                    .iter()
+                    .map(|e| {
+                        e.supports
+                            .iter()
+                            .map(|(vars, slots)| {
+                                let vars: Vec<usize> = vars.iter().copied().chain([n]).collect();
+                                let rows = (0..*slots)
+                                    .map(|_| vars.iter().map(|_| random_complex(rng)).collect())
+                                    .collect();
+                                (vars, rows)
+                            })
+                            .collect()
+                    })
+                    .collect();
+                Start::SetStructure(forms, choices)
+            }
             StartSystem::MultiHomogeneous => {
                 let d = system.multihomogeneous_degrees();
                 let assignments = system
                     .assignments()
                     .expect("solve counts the assignments before it builds the homotopy");
-                Start::LinearProduct(
+                Start::MultiHomogeneous(
                     d.iter()
                         .map(|row| {
                             row.iter()
@@ -270,9 +312,10 @@ impl ProjectiveHomotopy {
     pub(crate) fn start_solutions(&self) -> Vec<DVector<C64>> {
         match &self.start {
             Start::TotalDegree(degrees) => self.roots_of_unity(degrees),
-            Start::LinearProduct(forms, assignments) => {
+            Start::MultiHomogeneous(forms, assignments) => {
                 self.linear_product_solutions(forms, assignments)
             }
+            Start::SetStructure(forms, choices) => self.set_structure_solutions(forms, choices),
             // An explicit start system's points come root by root ([`Self::start_point`]).
             Start::Explicit(_) => Vec::new(),
         }
@@ -352,6 +395,52 @@ impl ProjectiveHomotopy {
         }
     }
 
+    /// The roots of a linear-product start system: for each choice of supports, every
+    /// choice of one slot per equation among the chosen support's, in mixed radix.
+    fn set_structure_solutions(
+        &self,
+        forms: &[SlotForms],
+        choices: &[SupportChoice],
+    ) -> Vec<DVector<C64>> {
+        let dim = self.n + 1;
+        let mut out = Vec::new();
+        for (supports, _) in choices {
+            let chosen: Vec<&(Vec<usize>, Vec<Vec<C64>>)> =
+                supports.iter().zip(forms).map(|(s, f)| &f[*s]).collect();
+            let mut slot = vec![0usize; chosen.len()];
+            loop {
+                let mut a = DMatrix::zeros(dim, dim);
+                let mut b = DVector::zeros(dim);
+                for (i, ((vars, rows), k)) in chosen.iter().zip(&slot).enumerate() {
+                    for (v, c) in vars.iter().zip(&rows[*k]) {
+                        a[(i, *v)] = *c;
+                    }
+                }
+                for (c, p) in self.patches[0].iter().enumerate() {
+                    a[(self.n, c)] = *p;
+                }
+                b[self.n] = C64::from(1.0);
+                if let Some(z) = a.lu().solve(&b) {
+                    out.push(z);
+                }
+                // The next slot choice, the first equation's digit fastest.
+                let mut i = 0;
+                while i < slot.len() {
+                    slot[i] += 1;
+                    if slot[i] < chosen[i].1.len() {
+                        break;
+                    }
+                    slot[i] = 0;
+                    i += 1;
+                }
+                if i == slot.len() {
+                    break;
+                }
+            }
+        }
+        out
+    }
+
     /// The solution of the chosen linear factors and the patches, group by group.
     fn solve_linear(
         &self,
@@ -415,7 +504,30 @@ impl ProjectiveHomotopy {
                     gz[(i, self.n)] = -h.powi(d - 1) * f64::from(d);
                 }
             }
-            Start::LinearProduct(forms, _) => {
+            Start::SetStructure(forms, _) => {
+                for (i, row) in forms.iter().enumerate() {
+                    let factors: Vec<(&Vec<usize>, &Vec<C64>, C64)> = row
+                        .iter()
+                        .flat_map(|(vars, rows)| rows.iter().map(move |r| (vars, r)))
+                        .map(|(vars, r)| {
+                            (vars, r, vars.iter().zip(r).map(|(v, c)| c * z[*v]).sum())
+                        })
+                        .collect();
+                    g[i] = factors.iter().map(|f| f.2).product();
+                    for (k, (vars, r, _)) in factors.iter().enumerate() {
+                        let others: C64 = factors
+                            .iter()
+                            .enumerate()
+                            .filter(|(l, _)| *l != k)
+                            .map(|(_, f)| f.2)
+                            .product();
+                        for (v, c) in vars.iter().zip(*r) {
+                            gz[(i, *v)] += c * others;
+                        }
+                    }
+                }
+            }
+            Start::MultiHomogeneous(forms, _) => {
                 for (i, row) in forms.iter().enumerate() {
                     // All factors' values, then the product and its gradient by the product rule.
                     let mut factors: Vec<(usize, &Vec<C64>, C64)> = Vec::new();

@@ -34,7 +34,8 @@ use super::nearby::NearPoints;
 use super::parameter::{
     FamilyEnd, ParameterError, ParametrizedSystem, track_parameters, track_parameters_to_end,
 };
-use super::{C64, HomotopyError, SolveSettings, relative_distance, solve};
+use super::{C64, HomotopyError, SolveSettings, StartSystem, relative_distance, solve};
+use crate::poly::linear_product::{Profile, SetStructure};
 use crate::poly::{Poly, System};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
@@ -265,7 +266,7 @@ pub fn decompose(
     settings: &DecomposeSettings,
 ) -> Result<Decomposition, DecomposeError> {
     let clock = std::time::Instant::now();
-    let estimated_paths = decompose_paths(system);
+    let estimated_paths = check_system(system).map(|()| decompose_paths(system))?;
     let budget = PathBudget::new(system, settings, estimated_paths)?;
     let (n, big_n) = (system.len(), system.nvars());
     check_sliced_solves(system)?;
@@ -291,12 +292,14 @@ pub fn decompose(
         let sliced = family
             .at(&base)
             .map_err(|e| DecomposeError::Family(e.to_string()))?;
+        let (sliced, start, start_paths) = sliced_start(sliced, system.groups());
         let solve_settings = SolveSettings {
             seed: settings.seed.wrapping_mul(1000).wrapping_add(d as u64),
             max_paths: super::MAX_PATHS,
+            start,
             ..settings.solve.clone()
         };
-        budget.spend_u128(sliced.bezout_number())?;
+        budget.spend_u128(start_paths)?;
         let report = solve(&sliced, &solve_settings).map_err(|source| DecomposeError::Solve {
             dimension: d,
             source,
@@ -456,10 +459,13 @@ pub fn check_system(system: &System) -> Result<(), DecomposeError> {
     Ok(())
 }
 
-/// The paths of the start systems of [`decompose`], from the degrees alone: for each dimension
-/// `d` from `N − 1` down to `max(N − n, 0)` the Bézout number of the sliced system — the
-/// equations' degrees when there are exactly `N − d` of them, else `N − d` random combinations
-/// of the largest degree — and `d` linear slices. Saturates at `u128::MAX`.
+/// The paths of the start systems of [`decompose`], from the equations' degrees and supports
+/// alone: for each dimension `d` from `N − 1` down to `max(N − n, 0)` the paths of the sliced
+/// system — the equations themselves when there are exactly `N − d` of them, else `N − d`
+/// random combinations (`[I | A]`: the `N − d` of largest degree, each plus multiples of the
+/// rest) — and `d` linear slices: its Bézout number, or for a system of several variable
+/// groups its linear-product count when smaller ([`crate::poly::linear_product`]). Saturates
+/// at `u128::MAX`.
 ///
 /// 21 equations `x_i² − 1` in 21 unknowns: `2 + 4 + … + 2²¹ = 2²² − 2`. The monodromy loops,
 /// trace and membership tests track more, in proportion to the witness points found, within
@@ -471,18 +477,81 @@ pub fn decompose_paths(system: &System) -> u128 {
         .fold(0u128, u128::saturating_add)
 }
 
-/// Each dimension of [`decompose`] with the Bézout number of its sliced system.
-fn sliced_paths(system: &System) -> impl Iterator<Item = (usize, u128)> {
+/// [`decompose_paths`] dimension by dimension, from the highest: `(d, paths)` of the sliced
+/// system of each dimension `d`.
+#[must_use]
+pub fn decompose_paths_by_dimension(system: &System) -> Vec<(usize, u128)> {
+    let mut paths: Vec<(usize, u128)> = sliced_paths(system).collect();
+    paths.reverse();
+    paths
+}
+
+/// Each dimension of [`decompose`] with the paths of its sliced system's start
+/// ([`sliced_start`]), from the equations' profiles alone ([`Profile`]: the randomisation's
+/// combinations and the slices have the profiles of generic sums and hyperplanes, whatever
+/// their random coefficients); the Bézout number for a system beyond the decomposition's
+/// limits, which is refused anyway.
+fn sliced_paths(system: &System) -> impl Iterator<Item = (usize, u128)> + '_ {
     let (n, big_n) = (system.len(), system.nvars());
+    let groups = system.groups();
     let mut degrees = system.degrees();
+    let mut order: Vec<usize> = (0..n).collect();
+    order.sort_by_key(|&i| std::cmp::Reverse(degrees[i]));
     degrees.sort_unstable_by(|a, b| b.cmp(a));
+    let structured =
+        groups.len() > 1 && big_n <= MAX_DECOMPOSE_UNKNOWNS && n <= MAX_DECOMPOSE_EQUATIONS;
+    let profiles: Vec<Profile> = if structured {
+        system
+            .equations()
+            .iter()
+            .map(|f| Profile::of(f, groups))
+            .collect()
+    } else {
+        Vec::new()
+    };
     (big_n.saturating_sub(n)..big_n).map(move |d| {
         let count = big_n - d;
-        let paths = degrees[..count]
+        let bezout = degrees[..count]
             .iter()
             .fold(1u128, |b, e| b.saturating_mul(u128::from(*e)));
+        if !structured {
+            return (d, bezout);
+        }
+        let rest = order[count..]
+            .iter()
+            .fold(None, |acc: Option<Profile>, &j| {
+                Some(acc.map_or_else(|| profiles[j].clone(), |a| a.sum(&profiles[j])))
+            });
+        let mut sliced: Vec<Profile> = order[..count]
+            .iter()
+            .map(|&i| {
+                rest.as_ref()
+                    .map_or_else(|| profiles[i].clone(), |r| profiles[i].sum(r))
+            })
+            .collect();
+        sliced.extend((0..d).map(|_| Profile::hyperplane(groups.len())));
+        let paths = SetStructure::from_profiles(big_n, groups, &sliced)
+            .count()
+            .map_or(bezout, |p| p.min(bezout));
         (d, paths)
     })
+}
+
+/// The start system of a sliced system in the variable groups `groups` of the system sliced:
+/// the linear-product start ([`crate::poly::linear_product`]) when the groups are several
+/// and it has fewer paths than the total degree (slices and randomised equations are dense in
+/// every group, which the multi-homogeneous count would charge in each), else the total
+/// degree. Returns the system (with the groups), the start and its paths.
+fn sliced_start(sliced: System, groups: &[Vec<usize>]) -> (System, StartSystem, u128) {
+    let bezout = sliced.bezout_number();
+    if groups.len() > 1
+        && let Ok(grouped) = sliced.clone().with_groups(groups.to_vec())
+        && let Some(paths) = SetStructure::of(&grouped).count()
+        && paths < bezout
+    {
+        return (grouped, StartSystem::LinearProduct, paths);
+    }
+    (sliced, StartSystem::TotalDegree, bezout)
 }
 
 /// The paths a decomposition may still track: each tracking is charged before it starts

@@ -27,6 +27,7 @@ pub mod bertini;
 mod composition;
 pub mod expansion;
 pub mod families;
+pub mod linear_product;
 pub mod multihomogeneous;
 pub mod phc;
 mod program;

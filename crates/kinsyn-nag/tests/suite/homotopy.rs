@@ -134,6 +134,75 @@ fn multihomogeneous_start_counts() {
     }
 }
 
+/// A random "two legs" system in groups `X = {x0, x1, x2}`, `{t1}`, `{t2}`: two equations of
+/// degree (1, 1) in `(X, t_i)` for each `i` and one dense hyperplane. Hand count of the
+/// linear-product start: the two equations of one `t_i` cannot both take its one slot, so each
+/// pair takes `{X}{X}`, `{X}{t}` or `{t}{X}` (3 ways), and at least one `t` slot must be taken
+/// (four `X` slots exceed three variables): `3² − 1 = 8` paths, where the total degree tracks
+/// 16. Every root the total degree finds, the linear-product start finds too (same roots to
+/// 1e-8), and no more.
+#[test]
+fn linear_product_start_finds_the_total_degree_roots_with_fewer_paths() {
+    let n = 5;
+    let v = |i| Poly::variable(n, i);
+    let mut k = 0.0f64;
+    let mut c = || {
+        k += 1.0;
+        C64::new((k * 1.618).sin(), (k * 2.5).cos())
+    };
+    let affine = |vars: &[usize], c: &mut dyn FnMut() -> C64| {
+        vars.iter()
+            .fold(Poly::constant(n, c()), |p, i| &p + &v(*i).scale(c()))
+    };
+    let mut equations = Vec::new();
+    for t in [3, 4] {
+        for _ in 0..2 {
+            let a = affine(&[0, 1, 2], &mut c);
+            let b = affine(&[0, 1, 2], &mut c);
+            equations.push(&(&a * &v(t)) + &b);
+        }
+    }
+    equations.push(affine(&[0, 1, 2, 3, 4], &mut c));
+    let system = System::new(names(n), equations)
+        .unwrap()
+        .with_groups(vec![vec![0, 1, 2], vec![3], vec![4]])
+        .unwrap();
+    let solve_with = |start| {
+        solve(
+            &system,
+            &SolveSettings {
+                start,
+                ..SolveSettings::default()
+            },
+        )
+        .unwrap()
+    };
+    let total = solve_with(StartSystem::TotalDegree);
+    let product = solve_with(StartSystem::LinearProduct);
+    assert_eq!((total.paths(), product.paths()), (16, 8));
+    assert!(total.complete() && product.complete());
+    let roots = |r: &kinsyn_nag::homotopy::SolveReport| -> Vec<Vec<C64>> {
+        r.solutions
+            .iter()
+            .filter(|s| s.regular)
+            .map(|s| s.x.clone())
+            .collect()
+    };
+    let (a, b) = (roots(&total), roots(&product));
+    assert_eq!(a.len(), b.len());
+    assert!(
+        a.len() >= 6,
+        "a generic system of this structure has several roots"
+    );
+    for x in &a {
+        assert!(
+            b.iter()
+                .any(|y| kinsyn_nag::homotopy::relative_distance(x, y) < 1e-8),
+            "a root of the total degree missing from the linear-product solve"
+        );
+    }
+}
+
 /// The family `f_i = x_i² + Σ_j a_ij x_j + b_i` (`i = 1 … 3`), parameters `a` (9) and `b` (3)
 /// after the unknowns: generic members have Bézout's 2³ = 8 solutions.
 fn quadrics_family() -> kinsyn_nag::homotopy::ParametrizedSystem {

@@ -150,8 +150,8 @@ fn products_of_roots_of_unity_factors() {
     assert_exactly(&report, &expected, 2, "(x^5 - 1)(x^7 - 2)");
 
     // x^n = 1, y^m = 3 in two variables: n·m roots (ω_n^j, 3^{1/m} ω_m^k), real for
-    // x = ±1 (n even) and y = 3^{1/m} (m odd): 2 real roots; total degree and
-    // multi-homogeneous start alike.
+    // x = ±1 (n even) and y = 3^{1/m} (m odd): 2 real roots; total degree, multi-homogeneous
+    // and linear-product start alike.
     for (n, m) in [(16, 3), (40, 5), (64, 1)] {
         let x = Poly::variable(2, 0);
         let y = Poly::variable(2, 1);
@@ -168,7 +168,11 @@ fn products_of_roots_of_unity_factors() {
                 expected.push(vec![a, b]);
             }
         }
-        for start in [StartSystem::TotalDegree, StartSystem::MultiHomogeneous] {
+        for start in [
+            StartSystem::TotalDegree,
+            StartSystem::MultiHomogeneous,
+            StartSystem::LinearProduct,
+        ] {
             let settings = SolveSettings {
                 start,
                 ..SolveSettings::default()

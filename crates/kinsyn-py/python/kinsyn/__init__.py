@@ -579,8 +579,8 @@ def solve(
 ) -> Solutions:
     """Every isolated solution of the polynomial system ``system``, Bertini input text as
     ``kinsyn solve`` reads it, by homotopy continuation from a ``start`` system
-    (``"auto"``, the fewest paths of the others; ``"total-degree"``, ``"multi-homogeneous"`` or
-    ``"polyhedral"``), certified by the Krawczyk test unless
+    (``"auto"``, the fewest paths of the others; ``"total-degree"``, ``"multi-homogeneous"``,
+    ``"linear-product"`` or ``"polyhedral"``), certified by the Krawczyk test unless
     ``certify`` is false. Messages name the text ``source`` where the command names the file."""
     return Solutions._from_report(
         json.loads(_native.solve_json(system, source, seed, start, runs, threads, certify))

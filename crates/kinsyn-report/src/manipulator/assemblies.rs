@@ -639,17 +639,18 @@ pub struct Formulation {
     /// The start system, whichever tracks fewer paths: `total-degree`, or `multi-homogeneous`
     /// over [`Self::groups`] (`per block` for several blocks that differ: see `blocks`).
     pub start: String,
-    /// The variable groups of a multi-homogeneous start (the Study parameters, or `x` and `y`,
+    /// The variable groups of a multi-homogeneous or linear-product start (the Study parameters, or `x` and `y`,
     /// and each joint's unknown alone); empty for the total degree.
     pub groups: Vec<Vec<String>>,
 }
 
-/// The variable groups of `solved` named, for a multi-homogeneous start; empty otherwise.
+/// The variable groups of `solved` named, for a multi-homogeneous or linear-product start;
+/// empty otherwise.
 #[must_use]
 pub fn start_groups(solved: &System, start: StartSystem) -> Vec<Vec<String>> {
     match start {
         StartSystem::TotalDegree | StartSystem::Polyhedral | StartSystem::Auto => Vec::new(),
-        StartSystem::MultiHomogeneous => solved
+        StartSystem::MultiHomogeneous | StartSystem::LinearProduct => solved
             .groups()
             .iter()
             .map(|g| g.iter().map(|&v| solved.variables()[v].clone()).collect())

@@ -514,14 +514,11 @@ impl PositionSystem {
     #[must_use]
     pub fn variable_groupings(&self) -> Vec<Vec<Vec<usize>>> {
         let (k, n) = (self.study_unknowns(), self.system.nvars());
-        let alone = (k..n).map(|v| vec![v]);
         vec![
-            std::iter::once((0..k).collect())
-                .chain(alone.clone())
-                .collect(),
+            study_groups(k, n),
             [(0..k / 2).collect(), (k / 2..k).collect()]
                 .into_iter()
-                .chain(alone)
+                .chain((k..n).map(|v| vec![v]))
                 .collect(),
         ]
     }
@@ -938,7 +935,7 @@ impl Manipulator {
             }
         }
         Ok(PositionSystem {
-            system: System::new(names, equations).expect("distinct names, equations in their ring"),
+            system: grouped_system(names, equations, planar.is_some()),
             chart: *chart,
             legs: constraints,
             inputs: free.iter().map(|f| f.variable).collect(),
@@ -1815,4 +1812,23 @@ fn turned_leg_equations(s: &StudyVariables, c: &LegConstraint, turn: &Turn) -> V
             vec![distance(), coplanar]
         }
     }
+}
+
+/// The constraint system of `equations` in the unknowns `names`, the Study parameters of the
+/// root first (four of them when `planar`), with its variable groups ([`study_groups`]).
+fn grouped_system(names: Vec<String>, equations: Vec<Poly>, planar: bool) -> System {
+    let groups = study_groups(if planar { 4 } else { 8 }, names.len());
+    System::new(names, equations)
+        .and_then(|s| s.with_groups(groups))
+        .expect("distinct names, equations in their ring, a partition of them")
+}
+
+/// The variable groups of a constraint system of `n` unknowns whose first `study` are the
+/// root's Study parameters: those together, each other unknown (an input's or a joint's
+/// tangent, which enters each equation in low degree) alone. The system carries them
+/// ([`PositionSystem::system`]), for the multi-homogeneous and linear-product starts.
+fn study_groups(study: usize, n: usize) -> Vec<Vec<usize>> {
+    std::iter::once((0..study).collect())
+        .chain((study..n).map(|v| vec![v]))
+        .collect()
 }

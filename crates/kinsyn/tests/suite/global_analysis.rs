@@ -749,3 +749,52 @@ fn a_delta_has_two_translational_assemblies_those_of_its_three_spheres() {
         }
     }
 }
+
+/// The start paths of the by-dimension decomposition of the 4-RUU with its four inputs free
+/// (10 equations in the Study parameters `X` and the tangents `t1 … t4`: two of degree
+/// `2 + 2` in `(X, t_i)` per leg, the Study quadric and the chart of degree 2 in `X`), counted
+/// by hand for the linear-product start. At dimension `d` the `12 − d` combinations keep the
+/// leg equations of largest degree, the rest (another leg's equations, the quadric, the chart)
+/// added; the `d` slices are one slot of every unknown. Each leg equation chosen takes an `X`
+/// slot or a tangent slot (2 of each); the two equations of one leg cannot both take its one
+/// tangent, so a leg contributes `1 + 2 = 3` ways with one or no tangent taken (2 for which
+/// equation):
+/// - `d = 4`: the 8 leg equations with the quadric and the chart added: `2⁸ · 3⁴ = 20 736`;
+/// - `d = 3`: the same and the quadric (plus the chart), whose two `X` slots need at least one
+///   tangent taken among the legs (9 `X` equations, 8 `X` unknowns): `2⁹ (3⁴ − 1) = 40 960`;
+/// - `d = 2`: quadric and chart apart: at least two tangents taken:
+///   `2¹⁰ (3⁴ − 1 − 4·2) = 73 728`;
+/// - `d = 5`: seven combinations, the first six (legs 1–3) with leg 4's second equation
+///   added (slots `{X}{X}{t_j, t4}{t_j, t4}`), the seventh leg 4's first: a leg takes two
+///   tangents only through `t4`, which one of them (or leg 4's equation) may use:
+///   `2⁷ (3³ + 3³ + 3 · 3²) = 2⁷ · 3⁴ = 10 368`.
+///
+/// The total-degree counts were `4⁸ = 65 536`, `4⁸ · 2`, `4⁸ · 4` and `4⁷`.
+#[test]
+fn the_free_input_4_ruu_decomposition_paths_by_hand() {
+    let m = Manipulator::from_json(
+        &std::fs::read_to_string(concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/../../mechanisms/4-ruu.json"
+        ))
+        .unwrap(),
+    )
+    .unwrap();
+    let ps = m
+        .constraint_system(&InputValues::Free, &Chart::Unit)
+        .unwrap();
+    let by_dimension = kinsyn::homotopy::decompose_paths_by_dimension(ps.system());
+    let at = |d: usize| by_dimension.iter().find(|(e, _)| *e == d).unwrap().1;
+    assert_eq!(
+        [at(5), at(4), at(3), at(2)],
+        [10_368, 20_736, 40_960, 73_728]
+    );
+    // Above, never more than the total degree of the same dimension: the 12 − d largest
+    // degrees of 4 × 8, 2, 2.
+    let degrees = [4u128, 4, 4, 4, 4, 4, 4, 4, 2, 2];
+    for (d, paths) in &by_dimension {
+        let bezout: u128 = degrees[..12 - d].iter().product();
+        assert!(*paths <= bezout, "dimension {d}");
+        assert!(*d >= 2, "no dimension below 12 − 10 is sliced");
+    }
+}

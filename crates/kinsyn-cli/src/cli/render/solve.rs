@@ -70,6 +70,7 @@ pub(in crate::cli) fn text(solved: &Solved) -> String {
         match report.start {
             StartSystem::TotalDegree => "total degree",
             StartSystem::MultiHomogeneous => "multi-homogeneous",
+            StartSystem::LinearProduct => "linear-product",
             StartSystem::Polyhedral => "polyhedral",
             StartSystem::Auto => "auto",
         },
