@@ -96,6 +96,15 @@ pub fn multihomogeneous_text(system: &System) -> String {
         .map_or_else(|| "not counted".into(), paths_text)
 }
 
+/// The linear-product count as text ([`kinsyn::poly::linear_product`]): [`paths_text`], or
+/// "not counted" when its choices are too many to walk.
+#[must_use]
+pub fn linear_product_text(system: &System) -> String {
+    kinsyn::poly::linear_product::SetStructure::of(system)
+        .count()
+        .map_or_else(|| "not counted".into(), paths_text)
+}
+
 /// `N paths`, and when each path of a system in `unknowns` unknowns counts `weight` times
 /// against the limit ([`homotopy::path_weight`]), what they count in all.
 pub(crate) fn weighted_paths(paths: u128, weight: u64, unknowns: usize) -> String {
@@ -431,6 +440,8 @@ struct SolveJson {
     equations: usize,
     bezout_number: String,
     multihomogeneous_bezout_number: String,
+    /// The paths of the linear-product start for the variable groups.
+    linear_product_paths: String,
     /// The start system tracked (`auto` resolved).
     start: StartSystem,
     /// The start system asked for (`auto` by default).
@@ -506,6 +517,7 @@ impl SolveJson {
             equations: system.len(),
             bezout_number: paths_text(system.bezout_number()),
             multihomogeneous_bezout_number: multihomogeneous_text(system),
+            linear_product_paths: linear_product_text(system),
             start: r.start,
             start_asked: options.start,
             seed: options.seed,

@@ -293,6 +293,12 @@ fn multi_homogeneous_start_tracks_two_paths_for_two_bilinear_equations() {
     assert_eq!(count(&mh, "certified_real"), 2);
     let td = json(&["solve", &file, "--json", "--start", "total-degree"]);
     assert_eq!(count(&td, "paths"), 4);
+    // The linear-product start: each equation's terms pair x with y, so its slots are {x}{y};
+    // one equation takes x, the other y: 2 paths, the same roots.
+    let lp = json(&["solve", &file, "--json", "--start", "linear-product"]);
+    assert_eq!(lp["linear_product_paths"], "2");
+    assert_eq!(count(&lp, "paths"), 2);
+    assert!(same_set(&solutions(&lp), &expected, 1e-10), "{lp:#}");
     // auto: the fewest paths, the multi-homogeneous start's 2 (the mixed volume is 2 too, and a
     // tie keeps the start without a first stage).
     let auto = json(&["solve", &file, "--json"]);
@@ -304,7 +310,7 @@ fn multi_homogeneous_start_tracks_two_paths_for_two_bilinear_equations() {
     let o = kinsyn(&["solve", &file, "--start", "multi-homogeneous"]);
     assert!(
         stdout(&o).contains(
-            "start system: multi-homogeneous, 2 paths (Bézout number 4, multi-homogeneous 2 for 2 variable groups)"
+            "start system: multi-homogeneous, 2 paths (Bézout number 4, multi-homogeneous 2, linear-product 2 for 2 variable groups)"
         ),
         "{}",
         stdout(&o)

@@ -4,7 +4,8 @@
 use kinsyn::certify::Reality;
 use kinsyn::homotopy::{Solution, SolveReport, StartSystem};
 use kinsyn_report::solve::{
-    Show, Solved, complex_text, count, multihomogeneous_text, paths_text, reality,
+    Show, Solved, complex_text, count, linear_product_text, multihomogeneous_text, paths_text,
+    reality,
 };
 use kinsyn_report::solve_shards::ShardSummary;
 use std::fmt::Write as _;
@@ -66,7 +67,7 @@ pub(in crate::cli) fn text(solved: &Solved) -> String {
     );
     let _ = writeln!(
         out,
-        "start system: {}{}, {} paths (Bézout number {}, multi-homogeneous {} for {} variable group{}), seed {}",
+        "start system: {}{}, {} paths (Bézout number {}, multi-homogeneous {}, linear-product {} for {} variable group{}), seed {}",
         match report.start {
             StartSystem::TotalDegree => "total degree",
             StartSystem::MultiHomogeneous => "multi-homogeneous",
@@ -82,6 +83,7 @@ pub(in crate::cli) fn text(solved: &Solved) -> String {
         report.paths(),
         paths_text(system.bezout_number()),
         multihomogeneous_text(system),
+        linear_product_text(system),
         system.groups().len(),
         if system.groups().len() == 1 { "" } else { "s" },
         options.seed
