@@ -381,7 +381,8 @@ fn many_variable_groups_are_not_counted() {
     }
     let o = kinsyn(&["solve", &file]);
     assert!(
-        stdout(&o).contains("multi-homogeneous not counted for 40 variable groups"),
+        stdout(&o)
+            .contains("multi-homogeneous not counted, linear-product 1 for 40 variable groups"),
         "{}",
         stdout(&o)
     );
