@@ -506,53 +506,20 @@ impl ProjectiveHomotopy {
             }
             Start::SetStructure(forms, _) => {
                 for (i, row) in forms.iter().enumerate() {
-                    let factors: Vec<(&Vec<usize>, &Vec<C64>, C64)> = row
-                        .iter()
-                        .flat_map(|(vars, rows)| rows.iter().map(move |r| (vars, r)))
-                        .map(|(vars, r)| {
-                            (vars, r, vars.iter().zip(r).map(|(v, c)| c * z[*v]).sum())
-                        })
-                        .collect();
-                    g[i] = factors.iter().map(|f| f.2).product();
-                    for (k, (vars, r, _)) in factors.iter().enumerate() {
-                        let others: C64 = factors
-                            .iter()
-                            .enumerate()
-                            .filter(|(l, _)| *l != k)
-                            .map(|(_, f)| f.2)
-                            .product();
-                        for (v, c) in vars.iter().zip(*r) {
-                            gz[(i, *v)] += c * others;
-                        }
-                    }
+                    let factors = row.iter().flat_map(|(vars, rows)| {
+                        rows.iter().map(move |r| (vars.as_slice(), r.as_slice()))
+                    });
+                    g[i] = product_of_forms(factors, z, i, gz);
                 }
             }
             Start::MultiHomogeneous(forms, _) => {
                 for (i, row) in forms.iter().enumerate() {
-                    // All factors' values, then the product and its gradient by the product rule.
-                    let mut factors: Vec<(usize, &Vec<C64>, C64)> = Vec::new();
-                    for (j, group_forms) in row.iter().enumerate() {
-                        for f in group_forms {
-                            let v: C64 = self.groups[j]
-                                .iter()
-                                .zip(f)
-                                .map(|(idx, c)| c * z[*idx])
-                                .sum();
-                            factors.push((j, f, v));
-                        }
-                    }
-                    g[i] = factors.iter().map(|f| f.2).product();
-                    for (k, (j, f, _)) in factors.iter().enumerate() {
-                        let others: C64 = factors
+                    let factors = row.iter().enumerate().flat_map(|(j, group_forms)| {
+                        group_forms
                             .iter()
-                            .enumerate()
-                            .filter(|(l, _)| *l != k)
-                            .map(|(_, f)| f.2)
-                            .product();
-                        for (idx, c) in self.groups[*j].iter().zip(*f) {
-                            gz[(i, *idx)] += c * others;
-                        }
-                    }
+                            .map(move |f| (self.groups[j].as_slice(), f.as_slice()))
+                    });
+                    g[i] = product_of_forms(factors, z, i, gz);
                 }
             }
         }
@@ -720,4 +687,30 @@ impl Homotopy for ProjectiveHomotopy {
             }
         }
     }
+}
+
+/// The product of the linear forms `factors` (each its coordinates' indices into `z` and its
+/// coefficients) at `z`, its gradient added to row `i` of `gz` by the product rule: a start
+/// equation of a multi-homogeneous or linear-product start system.
+fn product_of_forms<'a>(
+    factors: impl Iterator<Item = (&'a [usize], &'a [C64])>,
+    z: &DVector<C64>,
+    i: usize,
+    gz: &mut DMatrix<C64>,
+) -> C64 {
+    let factors: Vec<(&[usize], &[C64], C64)> = factors
+        .map(|(vars, c)| (vars, c, vars.iter().zip(c).map(|(v, a)| a * z[*v]).sum()))
+        .collect();
+    for (k, (vars, c, _)) in factors.iter().enumerate() {
+        let others: C64 = factors
+            .iter()
+            .enumerate()
+            .filter(|(l, _)| *l != k)
+            .map(|(_, f)| f.2)
+            .product();
+        for (v, a) in vars.iter().zip(*c) {
+            gz[(i, *v)] += a * others;
+        }
+    }
+    factors.iter().map(|f| f.2).product()
 }
