@@ -34,6 +34,8 @@
 //! its meaning and unit): the front ends print them as JSON with [`sorted_json`] (the command)
 //! or hand them to Python as the text of [`sorted_value`]; the command's text output is
 //! written by the command line from the same values.
+//! - `kinsyn view`: [`view::view_of`] with [`view::ViewOptions`] (a [`kinsyn::view::View`],
+//!   written as a page by [`kinsyn::view::page`]);
 //! - `kinsyn sweep` and `kinsyn sweep merge`: [`sweep`] (the run, the merge, the files'
 //!   readers and writers; `designs.parquet` is encoded by the front end, [`sweep::Table`]).
 //!
@@ -52,6 +54,7 @@ pub mod solve;
 pub mod solve_shards;
 pub mod sweep;
 pub mod terminal;
+pub mod view;
 
 /// A failure the user sees, as one message (printed after `kinsyn: error: ` by the command,
 /// raised as an exception by Python; made one line by [`terminal::one_line`]): bad input

@@ -47,6 +47,7 @@ pub mod spatial;
 pub mod sweep;
 pub mod synthesis;
 pub mod verification;
+pub mod view;
 pub mod workspace;
 
 pub use kinsyn_nag::{certify, homotopy, poly, polyhedral};

@@ -425,6 +425,44 @@ pub(super) enum Command {
         #[command(subcommand)]
         command: Option<SweepCommand>,
     },
+    /// Write a 3D view of a manipulator: one self-contained HTML page (docs/view.md).
+    ///
+    /// The page draws the mechanism (bodies, joints by type, inputs in orange, the end-effector
+    /// in green) with orbit and zoom, a slider per input (that input swept with the others
+    /// held), the operation modes reached by locking inputs (choose one to animate its
+    /// motion), and every real assembly at the inputs. kinsyn computes every configuration
+    /// before writing the page; it needs no network and no server.
+    #[command(
+        after_help = "Examples:\n  kinsyn view mechanisms/3-ups.json --out 3-ups.html\n  kinsyn view mechanisms/6-ups.json --out 6-ups.html --inputs 'P1.3=0.05,P2.3=0.02' --steps 24\n  kinsyn view mechanisms/6-ruu-hexa.json --out hexa.html --no-assemblies"
+    )]
+    View {
+        /// The manipulator description (kinsyn-manipulator/1 or /2).
+        file: PathBuf,
+        /// Write the page to this file (its folder must exist; an existing file is refused
+        /// unless --force).
+        #[arg(long)]
+        out: PathBuf,
+        /// The input values of the configuration shown first, as `LABEL=VALUE` pairs in the
+        /// description's units (the others at their reference values); the reference
+        /// configuration when absent.
+        #[arg(long)]
+        inputs: Option<String>,
+        /// Steps to either side of each input's sweep (30° for a revolute, a fifth of the
+        /// characteristic length for a slider) and of each mode's motion; 1 to 200.
+        #[arg(long, default_value_t = 16)]
+        steps: usize,
+        /// Do not solve for every assembly at the inputs (the global analysis).
+        #[arg(long)]
+        no_assemblies: bool,
+        /// Seed of the sampled modes and of the assembly solve.
+        #[arg(long, default_value_t = 1)]
+        seed: u64,
+        /// Print what the page holds as JSON instead of the summary line.
+        #[arg(long)]
+        json: bool,
+        #[command(flatten)]
+        force: Force,
+    },
     /// Export a manipulator to a simulator: a MuJoCo MJCF model (docs/export.md).
     ///
     /// The mechanism's spanning tree becomes nested bodies with hinge and slide joints, each

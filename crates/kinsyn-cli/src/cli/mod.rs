@@ -15,6 +15,7 @@ mod plot;
 mod render;
 mod site;
 mod sweep_command;
+mod view;
 pub use sweep_command::parquet_bytes;
 mod sweep_report;
 mod terminal;
@@ -411,6 +412,27 @@ fn execute(command: Command) -> Result<String, CliError> {
             force,
         } => manipulator::stack_command(&modules, radii, heights, output.as_deref(), force.force),
         Command::Export { file, mjcf, force } => export::mjcf(&file, &mjcf, force.force),
+        Command::View {
+            file,
+            out,
+            inputs,
+            steps,
+            no_assemblies,
+            seed,
+            json,
+            force,
+        } => view::view(
+            &file,
+            &out,
+            &kinsyn_report::view::ViewOptions {
+                inputs,
+                steps,
+                assemblies: !no_assemblies,
+                seed,
+            },
+            force.force,
+            json,
+        ),
         Command::Sweep {
             command: Some(args::SweepCommand::Report(r)),
             ..

@@ -9,48 +9,8 @@
 
 use crate::common;
 
+use common::browser::{chromium, dump_dom, url};
 use common::{kinsyn, stdout};
-use std::path::{Path, PathBuf};
-use std::process::Command;
-
-/// The Chromium binary on PATH, or `None` when it may be absent (see the module's doc).
-fn chromium() -> Option<PathBuf> {
-    let found = std::env::var_os("PATH").and_then(|paths| {
-        std::env::split_paths(&paths).find_map(|dir| {
-            ["chromium", "chromium-browser", "google-chrome"]
-                .iter()
-                .map(|name| dir.join(name))
-                .find(|p| p.is_file())
-        })
-    });
-    if found.is_none() {
-        assert!(
-            std::env::var_os("CI").is_none(),
-            "chromium is not installed: the catalogue site test needs it in CI (apt-get install chromium)"
-        );
-        eprintln!(
-            "NOTICE: chromium not found; the catalogue site test did not run (apt-get install chromium)"
-        );
-    }
-    found
-}
-
-/// The DOM of `url` after its scripts ran, as Chromium serialises it.
-fn dump_dom(chromium: &Path, url: &str) -> String {
-    let out = Command::new(chromium)
-        .args([
-            "--headless",
-            "--no-sandbox",
-            "--disable-gpu",
-            "--virtual-time-budget=10000",
-            "--dump-dom",
-            url,
-        ])
-        .output()
-        .expect("run chromium");
-    assert!(out.status.success(), "chromium failed on {url}");
-    String::from_utf8(out.stdout).unwrap()
-}
 
 /// The site, built by the binary into a temporary folder.
 fn build_site() -> tempfile::TempDir {
@@ -58,10 +18,6 @@ fn build_site() -> tempfile::TempDir {
     let out = kinsyn(&["catalogue", "site", "--out", dir.path().to_str().unwrap()]);
     assert_eq!(out.status.code(), Some(0), "{out:?}");
     dir
-}
-
-fn url(dir: &Path, page: &str) -> String {
-    format!("file://{}/{page}", dir.display())
 }
 
 /// The text between `start` and the next `end` after each occurrence of `start` in `s`.
@@ -116,7 +72,9 @@ fn query_rows(args: &[&str]) -> Vec<(String, String, String)> {
 
 #[test]
 fn the_index_filtered_in_its_address_shows_the_rows_of_kinsyn_query() {
-    let Some(chromium) = chromium() else { return };
+    let Some(chromium) = chromium("the catalogue site test") else {
+        return;
+    };
     let site = build_site();
     let cases: [(&str, &[&str]); 3] = [
         (
@@ -195,7 +153,9 @@ fn rows_shown_ids(dom: &str) -> Vec<String> {
 
 #[test]
 fn every_schematic_is_well_formed_xml_with_one_symbol_per_joint_letter() {
-    let Some(chromium) = chromium() else { return };
+    let Some(chromium) = chromium("the catalogue site test") else {
+        return;
+    };
     let site = build_site();
     let list: Vec<serde_json::Value> =
         serde_json::from_str(&stdout(&kinsyn(&["catalogue", "list", "--json"]))).unwrap();

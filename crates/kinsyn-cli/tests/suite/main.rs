@@ -27,3 +27,4 @@ mod hexa_cli;
 mod hexa_plot;
 mod mujoco_export;
 mod ruu_cli;
+mod view_page;

@@ -1,6 +1,8 @@
 //! Helpers shared by the command-line tests: running the `kinsyn` binary from the repository
 //! root (where `mechanisms/` and `catalogue/` are), and its output as text.
 
+pub mod browser;
+
 /// Runs the `kinsyn` binary from the repository root.
 #[allow(dead_code)]
 pub fn kinsyn(args: &[&str]) -> std::process::Output {

@@ -1,0 +1,212 @@
+//! `kinsyn view FILE`: the data of a manipulator's 3D page ([`kinsyn::view`]) — the start
+//! configuration at the given inputs, a sweep per input, a walk per operation mode reached by
+//! locking inputs, and every real assembly at those inputs when the global analysis can
+//! compute them.
+
+use crate::Error;
+use crate::manipulator::{all_assemblies_of, input_texts, inputs_or_reference};
+use kinsyn::manipulator::{Manipulator, PositionRequest};
+use kinsyn::mechanism::SampleSettings;
+use kinsyn::notation::Primitive;
+use kinsyn::view::{AssemblyView, FORMAT, ModeView, Scene, View, input_sweep, mode_walk};
+
+/// The default steps to either side of a sweep or a walk.
+pub const DEFAULT_STEPS: usize = 16;
+
+/// The most lock subsets sampled for the modes: every subset of up to 8 inputs, of fewer
+/// locks beyond.
+pub const MAX_MODE_SUBSETS: u128 = 256;
+
+/// How far a sweep moves a revolute input to either side (radians): 30°.
+pub const REVOLUTE_SPAN: f64 = std::f64::consts::PI / 6.0;
+
+/// How far a sweep moves a slider to either side, as a fraction of the characteristic length.
+pub const SLIDER_SPAN: f64 = 0.2;
+
+/// What `kinsyn view` is asked for.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct ViewOptions {
+    /// `--inputs`: the input values of the start configuration (the reference when `None`).
+    pub inputs: Option<String>,
+    /// Steps to either side of each sweep and walk (1 to [`kinsyn::view::MAX_STEPS`]).
+    pub steps: usize,
+    /// Whether to solve for every assembly at the inputs.
+    pub assemblies: bool,
+    /// The seed of the sampled modes and of the assembly solve.
+    pub seed: u64,
+}
+
+impl Default for ViewOptions {
+    fn default() -> Self {
+        Self {
+            inputs: None,
+            steps: DEFAULT_STEPS,
+            assemblies: true,
+            seed: 1,
+        }
+    }
+}
+
+/// The view of `m` (module documentation).
+///
+/// # Errors
+/// [`Error::Input`] for inputs that do not read or that the manipulator cannot reach from its
+/// reference configuration, and steps out of range.
+pub fn view_of(m: &Manipulator, options: &ViewOptions) -> Result<View, Error> {
+    if options.steps == 0 || options.steps > kinsyn::view::MAX_STEPS {
+        return Err(Error::Input(format!(
+            "--steps {}: from 1 to {} steps to either side",
+            options.steps,
+            kinsyn::view::MAX_STEPS
+        )));
+    }
+    let inputs = inputs_or_reference(m, options.inputs.as_deref())?;
+    let start = match options.inputs.as_deref() {
+        None => m.reference(),
+        Some(text) => {
+            let request = PositionRequest {
+                inputs: inputs.clone(),
+                ..PositionRequest::default()
+            };
+            m.solve_position(&m.reference(), &request)
+                .map_err(|e| Error::Input(format!("--inputs {text:?}: {e}")))?
+                .q
+        }
+    };
+    let settings = SampleSettings {
+        seed: options.seed,
+        ..SampleSettings::default()
+    };
+    let mut notes = Vec::new();
+    let free = m.mode_from(&start, &[], &settings);
+    let classification = format!(
+        "With every input free the end-effector has {} dof: {}.",
+        free.dof,
+        free.pattern_text()
+    );
+    let sweeps = (0..m.actuators().len())
+        .map(|a| {
+            let span = match m.actuators()[a].kind {
+                Primitive::R => REVOLUTE_SPAN,
+                Primitive::P => SLIDER_SPAN * m.mechanism().scale(),
+            };
+            input_sweep(m, &start, a, span, options.steps)
+        })
+        .collect();
+    let modes = modes(m, &start, &settings, options.steps, &mut notes);
+    let assemblies = if options.assemblies {
+        assemblies(m, options, &mut notes)
+    } else {
+        notes.push("Assemblies not computed (--no-assemblies).".to_string());
+        Vec::new()
+    };
+    Ok(View {
+        format: FORMAT,
+        scene: Scene::of(m),
+        start,
+        inputs: input_texts(m, &inputs),
+        classification,
+        sweeps,
+        modes,
+        assemblies,
+        notes,
+    })
+}
+
+/// One walk per pattern reached by locking inputs (its first minimal lock set), every lock
+/// subset sampled when there are at most [`MAX_MODE_SUBSETS`], else those of the most locks
+/// that stay within it.
+fn modes(
+    m: &Manipulator,
+    start: &[f64],
+    settings: &SampleSettings,
+    steps: usize,
+    notes: &mut Vec<String>,
+) -> Vec<ModeView> {
+    let n = m.actuators().len();
+    let max_locks = (0..=n)
+        .take_while(|&k| m.lock_subset_count(k) <= MAX_MODE_SUBSETS)
+        .last()
+        .unwrap_or(0);
+    if max_locks < n {
+        notes.push(format!(
+            "Modes: the lock subsets of at most {max_locks} of the {n} inputs ({} subsets).",
+            m.lock_subset_count(max_locks)
+        ));
+    }
+    let sampled = m.modes_from(start, &m.lock_subsets(max_locks), settings, &|| {});
+    let mut out = Vec::new();
+    for p in sampled.groups.iter().chain(&sampled.non_groups) {
+        let Some(text) = p.lock_sets.first() else {
+            continue;
+        };
+        let locked = if text == "-" {
+            Vec::new()
+        } else {
+            match m.parse_locks(&text.replace(' ', ",")) {
+                Ok(l) => l,
+                Err(_) => continue,
+            }
+        };
+        let walk = mode_walk(m, start, &locked, steps);
+        out.push(ModeView {
+            source: "modes".to_string(),
+            locks: text.clone(),
+            pattern: p.pattern.to_string(),
+            dof: p.dof,
+            group: sampled.groups.iter().any(|g| std::ptr::eq(g, p)),
+            parameters: p.parameters.clone(),
+            joint_values: walk.joint_values,
+            start: walk.start,
+            stops: walk.stops,
+        });
+    }
+    if !sampled.singular_starts.is_empty() {
+        notes.push(format!(
+            "Modes not shown: the start is singular with {} locked.",
+            sampled.singular_starts.join("; ")
+        ));
+    }
+    out
+}
+
+/// The real assemblies at the view's inputs as joint values, or none with a note saying why.
+fn assemblies(
+    m: &Manipulator,
+    options: &ViewOptions,
+    notes: &mut Vec<String>,
+) -> Vec<AssemblyView> {
+    let all = match all_assemblies_of(m, options.inputs.as_deref(), options.seed) {
+        Ok(all) => all,
+        Err(e) => {
+            notes.push(format!("Assemblies not computed: {e}"));
+            return Vec::new();
+        }
+    };
+    let mut out = Vec::new();
+    let mut missed = 0;
+    for (k, a) in all.assemblies.iter().enumerate() {
+        match m.assemble_at_frames(&a.frames) {
+            Ok(q) => out.push(AssemblyView {
+                label: format!("assembly {}", k + 1),
+                certified: a.certified,
+                continued_from_reference: a.current,
+                joint_values: q,
+            }),
+            Err(_) => missed += 1,
+        }
+    }
+    if all.combinations > all.assemblies.len() as u128 {
+        notes.push(format!(
+            "Assemblies: the first {} of {} real combinations.",
+            all.assemblies.len(),
+            all.combinations
+        ));
+    }
+    if missed > 0 {
+        notes.push(format!(
+            "Assemblies: {missed} real assemblies found whose legs' joint values could not be solved are not shown."
+        ));
+    }
+    out
+}
