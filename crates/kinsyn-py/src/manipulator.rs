@@ -325,6 +325,30 @@ impl Manipulator {
             .map_err(py_err)
     }
 
+    /// `kinsyn view FILE [--inputs I] --steps N [--no-assemblies] --seed S`: the 3D page, as
+    /// HTML text (docs/view.md).
+    #[pyo3(signature = (inputs = None, steps = 16, assemblies = true, seed = 1))]
+    fn view_html(
+        &self,
+        py: Python<'_>,
+        inputs: Option<String>,
+        steps: usize,
+        assemblies: bool,
+        seed: u64,
+    ) -> PyResult<String> {
+        let options = kinsyn_report::view::ViewOptions {
+            inputs,
+            steps,
+            assemblies,
+            seed,
+        };
+        py.detach(|| {
+            kinsyn_report::view::view_of(&self.inner, &options)
+                .map(|v| kinsyn::view::page(&v))
+        })
+        .map_err(py_err)
+    }
+
     fn __repr__(&self) -> String {
         format!(
             "Manipulator({:?}, inputs {})",

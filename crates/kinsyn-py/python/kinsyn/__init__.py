@@ -24,10 +24,12 @@ message the command prints after ``kinsyn: error:``.
 
 from __future__ import annotations
 
+import html as _html
 import json
 import warnings
 from dataclasses import dataclass, field
 from os import PathLike
+from pathlib import Path
 from typing import Any, Dict, List, Mapping, Optional, Sequence, Union
 
 import numpy as np
@@ -44,6 +46,7 @@ __all__ = [
     "KinsynWarning",
     "Manipulator",
     "Solutions",
+    "View",
     "catalogue",
     "catalogue_patterns",
     "components",
@@ -493,8 +496,46 @@ class Manipulator:
         _warn(r)
         return Assemblies._from_report(r)
 
+    def view(self, inputs: Inputs = None, steps: int = 16, assemblies: bool = True, seed: int = 1) -> "View":
+        """The 3D view of the manipulator (``kinsyn view FILE --out PAGE.html``, docs/view.md):
+        a self-contained page with a slider per input (swept ``steps`` steps to either side,
+        the other inputs held), an animation of each operation mode reached by locking inputs,
+        and every real assembly at ``inputs`` (unless ``assemblies`` is false). Shown inline in
+        Jupyter; ``View.save(path)`` writes the page."""
+        return View(self._m.view_html(_inputs_text(inputs), steps, assemblies, seed))
+
+    def show(self, inputs: Inputs = None, steps: int = 16, assemblies: bool = True, seed: int = 1) -> "View":
+        """The same as :meth:`view`: in Jupyter, the last expression of a cell is displayed."""
+        return self.view(inputs, steps, assemblies, seed)
+
     def __repr__(self) -> str:
         return repr(self._m)
+
+
+class View:
+    """A manipulator's 3D page (docs/view.md): ``html`` is the whole page; Jupyter shows it
+    inline in a frame of ``height`` pixels."""
+
+    __slots__ = ("html", "height")
+
+    def __init__(self, html: str, height: int = 560) -> None:
+        self.html = html
+        self.height = height
+
+    def save(self, path: Union[str, "PathLike[str]"]) -> None:
+        """Writes the page to ``path`` (UTF-8), replacing a file there."""
+        Path(path).write_text(self.html, encoding="utf-8")
+
+    def _repr_html_(self) -> str:
+        # The page in a frame of its own: its scripts and styles do not touch the notebook's.
+        return (
+            f'<iframe srcdoc="{_html.escape(self.html, quote=True)}" '
+            f'style="width: 100%; height: {self.height}px; border: 1px solid #dee2e6" '
+            'sandbox="allow-scripts"></iframe>'
+        )
+
+    def __repr__(self) -> str:
+        return f"View({len(self.html)} characters of HTML)"
 
 
 # --- polynomial systems ---------------------------------------------------------------------
