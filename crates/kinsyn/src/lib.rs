@@ -36,6 +36,7 @@ pub mod lockset;
 pub mod manipulator;
 pub mod markup;
 pub mod mechanism;
+pub mod export_tree;
 pub mod mjcf;
 pub mod motion;
 pub mod notation;
