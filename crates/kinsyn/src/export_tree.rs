@@ -180,6 +180,42 @@ impl ExportNames {
     }
 }
 
+/// The mass of a moving body the description names (the platform), in both exports.
+pub const BODY_MASS: f64 = 1.0;
+
+/// The mass of an intermediate body of a leg (massless in kinsyn), in both exports.
+pub const LINK_MASS: f64 = 0.1;
+
+/// The made-up inertia both exports give a body (kinsyn's bodies carry none): [`BODY_MASS`]
+/// with a radius of gyration of a quarter of the characteristic length for the ground and the
+/// bodies the description names, [`LINK_MASS`] with a twentieth for an intermediate body; the
+/// centre of mass at the centroid of its joints' points. Returns the centre (in `frame`, the
+/// frame the inertia is written in), the mass and the principal moment (the same about every
+/// axis).
+#[must_use]
+pub fn placeholder_inertia(
+    m: &Manipulator,
+    body: usize,
+    frame: &Displacement,
+) -> (nalgebra::Vector3<f64>, f64, f64) {
+    let l = m.mechanism().scale();
+    let points: Vec<nalgebra::Vector3<f64>> = m
+        .mechanism()
+        .joints()
+        .iter()
+        .filter(|j| j.from == body || j.to == body)
+        .map(|j| frame.inverse_transform_point(&j.point.into()).coords)
+        .collect();
+    #[allow(clippy::cast_precision_loss, reason = "a body has a few joints")]
+    let centre = points.iter().sum::<nalgebra::Vector3<f64>>() / points.len().max(1) as f64;
+    let (mass, gyration) = if ExportNames::is_named(m, body) {
+        (BODY_MASS, 0.25 * l)
+    } else {
+        (LINK_MASS, 0.05 * l)
+    };
+    (centre, mass, mass * gyration * gyration)
+}
+
 /// A vector as the XML formats write it: three numbers separated by spaces, each the shortest
 /// decimal that reads back as the same `f64`.
 pub(crate) fn vec3(v: &nalgebra::Vector3<f64>) -> String {

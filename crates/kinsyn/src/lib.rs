@@ -47,6 +47,7 @@ pub mod screw;
 pub mod spatial;
 pub mod sweep;
 pub mod synthesis;
+pub mod urdf;
 pub mod verification;
 pub mod workspace;
 

@@ -41,7 +41,7 @@
 
 pub use crate::export_tree::{ChordClosure, ExportTree};
 
-use crate::export_tree::{ExportNames, vec3};
+use crate::export_tree::{ExportNames, placeholder_inertia, vec3};
 use crate::manipulator::Manipulator;
 use crate::markup::escape;
 use crate::notation::Primitive;
@@ -67,11 +67,7 @@ pub const SOLVER_ITERATIONS: usize = 100;
 /// The constraint solver's tolerance (relative improvement of its cost at which it stops).
 pub const SOLVER_TOLERANCE: f64 = 1e-12;
 
-/// The mass of a moving body the description names (the platform).
-pub const BODY_MASS: f64 = 1.0;
-
-/// The mass of an intermediate body of a leg (massless in kinsyn).
-pub const LINK_MASS: f64 = 0.1;
+pub use crate::export_tree::{BODY_MASS, LINK_MASS};
 
 /// The servos' stiffness per unit of [`BODY_MASS`] (1/s²): a slider's `kp` is this times the
 /// mass, a revolute's this times the mass and the squared characteristic length.
@@ -317,7 +313,6 @@ impl<'a> Export<'a> {
         shown: Shown,
         depth: usize,
     ) {
-        let l = self.scale;
         let parent_frame = parent.map_or(Displacement::identity(), |p| self.names.frames[p]);
         let relative = parent_frame.inverse() * frame;
         let q = UnitQuaternion::from_rotation_matrix(&relative.rotation);
@@ -333,16 +328,7 @@ impl<'a> Export<'a> {
             q.k
         );
         let (Shown::Body(like) | Shown::Chord(like)) = shown;
-        let points = self.joint_points(like, frame);
-        #[allow(clippy::cast_precision_loss, reason = "a body has a few joints")]
-        let centre = points.iter().sum::<Vector3<f64>>() / points.len().max(1) as f64;
-        let named = ExportNames::is_named(self.m, like);
-        let (mass, gyration) = if named {
-            (BODY_MASS, 0.25 * l)
-        } else {
-            (LINK_MASS, 0.05 * l)
-        };
-        let inertia = mass * gyration * gyration;
+        let (centre, mass, inertia) = placeholder_inertia(self.m, like, frame);
         let _ = writeln!(
             x,
             "{}<inertial pos=\"{}\" mass=\"{mass}\" diaginertia=\"{inertia} {inertia} {inertia}\"/>",

@@ -26,4 +26,5 @@ mod common;
 mod hexa_cli;
 mod hexa_plot;
 mod mujoco_export;
+mod pinocchio_export;
 mod ruu_cli;
