@@ -30,13 +30,13 @@
 
 pub mod catalogue;
 pub mod chain;
+pub mod export_tree;
 pub mod geometry;
 mod linalg;
 pub mod lockset;
 pub mod manipulator;
 pub mod markup;
 pub mod mechanism;
-pub mod export_tree;
 pub mod mjcf;
 pub mod motion;
 pub mod notation;

@@ -173,8 +173,7 @@ impl<'a> Export<'a> {
         let _ = writeln!(x, "  <default>");
         let _ = writeln!(
             x,
-            "    <geom contype=\"0\" conaffinity=\"0\" rgba=\"{}\"/>",
-            LINK_RGBA
+            "    <geom contype=\"0\" conaffinity=\"0\" rgba=\"{LINK_RGBA}\"/>"
         );
         let _ = writeln!(
             x,
@@ -383,7 +382,9 @@ impl<'a> Export<'a> {
             if spec.kind != Primitive::P || (spec.from != body && spec.to != body) {
                 continue;
             }
-            let point = frame.inverse_transform_point(&Point3::from(spec.point)).coords;
+            let point = frame
+                .inverse_transform_point(&Point3::from(spec.point))
+                .coords;
             let half = frame.rotation.inverse() * spec.axis * (SLEEVE_HALF_LENGTH * l);
             let (size, rgba) = if spec.from == body {
                 (SLEEVE_RADIUS * l, SLEEVE_RGBA)
@@ -521,9 +522,9 @@ fn outline(points: &[Vector3<f64>]) -> Vec<Vector3<f64>> {
     }
     #[allow(clippy::cast_precision_loss, reason = "a body has a few joints")]
     let centre = points.iter().sum::<Vector3<f64>>() / points.len() as f64;
-    let spread = points
-        .iter()
-        .fold(nalgebra::Matrix3::zeros(), |s, p| s + (p - centre) * (p - centre).transpose());
+    let spread = points.iter().fold(nalgebra::Matrix3::zeros(), |s, p| {
+        s + (p - centre) * (p - centre).transpose()
+    });
     let eigen = spread.symmetric_eigen();
     let mut order: Vec<usize> = (0..3).collect();
     order.sort_by(|&a, &b| eigen.eigenvalues[b].total_cmp(&eigen.eigenvalues[a]));

@@ -76,7 +76,12 @@ impl Export<'_> {
         );
         self.write_chords(&mut x);
         let ground = self.m.mechanism().ground();
-        self.write_link(&mut x, &self.names.bodies[ground], Some(ground), &self.link_frame(ground));
+        self.write_link(
+            &mut x,
+            &self.names.bodies[ground],
+            Some(ground),
+            &self.link_frame(ground),
+        );
         self.write_subtree(&mut x, ground);
         let _ = writeln!(x, "</robot>");
         x
@@ -218,8 +223,7 @@ impl Export<'_> {
                 "       {} ({kind}{actuated}) from link '{}' to link '{}': axis {} through {} in the ground frame;",
                 comment(&self.names.joints[joint]),
                 comment(&self.names.bodies[spec.from]),
-                comment(&self.names.bodies[spec.to])
-                ,
+                comment(&self.names.bodies[spec.to]),
                 vec3(&spec.axis),
                 vec3(&spec.point)
             );
@@ -229,7 +233,11 @@ impl Export<'_> {
                     x,
                     "         axis {} through {} in the frame of link '{}'{}",
                     vec3(&(frame.rotation.inverse() * spec.axis)),
-                    vec3(&frame.inverse_transform_point(&Point3::from(spec.point)).coords),
+                    vec3(
+                        &frame
+                            .inverse_transform_point(&Point3::from(spec.point))
+                            .coords
+                    ),
                     comment(&self.names.bodies[body]),
                     if body == spec.from { ";" } else { "." }
                 );

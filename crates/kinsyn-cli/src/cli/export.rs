@@ -3,6 +3,7 @@
 
 use super::CliError;
 use super::output::OutputFile;
+use std::fmt::Write as _;
 use std::path::Path;
 
 /// Writes the MuJoCo model (`mjcf`) and the URDF spanning tree (`urdf`) of the manipulator
@@ -43,13 +44,14 @@ pub fn models(
     );
     if let Some(target) = mjcf {
         target.write(kinsyn::mjcf::to_mjcf(&m).as_bytes())?;
-        report += &format!("wrote {} ({summary})\n", target.path().display());
+        let _ = writeln!(report, "wrote {} ({summary})", target.path().display());
     }
     if let Some(target) = urdf {
         let tree = kinsyn::export_tree::ExportTree::new(&m);
         target.write(kinsyn::urdf::to_urdf(&m).as_bytes())?;
-        report += &format!(
-            "wrote {} ({summary}; the tree's {} joints, {} loop-closing joints listed in a comment)\n",
+        let _ = writeln!(
+            report,
+            "wrote {} ({summary}; the tree's {} joints, {} loop-closing joints listed in a comment)",
             target.path().display(),
             tree.joint_count(),
             tree.chords.len()

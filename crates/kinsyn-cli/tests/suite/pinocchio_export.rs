@@ -59,7 +59,10 @@ fn descriptions() -> Vec<PathBuf> {
         }
     }
     files.sort();
-    assert!(files.len() >= 9, "the committed descriptions were not found");
+    assert!(
+        files.len() >= 9,
+        "the committed descriptions were not found"
+    );
     files
 }
 
