@@ -345,7 +345,8 @@ impl<'a> Export<'a> {
     /// `frame`: a named body (the ground, the platform) as a plate outline through its joints'
     /// points, an intermediate body as capsules from joint point to joint point (in joint
     /// order), and each slider as a sleeve on its `from` body and a rod on its `to` body, long
-    /// enough to overlap over a stroke of ±[`SLEEVE_HALF_LENGTH`] characteristic lengths. The
+    /// enough to overlap while the slider is within twice [`SLEEVE_HALF_LENGTH`] characteristic
+    /// lengths of its reference value. The
     /// geoms carry no mass: the inertias are the `<inertial>` elements (`inertiafromgeom` off).
     fn geoms(&self, body: usize, frame: &Displacement) -> Vec<String> {
         let l = self.scale;

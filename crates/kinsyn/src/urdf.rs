@@ -19,7 +19,7 @@
 //! gets ±[`PRISMATIC_RANGE`] characteristic lengths from its reference value, and every joint
 //! [`EFFORT_LIMIT`] and [`VELOCITY_LIMIT`], placeholders that URDF requires. Masses and
 //! inertias are the MJCF export's placeholders
-//! ([`placeholder_inertia`](crate::export_tree::placeholder_inertia)); there is no visual or
+//! ([`placeholder_inertia`]); there is no visual or
 //! collision geometry.
 
 use crate::export_tree::{ExportNames, ExportTree, placeholder_inertia, vec3};
