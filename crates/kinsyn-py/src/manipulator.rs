@@ -343,8 +343,7 @@ impl Manipulator {
             seed,
         };
         py.detach(|| {
-            kinsyn_report::view::view_of(&self.inner, &options)
-                .map(|v| kinsyn::view::page(&v))
+            kinsyn_report::view::view_of(&self.inner, &options).map(|v| kinsyn::view::page(&v))
         })
         .map_err(py_err)
     }

@@ -30,6 +30,7 @@
 
 pub mod catalogue;
 pub mod chain;
+pub mod export_tree;
 pub mod geometry;
 mod linalg;
 pub mod lockset;
@@ -46,6 +47,7 @@ pub mod screw;
 pub mod spatial;
 pub mod sweep;
 pub mod synthesis;
+pub mod urdf;
 pub mod verification;
 pub mod view;
 pub mod workspace;

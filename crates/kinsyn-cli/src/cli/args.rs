@@ -463,19 +463,29 @@ pub(super) enum Command {
         #[command(flatten)]
         force: Force,
     },
-    /// Export a manipulator to a simulator: a MuJoCo MJCF model (docs/export.md).
+    /// Export a manipulator to a simulator or a kinematics library: a MuJoCo MJCF model, a
+    /// URDF robot, or both (docs/export.md).
     ///
-    /// The mechanism's spanning tree becomes nested bodies with hinge and slide joints, each
-    /// loop-closing joint an equality constraint, each input a position servo whose ctrl is
-    /// kinsyn's input value; qpos0 is the reference configuration, gravity is off.
-    #[command(after_help = "Examples:\n  kinsyn export mechanisms/6-ups.json --mjcf 6-ups.xml")]
+    /// The mechanism's spanning tree becomes nested bodies with hinge and slide joints. In the
+    /// MJCF, each loop-closing joint is an equality constraint and each input a position servo
+    /// whose ctrl is kinsyn's input value; qpos0 is the reference configuration, gravity is off.
+    /// The URDF holds the tree only (continuous revolutes, prismatic joints with placeholder
+    /// limits); its loop-closing joints are listed in a comment. Pinocchio reads both.
+    #[command(
+        after_help = "Examples:\n  kinsyn export mechanisms/6-ups.json --mjcf 6-ups.xml\n  kinsyn export mechanisms/6-ups.json --urdf 6-ups.urdf\n  kinsyn export mechanisms/3-rps.json --mjcf 3-rps.xml --urdf 3-rps.urdf --force",
+        group(clap::ArgGroup::new("model").required(true).multiple(true).args(["mjcf", "urdf"]))
+    )]
     Export {
         /// The manipulator description (kinsyn-manipulator/1 or /2).
         file: PathBuf,
         /// Write the MuJoCo model (MJCF XML) to this file (its folder must exist; an existing
         /// file is refused unless --force).
-        #[arg(long, required = true)]
-        mjcf: PathBuf,
+        #[arg(long)]
+        mjcf: Option<PathBuf>,
+        /// Write the spanning tree as a URDF robot to this file (its folder must exist; an
+        /// existing file is refused unless --force).
+        #[arg(long)]
+        urdf: Option<PathBuf>,
         #[command(flatten)]
         force: Force,
     },

@@ -411,7 +411,12 @@ fn execute(command: Command) -> Result<String, CliError> {
             output,
             force,
         } => manipulator::stack_command(&modules, radii, heights, output.as_deref(), force.force),
-        Command::Export { file, mjcf, force } => export::mjcf(&file, &mjcf, force.force),
+        Command::Export {
+            file,
+            mjcf,
+            urdf,
+            force,
+        } => export::models(&file, mjcf.as_deref(), urdf.as_deref(), force.force),
         Command::View {
             file,
             out,

@@ -26,5 +26,6 @@ mod common;
 mod hexa_cli;
 mod hexa_plot;
 mod mujoco_export;
+mod pinocchio_export;
 mod ruu_cli;
 mod view_page;
