@@ -1,9 +1,11 @@
-"""Writes examples/python/tour.ipynb from examples/python/tour.py, cell by cell, with no
-outputs: the script's docstring becomes the first text cell, each ``# %%`` line starts a code
-cell and each ``# %% [markdown]`` line a text cell (its lines without the leading ``# ``).
+"""Writes examples/python/tour.ipynb from examples/python/tour.py, cell by cell, executed
+with its outputs kept (tables, the figure, the 3D view): the script's docstring becomes the
+first text cell, each ``# %%`` line starts a code cell and each ``# %% [markdown]`` line a text
+cell (its lines without the leading ``# ``). It needs kinsyn installed (``pip install
+./crates/kinsyn-py``), nbclient, ipykernel, pandas and matplotlib.
 
-    python examples/python/make_notebook.py          # rewrite tour.ipynb
-    python examples/python/make_notebook.py --check  # exit 1 when tour.ipynb is out of date
+    python examples/python/make_notebook.py          # rewrite tour.ipynb, executed
+    python examples/python/make_notebook.py --check  # exit 1 when its cells are out of date
 """
 
 from __future__ import annotations
@@ -42,18 +44,34 @@ def notebook(script: str) -> nbformat.NotebookNode:
     return nb
 
 
+def executed(nb: nbformat.NotebookNode) -> nbformat.NotebookNode:
+    """``nb`` run in a fresh ``python3`` kernel from this folder, every output kept; no
+    timings, so that a run gives the same file as the last when the results are the same."""
+    import nbclient
+
+    nbclient.NotebookClient(
+        nb, kernel_name="python3", timeout=600, record_timing=False, resources={"metadata": {"path": str(HERE)}}
+    ).execute()
+    return nb
+
+
+def sources(nb: nbformat.NotebookNode) -> list:
+    """The cells' kinds and texts: what the script decides, outputs aside."""
+    return [(c.cell_type, c.source) for c in nb.cells]
+
+
 def text(nb: nbformat.NotebookNode) -> str:
     return nbformat.writes(nb) + "\n"
 
 
 def main() -> int:
-    want = text(notebook(SCRIPT.read_text(encoding="utf-8")))
+    want = notebook(SCRIPT.read_text(encoding="utf-8"))
     if "--check" in sys.argv[1:]:
-        if NOTEBOOK.read_text(encoding="utf-8") != want:
+        if sources(nbformat.read(NOTEBOOK, as_version=4)) != sources(want):
             print(f"{NOTEBOOK} is out of date: run python {Path(__file__).name}", file=sys.stderr)
             return 1
         return 0
-    NOTEBOOK.write_text(want, encoding="utf-8")
+    NOTEBOOK.write_text(text(executed(want)), encoding="utf-8")
     return 0
 
 

@@ -62,6 +62,26 @@ locked = ups.analyze(lock=["R1.1", "R2.1", "R3.1"])
 print(f"with the α locked: platform dof {locked.dof}; rows {locked.rows}")
 
 # %% [markdown]
+# ## See it move
+#
+# The 3-UPS's operation modes as a table, the number of lock subsets reaching each pattern as a
+# figure, and the manipulator in 3D (`ups.show()`, the page of `kinsyn view`): drag to orbit,
+# choose a mode to animate it, move an input with its slider.
+
+# %%
+reached = modes.groupby(["dof", "pattern"]).size().rename("subsets").reset_index()
+reached
+
+# %%
+axes = reached.plot.barh(x="pattern", y="subsets", legend=False, figsize=(6, 3.2))
+axes.set_xlabel("lock subsets of the 3-UPS's six inputs")
+axes.set_ylabel("motion pattern")
+axes.figure.tight_layout()
+
+# %%
+ups.show(steps=8, assemblies=False)
+
+# %% [markdown]
 # ## Paper 001: the HEXA with reconfigurable platforms (Wu, Dong)
 #
 # Both end-effectors make the Schönflies motion X(z) (4 dof). End-effector 2 is the middle of

@@ -319,3 +319,36 @@ def test_control_characters_in_messages_are_escaped_as_on_the_cli():
         kinsyn.query("T3\n\x1b[31m")
     assert "\n" not in str(e.value) and "\x1b" not in str(e.value)
     assert str(e.value) == cli_error("query", "--pattern", "T3\n\x1b[31m")
+
+
+# --- the 3D view ----------------------------------------------------------------------------
+
+
+def _view_data(html: str):
+    start = html.index('<script type="application/json" id="kinsyn-data">')
+    start = html.index(">", start) + 1
+    return json.loads(html[start : html.index("</script>", start)])
+
+
+def test_view_holds_the_data_of_the_cli(tmp_path):
+    m = kinsyn.Manipulator.from_file(UPS3)
+    view = m.view(inputs={"P1.3": 0.02}, steps=3, assemblies=False, seed=4)
+    page = tmp_path / "cli.html"
+    want = cli_json(
+        "view", str(UPS3), "--out", str(page), "--inputs", "P1.3=0.02", "--steps", "3", "--no-assemblies", "--seed", "4"
+    )
+    assert _view_data(view.html) == want
+    assert _view_data(page.read_text("utf-8")) == want
+    # Inline in Jupyter: the page in a sandboxed frame, its text escaped.
+    frame = view._repr_html_()
+    assert frame.startswith("<iframe srcdoc=") and "&lt;script" in frame and "<script" not in frame
+    view.save(tmp_path / "saved.html")
+    assert (tmp_path / "saved.html").read_text("utf-8") == view.html
+    assert m.show(steps=1, assemblies=False).html.startswith("<!DOCTYPE html>")
+
+
+def test_view_refuses_what_the_cli_refuses(tmp_path):
+    m = kinsyn.Manipulator.from_file(UPS3)
+    with pytest.raises(kinsyn.InputError) as e:
+        m.view(steps=0)
+    assert str(e.value) == cli_error("view", str(UPS3), "--out", str(tmp_path / "v.html"), "--steps", "0")

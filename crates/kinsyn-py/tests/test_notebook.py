@@ -1,8 +1,9 @@
 """The notebook examples/python/tour.ipynb: it is the cells of examples/python/tour.py (as
-examples/python/make_notebook.py writes them, outputs cleared), it runs without a cell error in
-a fresh Python kernel (nbclient; the kernel ``python3`` of this interpreter, from ipykernel),
-and its result lines ``paper NNN: WHAT: kinsyn X, paper Y`` give the papers' values, written
-here from the papers:
+examples/python/make_notebook.py writes them), saved with its outputs (a table, a figure and the
+3D view, shown in the saved notebook and in its HTML rendering by nbconvert), it runs without a
+cell error in a fresh Python kernel (nbclient; the kernel ``python3`` of this interpreter, from
+ipykernel), and its result lines ``paper NNN: WHAT: kinsyn X, paper Y`` give the papers' values,
+written here from the papers:
 
 - 000 §5.1: the 3-UPS has 6 dof with every input free;
 - 001 §2: both end-effectors of the HEXA make the Schönflies motion, 4 dof;
@@ -38,28 +39,45 @@ PAPER_VALUES = {
 RESULT = re.compile(r"^paper (\d{3}): (.+?): kinsyn (\S+), paper (\S+)")
 
 
-def test_notebook_is_the_scripts_cells_without_outputs():
+def _rich_outputs(nb) -> dict:
+    """How many outputs of each kind the notebook shows: tables (HTML with a table), figures
+    (PNG images) and views (the kinsyn view's frame)."""
+    found = {"table": 0, "figure": 0, "view": 0}
+    for c in nb.cells:
+        if c.cell_type != "code":
+            continue
+        for o in c.outputs:
+            data = o.get("data", {})
+            html = data.get("text/html", "")
+            found["table"] += "<table" in html
+            found["figure"] += "image/png" in data
+            found["view"] += bool(re.search(r"<iframe[^>]*srcdoc=", html)) and "kinsyn-data" in html
+    return found
+
+
+def test_notebook_is_the_scripts_cells_with_their_outputs():
     sys.path.insert(0, str(EXAMPLES))
     try:
         import make_notebook
     finally:
         sys.path.remove(str(EXAMPLES))
-    want = make_notebook.text(make_notebook.notebook((EXAMPLES / "tour.py").read_text("utf-8")))
-    assert NOTEBOOK.read_text("utf-8") == want, "run python examples/python/make_notebook.py"
+    want = make_notebook.notebook((EXAMPLES / "tour.py").read_text("utf-8"))
     nb = nbformat.read(NOTEBOOK, as_version=4)
     nbformat.validate(nb)
-    assert all(not c.get("outputs") for c in nb.cells if c.cell_type == "code")
+    assert make_notebook.sources(nb) == make_notebook.sources(want), "run python examples/python/make_notebook.py"
+    assert sum(bool(c.get("outputs")) for c in nb.cells if c.cell_type == "code") >= 8, "cells saved without outputs"
+    found = _rich_outputs(nb)
+    assert all(found.values()), found
 
 
-def test_notebook_runs_and_gives_the_papers_values():
-    nb = nbformat.read(NOTEBOOK, as_version=4)
-    client = nbclient.NotebookClient(
-        nb,
-        kernel_name="python3",
-        timeout=600,
-        resources={"metadata": {"path": str(EXAMPLES)}},
-    )
-    client.execute()  # raises CellExecutionError on the first cell error
+def test_notebook_runs_and_gives_the_papers_values(tmp_path):
+    sys.path.insert(0, str(EXAMPLES))
+    try:
+        import make_notebook
+    finally:
+        sys.path.remove(str(EXAMPLES))
+    nb = make_notebook.notebook((EXAMPLES / "tour.py").read_text("utf-8"))
+    make_notebook.executed(nb)  # raises CellExecutionError on the first cell error
     errors = [o for c in nb.cells if c.cell_type == "code" for o in c.outputs if o.output_type == "error"]
     assert not errors, errors
     lines = [
@@ -81,3 +99,12 @@ def test_notebook_runs_and_gives_the_papers_values():
         assert int(printed) == value, (key, printed)
         assert int(kinsyn_value) == value, (key, kinsyn_value)
     assert {k[0] for k in found} == {"000", "001", "002", "003", "004"}
+
+    # Written with its outputs, and rendered as HTML: the table, the figure and the view show.
+    assert all(_rich_outputs(nb).values()), _rich_outputs(nb)
+    nbconvert = pytest.importorskip("nbconvert")
+    html, _ = nbconvert.HTMLExporter().from_notebook_node(nb)
+    (tmp_path / "tour.html").write_text(html, encoding="utf-8")
+    assert "<table" in html
+    assert "data:image/png;base64," in html
+    assert re.search(r"<iframe[^>]*srcdoc=", html) and "kinsyn-data" in html
