@@ -327,19 +327,31 @@ impl Manipulator {
 
     /// `kinsyn view FILE [--inputs I] --steps N [--no-assemblies] --seed S`: the 3D page, as
     /// HTML text (docs/view.md).
-    #[pyo3(signature = (inputs = None, steps = 16, assemblies = true, seed = 1))]
+    #[pyo3(signature = (inputs = None, steps = 16, assemblies = true, components = false,
+                        free_inputs = false, max_paths = kinsyn::homotopy::DEFAULT_DECOMPOSE_PATHS,
+                        seed = 1))]
+    #[expect(
+        clippy::too_many_arguments,
+        reason = "the options of `kinsyn view`, by keyword"
+    )]
     fn view_html(
         &self,
         py: Python<'_>,
         inputs: Option<String>,
         steps: usize,
         assemblies: bool,
+        components: bool,
+        free_inputs: bool,
+        max_paths: u64,
         seed: u64,
     ) -> PyResult<String> {
         let options = kinsyn_report::view::ViewOptions {
             inputs,
             steps,
             assemblies,
+            components,
+            free_inputs,
+            max_paths,
             seed,
         };
         py.detach(|| {

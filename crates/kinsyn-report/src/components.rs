@@ -206,7 +206,7 @@ const MAX_PLACEMENT_TRIES: usize = 16;
 fn mechanism_on_components(
     m: &Manipulator,
     blocks: &[BlockModes],
-    held: &[usize],
+    held: &[(usize, f64)],
 ) -> Vec<Option<Result<ComponentMotion, String>>> {
     let parts: Vec<BlockPart<'_>> = blocks
         .iter()
@@ -514,7 +514,21 @@ fn manipulator_components(
     options: &ComponentsOptions,
     decompose: DecomposeSettings,
 ) -> Result<Components, Error> {
-    let m: Manipulator = load(path)?;
+    manipulator_components_of(load(path)?, &path.display().to_string(), options, decompose)
+}
+
+/// The operation modes of the manipulator `m` (named `source` in messages) as `kinsyn
+/// components FILE` finds them with `options` (the end-effector, inputs held or free) and the
+/// decomposition's `settings`.
+///
+/// # Errors
+/// As [`components_of`] for a manipulator file.
+pub fn manipulator_components_of(
+    m: Manipulator,
+    source: &str,
+    options: &ComponentsOptions,
+    decompose: DecomposeSettings,
+) -> Result<Components, Error> {
     let m = match &options.body {
         None => m,
         Some(name) => m
@@ -551,15 +565,10 @@ fn manipulator_components(
         m.block_operation_modes_with_progress(&inputs, &settings, progress)
     })
     .map_err(|e| match e {
-        OperationModeError::Decompose(e) => {
-            refusal(&path.display().to_string(), options.method, None, &e)
-        }
-        other @ OperationModeError::System(_) => {
-            Error::Input(format!("{}: {other}", path.display()))
-        }
+        OperationModeError::Decompose(e) => refusal(source, options.method, None, &e),
+        other @ OperationModeError::System(_) => Error::Input(format!("{source}: {other}")),
     })?;
     let inputs = input_texts(&m, &held);
-    let held: Vec<usize> = held.iter().map(|(a, _)| *a).collect();
     let mechanism = mechanism_on_components(&m, &blocks, &held);
     Ok(Components {
         options: options.clone(),

@@ -4,7 +4,9 @@
 //! compute them.
 
 use crate::Error;
+use crate::components::{ComponentsOptions, Decomposed, manipulator_components_of};
 use crate::manipulator::{all_assemblies_of, input_texts, inputs_or_reference};
+use kinsyn::homotopy::{DEFAULT_DECOMPOSE_PATHS, DecomposeSettings};
 use kinsyn::manipulator::{Manipulator, PositionRequest};
 use kinsyn::mechanism::SampleSettings;
 use kinsyn::notation::Primitive;
@@ -32,6 +34,13 @@ pub struct ViewOptions {
     pub steps: usize,
     /// Whether to solve for every assembly at the inputs.
     pub assemblies: bool,
+    /// Whether to add the operation modes of the global decomposition (`kinsyn components`):
+    /// at the inputs, or with `free_inputs` over input and pose space.
+    pub components: bool,
+    /// With `components`: every input an unknown.
+    pub free_inputs: bool,
+    /// With `components`: the most paths the decomposition tracks (`--max-paths`).
+    pub max_paths: u64,
     /// The seed of the sampled modes and of the assembly solve.
     pub seed: u64,
 }
@@ -42,6 +51,9 @@ impl Default for ViewOptions {
             inputs: None,
             steps: DEFAULT_STEPS,
             assemblies: true,
+            components: false,
+            free_inputs: false,
+            max_paths: DEFAULT_DECOMPOSE_PATHS,
             seed: 1,
         }
     }
@@ -61,6 +73,14 @@ pub fn view_of(m: &Manipulator, options: &ViewOptions) -> Result<View, Error> {
         )));
     }
     let inputs = inputs_or_reference(m, options.inputs.as_deref())?;
+    let mut notes = Vec::new();
+    // The decomposition first: where the inputs leave a self-motion, its real point is the
+    // start the continuation cannot give.
+    let found = if options.components {
+        components(m, options, &mut notes)?
+    } else {
+        Vec::new()
+    };
     let start = match options.inputs.as_deref() {
         None => m.reference(),
         Some(text) => {
@@ -68,16 +88,24 @@ pub fn view_of(m: &Manipulator, options: &ViewOptions) -> Result<View, Error> {
                 inputs: inputs.clone(),
                 ..PositionRequest::default()
             };
-            m.solve_position(&m.reference(), &request)
-                .map_err(|e| Error::Input(format!("--inputs {text:?}: {e}")))?
-                .q
+            match m.solve_position(&m.reference(), &request) {
+                Ok(p) => p.q,
+                Err(e) => match found.first() {
+                    Some(mode) => {
+                        notes.push(format!(
+                            "The start is a point of the first component shown: at these inputs {e}."
+                        ));
+                        mode.joint_values[mode.start].clone()
+                    }
+                    None => return Err(Error::Input(format!("--inputs {text:?}: {e}"))),
+                },
+            }
         }
     };
     let settings = SampleSettings {
         seed: options.seed,
         ..SampleSettings::default()
     };
-    let mut notes = Vec::new();
     let free = m.mode_from(&start, &[], &settings);
     let classification = format!(
         "With every input free the end-effector has {} dof: {}.",
@@ -93,7 +121,8 @@ pub fn view_of(m: &Manipulator, options: &ViewOptions) -> Result<View, Error> {
             input_sweep(m, &start, a, span, options.steps)
         })
         .collect();
-    let modes = modes(m, &start, &settings, options.steps, &mut notes);
+    let mut modes = modes(m, &start, &settings, options.steps, &mut notes);
+    modes.extend(found);
     let assemblies = if options.assemblies {
         assemblies(m, options, &mut notes)
     } else {
@@ -170,6 +199,65 @@ fn modes(
     out
 }
 
+/// One walk per component of the global decomposition (`kinsyn components`) that has a real
+/// point at which the mechanism can be placed and moves there: from that point, with the held
+/// inputs locked. The decomposition's refusal (past its path limit) is an input error: it was
+/// asked for.
+fn components(
+    m: &Manipulator,
+    options: &ViewOptions,
+    notes: &mut Vec<String>,
+) -> Result<Vec<ModeView>, Error> {
+    let asked = ComponentsOptions {
+        seed: options.seed,
+        method: kinsyn::manipulator::DecompositionMethod::default(),
+        inputs: options.inputs.clone(),
+        free_inputs: options.free_inputs,
+        free: None,
+        body: None,
+        max_paths: options.max_paths,
+    };
+    let settings = DecomposeSettings {
+        seed: options.seed,
+        max_paths: options.max_paths,
+        ..DecomposeSettings::default()
+    };
+    let found = manipulator_components_of(m.clone(), m.name(), &asked, settings)
+        .map_err(|e| Error::Input(format!("--components: {e}")))?;
+    let Decomposed::Manipulator { mechanism, .. } = &found.decomposed else {
+        return Ok(Vec::new());
+    };
+    let mut out = Vec::new();
+    let (mut complex, mut unplaced) = (0, 0);
+    for (k, on) in mechanism.iter().enumerate() {
+        match on {
+            None => complex += 1,
+            Some(Err(_)) => unplaced += 1,
+            Some(Ok(c)) if c.mode.dof > 0 => {
+                let walk = mode_walk(m, &c.q, &c.held, options.steps);
+                out.push(ModeView {
+                    source: format!("components: component {}", k + 1),
+                    locks: m.lock_text(&c.held),
+                    pattern: c.mode.pattern_text(),
+                    dof: c.mode.dof,
+                    group: c.mode.group,
+                    parameters: c.mode.parameters.clone(),
+                    joint_values: walk.joint_values,
+                    start: walk.start,
+                    stops: walk.stops,
+                });
+            }
+            Some(Ok(_)) => {}
+        }
+    }
+    if complex + unplaced > 0 {
+        notes.push(format!(
+            "Components not animated: {complex} without a real point, {unplaced} where the mechanism could not be placed."
+        ));
+    }
+    Ok(out)
+}
+
 /// The real assemblies at the view's inputs as joint values, or none with a note saying why.
 fn assemblies(
     m: &Manipulator,
@@ -186,7 +274,7 @@ fn assemblies(
     let mut out = Vec::new();
     let mut missed = 0;
     for (k, a) in all.assemblies.iter().enumerate() {
-        match m.assemble_at_frames(&a.frames) {
+        match m.assemble_at_frames(&a.frames, &all.inputs) {
             Ok(q) => out.push(AssemblyView {
                 label: format!("assembly {}", k + 1),
                 certified: a.certified,

@@ -433,7 +433,7 @@ pub(super) enum Command {
     /// motion), and every real assembly at the inputs. kinsyn computes every configuration
     /// before writing the page; it needs no network and no server.
     #[command(
-        after_help = "Examples:\n  kinsyn view mechanisms/3-ups.json --out 3-ups.html\n  kinsyn view mechanisms/6-ups.json --out 6-ups.html --inputs 'P1.3=0.05,P2.3=0.02' --steps 24\n  kinsyn view mechanisms/6-ruu-hexa.json --out hexa.html --no-assemblies"
+        after_help = "Examples:\n  kinsyn view mechanisms/3-ups.json --out 3-ups.html\n  kinsyn view mechanisms/6-ups.json --out 6-ups.html --inputs 'P1.3=0.05,P2.3=0.02' --steps 24\n  kinsyn view mechanisms/6-ruu-hexa.json --out hexa.html --no-assemblies\n  kinsyn view mechanisms/4-ruu.json --out 4-ruu.html --inputs 'R1.1=180,R2.1=0,R3.1=-90,R4.1=90' --components"
     )]
     View {
         /// The manipulator description (kinsyn-manipulator/1 or /2).
@@ -454,6 +454,17 @@ pub(super) enum Command {
         /// Do not solve for every assembly at the inputs (the global analysis).
         #[arg(long)]
         no_assemblies: bool,
+        /// Add the operation modes and self-motions of the global decomposition (as `kinsyn
+        /// components`): each component with a real point is animated from there, its held
+        /// inputs locked.
+        #[arg(long)]
+        components: bool,
+        /// With --components: every input an unknown (the modes over input and pose space).
+        #[arg(long, requires = "components", conflicts_with = "inputs")]
+        free_inputs: bool,
+        /// With --components: the most paths the decomposition may track.
+        #[arg(long, requires = "components", default_value_t = kinsyn::homotopy::DEFAULT_DECOMPOSE_PATHS)]
+        max_paths: u64,
         /// Seed of the sampled modes and of the assembly solve.
         #[arg(long, default_value_t = 1)]
         seed: u64,

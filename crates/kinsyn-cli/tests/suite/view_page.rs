@@ -310,8 +310,9 @@ fn view_refuses_bad_requests_in_one_line() {
     );
 }
 
-/// Every committed description: the page loads without errors, the mechanism is on screen at
-/// the start and along its first mode, where kinsyn puts it. About 2 minutes (the HEXA's modes
+/// Every committed description: the page loads without errors, draws (a screenshot that is not
+/// blank), and the mechanism is on screen at the start and along its first mode, where kinsyn
+/// puts it. About 2 minutes (the HEXA's modes
 /// and the 4-RRR's).
 #[test]
 #[ignore = "every committed description in Chromium: about 2 minutes"]
@@ -349,5 +350,86 @@ fn every_committed_description_has_a_view_that_loads_and_agrees_with_kinsyn() {
         );
         assert_same_frame(&m, &start, &shown[0], file);
         assert_same_frame(&m, &q, &shown[1], &format!("{file} mode 0"));
+        let png = dir.path().join(format!("{page}.png"));
+        screenshot(&chromium, &url(dir.path(), &page), &png);
+        let share = drawn_share(&png);
+        assert!(share > 0.01, "{file}: the canvas is blank ({share})");
+    }
+}
+
+#[test]
+fn the_view_animates_the_self_motions_of_the_global_decomposition() {
+    // Paper 004's 4-RUU at Fig. 13's inputs (absolute cranks 90°, 0°, 0°, 90°): its
+    // decomposition (docs/operation-modes.md, `ruu_self_motions`) has a self-motion of the third
+    // mode (1 dof, the platform turning) and two 1-dof translations in K2 with real points, and
+    // complex curves in K1. The page animates each real one with every input held, and shows it
+    // where kinsyn puts it.
+    let dir = tempfile::tempdir().unwrap();
+    let file = "mechanisms/4-ruu.json";
+    let (page, data) = write_view(
+        file,
+        dir.path(),
+        &[
+            "--steps",
+            "4",
+            "--no-assemblies",
+            "--components",
+            "--inputs",
+            "R1.1=180,R2.1=0,R3.1=-90,R4.1=90",
+        ],
+    );
+    let m = manipulator(file);
+    let inputs: Vec<usize> = m.actuators().iter().map(|a| a.joint).collect();
+    let found: Vec<&Value> = data["modes"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|md| md["source"].as_str().unwrap().starts_with("components"))
+        .collect();
+    let mut patterns: Vec<&str> = found
+        .iter()
+        .map(|md| md["pattern"].as_str().unwrap())
+        .collect();
+    patterns.sort_unstable();
+    assert_eq!(patterns, ["0T1R", "1T0R", "1T0R"], "{found:?}");
+    let start = joint_values(&found[0]["joint_values"][0]);
+    let mut items = Vec::new();
+    let modes = data["modes"].as_array().unwrap();
+    for md in &found {
+        assert_eq!(md["locks"], "R1.1 R2.1 R3.1 R4.1");
+        let frames: Vec<Vec<f64>> = md["joint_values"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(joint_values)
+            .collect();
+        assert_eq!(frames.len(), 9);
+        for q in &frames {
+            assert!(m.mechanism().closure_residual(q).amax() < 1e-9);
+            for &j in &inputs {
+                assert!(
+                    (q[j] - start[j]).abs() < 1e-9,
+                    "an input moved on a self-motion"
+                );
+            }
+        }
+        assert!(
+            (m.point(&frames[0]) - m.point(&frames[8])).norm() > 1e-3 * m.mechanism().scale()
+                || (m
+                    .platform_frame(&frames[0])
+                    .rotation
+                    .angle_to(&m.platform_frame(&frames[8]).rotation))
+                    > 1e-3,
+            "the self-motion does not move the platform"
+        );
+        let k = modes.iter().position(|x| std::ptr::eq(x, *md)).unwrap();
+        items.push(format!("mode:{k}:8"));
+    }
+    let Some(chromium) = chromium("the view test") else {
+        return;
+    };
+    let shown = states(&chromium, dir.path(), &page, &items);
+    for (md, s) in found.iter().zip(&shown) {
+        assert_same_frame(&m, &joint_values(&md["joint_values"][8]), s, "self-motion");
     }
 }

@@ -496,17 +496,32 @@ class Manipulator:
         _warn(r)
         return Assemblies._from_report(r)
 
-    def view(self, inputs: Inputs = None, steps: int = 16, assemblies: bool = True, seed: int = 1) -> "View":
+    def view(
+        self,
+        inputs: Inputs = None,
+        steps: int = 16,
+        assemblies: bool = True,
+        components: bool = False,
+        free_inputs: bool = False,
+        max_paths: int = 65536,
+        seed: int = 1,
+    ) -> "View":
         """The 3D view of the manipulator (``kinsyn view FILE --out PAGE.html``, docs/view.md):
         a self-contained page with a slider per input (swept ``steps`` steps to either side,
         the other inputs held), an animation of each operation mode reached by locking inputs,
-        and every real assembly at ``inputs`` (unless ``assemblies`` is false). Shown inline in
+        every real assembly at ``inputs`` (unless ``assemblies`` is false) and, with
+        ``components``, each component of the global decomposition (``kinsyn components``; over
+        input and pose space with ``free_inputs``, within ``max_paths`` paths). Shown inline in
         Jupyter; ``View.save(path)`` writes the page."""
-        return View(self._m.view_html(_inputs_text(inputs), steps, assemblies, seed))
+        return View(
+            self._m.view_html(
+                _inputs_text(inputs), steps, assemblies, components, free_inputs, max_paths, seed
+            )
+        )
 
-    def show(self, inputs: Inputs = None, steps: int = 16, assemblies: bool = True, seed: int = 1) -> "View":
+    def show(self, *args: Any, **kwargs: Any) -> "View":
         """The same as :meth:`view`: in Jupyter, the last expression of a cell is displayed."""
-        return self.view(inputs, steps, assemblies, seed)
+        return self.view(*args, **kwargs)
 
     def __repr__(self) -> str:
         return repr(self._m)

@@ -134,5 +134,12 @@ class Manipulator:
     ) -> str: ...
     def assemblies_json(self, inputs: Optional[str] = None, seed: int = 2026) -> str: ...
     def view_html(
-        self, inputs: Optional[str] = None, steps: int = 16, assemblies: bool = True, seed: int = 1
+        self,
+        inputs: Optional[str] = None,
+        steps: int = 16,
+        assemblies: bool = True,
+        components: bool = False,
+        free_inputs: bool = False,
+        max_paths: int = 65536,
+        seed: int = 1,
     ) -> str: ...

@@ -60,6 +60,10 @@ pub enum ComponentMotionError {
 /// The random starts of a leg's inverse kinematics ([`Manipulator::leg_joint_values`]).
 const LEG_STARTS: usize = 32;
 
+/// An input is at its value when within this of it (radians; lengths over the mechanism's
+/// scale), a revolute's value taken modulo a turn.
+const INPUT_TOLERANCE: f64 = 1e-7;
+
 /// A rate below this (radians, or lengths over the mechanism's scale, per unit of an
 /// orthonormal basis of dimensionless joint rates) is a joint that does not move.
 pub const MOVING_TOLERANCE: f64 = 1e-6;
@@ -102,9 +106,13 @@ impl Manipulator {
     }
 
     /// The joint values that put every moving body at `frames` (in [`Manipulator::bodies`]
-    /// order, ground frame): by continuation from the reference when it reaches them, else
-    /// leg by leg — with every body placed, each leg's joints solve its own inverse kinematics
-    /// ([`Manipulator::leg_joint_values`]) — and the loops closed by Newton's method from there.
+    /// order, ground frame) with the `inputs` (actuator index, value) at their values: by
+    /// continuation from the reference when it reaches them with those inputs, else leg by
+    /// leg — with every body placed, each leg's joints solve its own inverse kinematics with
+    /// its inputs fixed ([`Manipulator::leg_joint_values`]) — and the loops closed by Newton's
+    /// method from there, the inputs held. A leg's joints can reach its bodies' frames in
+    /// several ways (an RUU's crank in two positions over one pose): the inputs choose the one
+    /// the frames were found at.
     ///
     /// # Errors
     /// [`ComponentMotionError::Unreached`] when a leg cannot reach its bodies' frames,
@@ -112,30 +120,51 @@ impl Manipulator {
     pub fn assemble_at_frames(
         &self,
         frames: &[Displacement],
+        inputs: &[(usize, f64)],
     ) -> Result<Vec<f64>, ComponentMotionError> {
         let goal: Vec<(usize, Displacement)> = frames.iter().copied().enumerate().collect();
-        if let Ok(q) = self.solve_poses(&self.reference(), &goal) {
+        let at_inputs = |q: &[f64]| {
+            inputs.iter().all(|&(a, v)| {
+                let joint = self.actuators[a].joint;
+                match self.actuators[a].kind {
+                    Primitive::R => {
+                        let d = (q[joint] - v).rem_euclid(std::f64::consts::TAU);
+                        d.min(std::f64::consts::TAU - d) < INPUT_TOLERANCE
+                    }
+                    Primitive::P => (q[joint] - v).abs() < INPUT_TOLERANCE * self.mechanism.scale(),
+                }
+            })
+        };
+        if let Ok(q) = self.solve_poses(&self.reference(), &goal)
+            && at_inputs(&q)
+        {
             return Ok(q);
         }
         let index = |body: usize| self.bodies.iter().position(|b| b.body == body);
         let frame = |body: usize| index(body).map_or_else(crate::spatial::identity, |k| frames[k]);
         let mut q = self.reference();
         for (i, leg) in self.legs.iter().enumerate() {
+            let fixed: Vec<(usize, f64)> = inputs
+                .iter()
+                .filter(|&&(a, _)| self.actuators[a].leg == i)
+                .map(|&(a, v)| (self.actuators[a].position, v))
+                .collect();
             let values = self
-                .leg_joint_values(i, &frame(leg.from), &frame(leg.to))
+                .leg_joint_values(i, &frame(leg.from), &frame(leg.to), &fixed)
                 .ok_or(ComponentMotionError::Unreached { leg: i + 1 })?;
             q[leg.joints.clone()].copy_from_slice(&values);
         }
-        let unlocked = vec![false; q.len()];
+        let held: Vec<usize> = inputs.iter().map(|&(a, _)| a).collect();
         let all = self.poses_goal(&goal, &self.frames_at(&q, &goal), 1.0);
         self.mechanism
-            .assemble_to(&q, &unlocked, Some(&all))
+            .assemble_to(&q, &self.lock_mask(&held), Some(&all))
             .map_err(|e| ComponentMotionError::Assembly(e.into()))
     }
 
     /// The joint values of leg `i` (from the reference) that carry its last body to `to` when
-    /// its first body is at `from` (ground frames): damped Gauss–Newton on the product of the
-    /// joints' exponentials about their reference axes, from the reference and then from
+    /// its first body is at `from` (ground frames), the joints `fixed` (position in the leg,
+    /// value) at their values: damped Gauss–Newton on the product of the joints' exponentials
+    /// about their reference axes over the other joints, from the reference and then from
     /// seeded random values, until one reaches the frame to `1e-12` (rotation in radians,
     /// lengths over the mechanism's scale). A leg with an idle joint (an S–S rod's spin) has
     /// many; one is returned. `None` when no start reaches it.
@@ -145,6 +174,7 @@ impl Manipulator {
         i: usize,
         from: &Displacement,
         to: &Displacement,
+        fixed: &[(usize, f64)],
     ) -> Option<Vec<f64>> {
         use rand::{Rng, SeedableRng};
         let leg = &self.legs[i];
@@ -167,25 +197,32 @@ impl Manipulator {
             let t = crate::spatial::log(&(target.inverse() * product)).to_vector();
             nalgebra::DVector::from_fn(6, |k, _| if k < 3 { t[k] } else { t[k] / scale })
         };
+        let moving: Vec<usize> = (0..joints.len())
+            .filter(|k| fixed.iter().all(|&(f, _)| f != *k))
+            .collect();
         let solve = |mut q: Vec<f64>| -> Option<Vec<f64>> {
+            for &(k, v) in fixed {
+                q[k] = v;
+            }
             let h = 1e-7;
             for _ in 0..60 {
                 let r = residual(&q);
                 if r.amax() < 1e-12 {
                     return Some(q);
                 }
-                let jac = nalgebra::DMatrix::from_fn(6, q.len(), |row, col| {
+                let jac = nalgebra::DMatrix::from_fn(6, moving.len(), |row, col| {
                     let mut plus = q.clone();
                     let mut minus = q.clone();
-                    plus[col] += h;
-                    minus[col] -= h;
+                    plus[moving[col]] += h;
+                    minus[moving[col]] -= h;
                     (residual(&plus)[row] - residual(&minus)[row]) / (2.0 * h)
                 });
                 let jt = jac.transpose();
-                let normal = &jt * &jac + nalgebra::DMatrix::identity(q.len(), q.len()) * 1e-12;
+                let normal =
+                    &jt * &jac + nalgebra::DMatrix::identity(moving.len(), moving.len()) * 1e-12;
                 let step = normal.lu().solve(&(jt * r))?;
-                for (v, d) in q.iter_mut().zip(step.iter()) {
-                    *v -= d;
+                for (&k, d) in moving.iter().zip(step.iter()) {
+                    q[k] -= d;
                 }
             }
             (residual(&q).amax() < 1e-10).then_some(q)
@@ -208,7 +245,8 @@ impl Manipulator {
 
     /// The mechanism on a component (module documentation): the blocks `parts` (parents
     /// first), a real point of the component for some (`points`, `None`: the block at its
-    /// reference), the inputs `held` (indices into [`Manipulator::actuators`]) locked.
+    /// reference), the inputs `held` (index into [`Manipulator::actuators`], the value the
+    /// component was found at) locked at their values.
     ///
     /// # Errors
     /// A point that is no displacement, or frames the mechanism cannot be assembled at by
@@ -217,7 +255,7 @@ impl Manipulator {
         &self,
         parts: &[BlockPart<'_>],
         points: &[Option<&[f64]>],
-        held: &[usize],
+        held: &[(usize, f64)],
         settings: &SampleSettings,
     ) -> Result<ComponentMotion, ComponentMotionError> {
         let reference: Vec<Option<Vec<f64>>> = parts
@@ -234,9 +272,10 @@ impl Manipulator {
             .map(|(p, r)| p.or(r.as_deref()).unwrap_or(&[]))
             .collect();
         let frames = self.frames_of_blocks(parts, &chosen)?;
-        let q = self.assemble_at_frames(&frames)?;
-        let mode = self.mode_from(&q, held, settings);
-        let mask = self.lock_mask(held);
+        let q = self.assemble_at_frames(&frames, held)?;
+        let held: Vec<usize> = held.iter().map(|&(a, _)| a).collect();
+        let mode = self.mode_from(&q, &held, settings);
+        let mask = self.lock_mask(&held);
         let free: Vec<usize> = (0..mask.len()).filter(|&j| !mask[j]).collect();
         let rates = self.mechanism.mobility(&q, &mask).rates;
         let joints = self.mechanism.joints();
@@ -257,7 +296,7 @@ impl Manipulator {
             q,
             mode,
             moving,
-            held: held.to_vec(),
+            held,
         })
     }
 }

@@ -34,7 +34,7 @@ fn a_legs_joint_values_carry_its_body_to_the_frame_they_were_taken_from() {
             own[leg.joints.clone()].copy_from_slice(&q[leg.joints.clone()]);
             let to = m.body_frame(0, &own);
             let found = m
-                .leg_joint_values(i, &kinsyn::spatial::identity(), &to)
+                .leg_joint_values(i, &kinsyn::spatial::identity(), &to, &[])
                 .expect("the leg reaches a frame it was at");
             let mut back = m.reference();
             back[leg.joints.clone()].copy_from_slice(&found);
