@@ -162,3 +162,54 @@ fn on_the_rhombus_four_bars_folded_mode_the_crank_stays_still() {
         "the parallelogram, anti-parallelogram and C = A modes are found"
     );
 }
+
+#[test]
+fn the_mechanism_is_placed_at_the_inputs_its_frames_were_found_at() {
+    // Paper 004's 4-RUU: over one platform pose each RUU leg reaches with its crank in two
+    // positions. The configuration continued from the reference to generic inputs gives the
+    // platform's frame; placing the mechanism at that frame with those inputs must give back
+    // those inputs (modulo a turn) and that frame; with every crank a radian away from its
+    // value no leg reaches the frame (an RUU leg has five joints for six coordinates: with its
+    // crank held elsewhere its other four cannot make up the difference).
+    let text = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../mechanisms/4-ruu.json"
+    ))
+    .unwrap();
+    let m = Manipulator::from_json(&text).unwrap();
+    let inputs: Vec<(usize, f64)> = [0.35f64, -0.2, 0.15, -0.4]
+        .into_iter()
+        .enumerate()
+        .collect();
+    let request = kinsyn::manipulator::PositionRequest {
+        inputs: inputs.clone(),
+        ..Default::default()
+    };
+    let q0 = m.solve_position(&m.reference(), &request).unwrap().q;
+    let frames: Vec<_> = (0..m.bodies().len())
+        .map(|k| m.body_frame(k, &q0))
+        .collect();
+    let q = m.assemble_at_frames(&frames, &inputs).unwrap();
+    for &(a, v) in &inputs {
+        let d = (q[m.actuators()[a].joint] - v).rem_euclid(std::f64::consts::TAU);
+        assert!(
+            d.min(std::f64::consts::TAU - d) < 1e-7,
+            "input {a}: {}",
+            q[m.actuators()[a].joint]
+        );
+    }
+    for k in 0..m.bodies().len() {
+        let d = (m.body_frame(k, &q).to_homogeneous() - frames[k].to_homogeneous()).amax();
+        assert!(d < 1e-9, "body {k} off by {d:e}");
+    }
+    // Asked for other crank values, a placement either fails or holds them.
+    let other: Vec<(usize, f64)> = inputs.iter().map(|&(a, v)| (a, v + 1.0)).collect();
+    if let Ok(q) = m.assemble_at_frames(&frames, &other) {
+        for &(a, v) in &other {
+            assert!(
+                (q[m.actuators()[a].joint] - v).abs() < 1e-7,
+                "input {a} not held"
+            );
+        }
+    }
+}
