@@ -127,6 +127,19 @@ fn cases(f: &Fixtures) -> Vec<Case> {
             target: Target::File,
         },
         Case {
+            name: "view --out",
+            args: v(&[
+                "view",
+                "mechanisms/3-rrr-planar.json",
+                "--steps",
+                "1",
+                "--no-assemblies",
+                "--out",
+                "OUT",
+            ]),
+            target: Target::File,
+        },
+        Case {
             name: "catalogue generate",
             args: v(&["catalogue", "generate", "--out", "OUT"]),
             target: Target::Folder("chains.json"),

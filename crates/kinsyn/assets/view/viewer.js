@@ -320,9 +320,13 @@
     label.textContent = sw.input;
     row.append(label, input, value);
     if (sw.stops.length) {
+      // The range reached, in words; why each side stopped in the tooltip.
       const note = document.createElement('div');
       note.className = 'note';
-      note.textContent = sw.stops.map((st) => (st.side < 0 ? 'below' : 'above') + ': ' + st.reason).join('; ');
+      const last = sw.values.length - 1;
+      note.textContent = 'reached ' + format(sw.values[0]) + ' to ' + format(sw.values[last]) + ' ' + sw.unit +
+        ': the continuation stops ' + sw.stops.map((st) => (st.side < 0 ? 'below' : 'above')).join(' and ');
+      note.title = sw.stops.map((st) => (st.side < 0 ? 'below: ' : 'above: ') + st.reason).join('\n');
       row.append(note);
     }
     document.getElementById('kinsyn-sliders').append(row);
