@@ -4,6 +4,8 @@
 //! generic vectors) drawn at a generic configuration, with one walk per minimal lock set of its
 //! lock table.
 //!
+//! - The joint symbols are sized by the spread of the joints' points (their RMS distance from
+//!   their centroid), the chain's own length.
 //! - The **bodies** are the ground, the links between consecutive primitive joints (a C's, U's
 //!   or S's intermediate bodies included) and the end link, the view's end-effector; its frame
 //!   is the ground frame moved to the last joint's point at the reference configuration.
@@ -30,14 +32,14 @@ use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 
 /// The steps of a lock set's walk to either side of its start.
-pub const CHAIN_WALK_STEPS: usize = 10;
+pub const CHAIN_WALK_STEPS: usize = 8;
 
 /// The length of a step of a lock set's walk (dimensionless joint rates: radians, prismatic
 /// values over the characteristic length): ±0.6 rad over the walk.
-pub const CHAIN_WALK_STEP: f64 = 0.06;
+pub const CHAIN_WALK_STEP: f64 = 0.075;
 
 /// The decimals the joint values of a chain's view keep.
-pub const DECIMALS: i32 = 5;
+pub const DECIMALS: i32 = 4;
 
 /// Why an entry's chain cannot be viewed (a damaged entry).
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -142,7 +144,7 @@ pub fn chain_view(
             format!("{p} ({} dof) with no joint locked", p.dof())
         });
     let end_point = chain.joints().last().map(|j| j.point).unwrap_or_default();
-    let scene = Scene::of_mechanism(
+    let mut scene = Scene::of_mechanism(
         &mech,
         Roles {
             name: format!("{} {}", entry.id, entry.notation),
@@ -157,6 +159,10 @@ pub fn chain_view(
             ),
         },
     );
+    // The revolutes of a chain may all share one point (a PPPS): the joint symbols are sized
+    // by the spread of every joint's point instead, the chain's own length.
+    let points: Vec<_> = chain.joints().iter().map(|j| j.point).collect();
+    scene.scale = crate::mechanism::characteristic_of(&points).1;
     Ok(View {
         format: FORMAT,
         scene,
@@ -253,8 +259,9 @@ fn scene_joints(entry: &Entry, chain: &SerialChain, mech: &Mechanism) -> Vec<Sce
         .collect()
 }
 
-/// `x` to [`DECIMALS`] decimals.
+/// `x` to [`DECIMALS`] decimals (zero without a sign).
 fn round(x: f64) -> f64 {
     let scale = 10f64.powi(DECIMALS);
-    (x * scale).round() / scale
+    // Adding +0 turns −0 into +0 and leaves every other value as it is.
+    (x * scale).round() / scale + 0.0
 }
