@@ -116,8 +116,8 @@ pub fn chain_view(
     let chain = entry
         .serial_chain(base_seed)
         .map_err(|source| ChainViewError::Chain { id: id(), source })?;
-    let mech =
-        serial_mechanism(&chain).map_err(|source| ChainViewError::Mechanism { id: id(), source })?;
+    let mech = serial_mechanism(&chain)
+        .map_err(|source| ChainViewError::Mechanism { id: id(), source })?;
     let n = chain.len();
     let mut rng = ChaCha8Rng::seed_from_u64(entry.sample_seed(base_seed));
     let start: Vec<f64> = random_configuration(&chain, &mut rng)

@@ -18,9 +18,7 @@ mod chain;
 mod page;
 mod scene;
 
-pub use animation::{
-    InputSweep, MAX_STEPS, Stop, WALK_STEP, Walk, input_sweep, mode_walk, walk,
-};
+pub use animation::{InputSweep, MAX_STEPS, Stop, WALK_STEP, Walk, input_sweep, mode_walk, walk};
 pub use chain::{
     CHAIN_WALK_STEP, CHAIN_WALK_STEPS, ChainViewError, DECIMALS, chain_view, serial_mechanism,
 };

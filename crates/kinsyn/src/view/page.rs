@@ -118,7 +118,10 @@ pub fn parts(view: &View, scripts: Scripts) -> ViewParts {
     }
     let licence = match scripts {
         Scripts::Inline => "this page's source".to_string(),
-        Scripts::Linked(at) => format!("<a href=\"{0}three-LICENSE.txt\">{0}three-LICENSE.txt</a>", escape(at)),
+        Scripts::Linked(at) => format!(
+            "<a href=\"{0}three-LICENSE.txt\">{0}three-LICENSE.txt</a>",
+            escape(at)
+        ),
     };
     let _ = writeln!(
         lists,

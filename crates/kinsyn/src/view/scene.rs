@@ -6,8 +6,8 @@
 
 use crate::manipulator::Manipulator;
 use crate::mechanism::Mechanism;
-use crate::spatial::Displacement;
 use crate::notation::Primitive;
+use crate::spatial::Displacement;
 use nalgebra::{Matrix3, SymmetricEigen, Vector3};
 use serde::Serialize;
 
@@ -274,11 +274,7 @@ fn joints_of(m: &Manipulator) -> Vec<SceneJoint> {
 
 /// Each run of prismatic joints in a leg is drawn evenly spaced between the revolutes around
 /// it (at the one revolute when the run ends the leg).
-fn place_sliders(
-    out: &mut [Option<SceneJoint>],
-    range: std::ops::Range<usize>,
-    mech: &Mechanism,
-) {
+fn place_sliders(out: &mut [Option<SceneJoint>], range: std::ops::Range<usize>, mech: &Mechanism) {
     let is_r = |k: usize| mech.joints()[k].kind == Primitive::R;
     let mut k = range.start;
     while k < range.end {
