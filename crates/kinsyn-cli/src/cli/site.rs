@@ -315,7 +315,7 @@ fn entry_page(e: &Entry, seed: u64) -> Result<String, CliError> {
 <div class="view-controls">
 <p class="legend">{LEGEND}</p>
 {controls}</div>
-<div hidden>
+<div hidden="hidden">
 {lists}</div>
 <figcaption>The chain in 3D: the leg chain of the numerical verification (the axes below at the reference configuration, a C, U or S on one point, generic offsets between joint letters) at a generic configuration. Drag to orbit, scroll to zoom, right-drag to pan. <em>animate</em> in the lock table moves the free joints with that lock set's joints held at their reference values.</figcaption>
 </figure>
