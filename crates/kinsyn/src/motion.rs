@@ -346,6 +346,19 @@ impl PatternName {
     pub fn is_group(&self) -> bool {
         matches!(self, PatternName::Group { .. })
     }
+
+    /// The degrees of freedom of the motion it names (a group's dimension, `n + m` for
+    /// `nTmR`).
+    #[must_use]
+    pub fn dof(&self) -> usize {
+        match *self {
+            PatternName::Group { kind, .. } => kind.dimension(),
+            PatternName::NonGroup {
+                translations,
+                rotations,
+            } => translations + rotations,
+        }
+    }
 }
 
 impl PatternName {

@@ -4,18 +4,22 @@
 //! its script only filters those facts the way [`kinsyn::catalogue::Catalogue::query`] does,
 //! with the pattern spellings and what each one covers decided here by the library
 //! ([`PatternQuery`]'s parser and [`PatternQuery::covers`]). Each entry has a page
-//! `entry/ID.html` with its facts, minimal lock sets and a schematic ([`kinsyn::schematic`]).
-//! Every file is written into DIR: no server, no network.
+//! `entry/ID.html` with its facts, minimal lock sets, a schematic ([`kinsyn::schematic`]) and
+//! a 3D view of its leg chain that animates each lock set's motion ([`kinsyn::view::chain_view`]);
+//! three.js and the viewer script are written once, beside `index.html`, and every entry page
+//! refers to them. Every file is written into DIR: no server, no network.
 
 use super::CliError;
 use super::args::Reading;
 use super::output::OutputFolder;
-use kinsyn::catalogue::{Catalogue, Entry};
+use kinsyn::catalogue::{Catalogue, Entry, VERIFICATION_SEED};
+use kinsyn::lockset::LockSet;
 use kinsyn::markup::{escape, json_in_html};
 use kinsyn::motion::{GroupKind, PatternName, PatternQuery};
 use kinsyn::schematic;
 use kinsyn::synthesis::tables;
 use kinsyn::verification::Verification;
+use kinsyn::view::{LEGEND, SCRIPT_FILES, Scripts, chain_view, parts};
 use rayon::prelude::*;
 use std::collections::{BTreeMap, BTreeSet};
 use std::fmt::Write as _;
@@ -31,14 +35,23 @@ const JS: &str = include_str!("site/site.js");
 /// first is written, and each is written whole ([`super::output`]).
 pub(super) fn site(out: &Path, force: bool, reading: &Reading) -> Result<String, CliError> {
     let cat = reading.catalogue()?;
+    let seed = cat.verification.map_or(VERIFICATION_SEED, |(_, seed)| seed);
     let mut files: Vec<(String, String)> = vec![
         ("site.css".into(), CSS.to_string()),
         ("site.js".into(), JS.to_string()),
         ("index.html".into(), index(&cat)),
     ];
-    for e in &cat.entries {
-        files.push((format!("entry/{}.html", e.id), entry_page(e)?));
-    }
+    files.extend(
+        SCRIPT_FILES
+            .iter()
+            .map(|(name, text)| ((*name).to_string(), (*text).to_string())),
+    );
+    let pages = cat
+        .entries
+        .par_iter()
+        .map(|e| Ok((format!("entry/{}.html", e.id), entry_page(e, seed)?)))
+        .collect::<Result<Vec<_>, CliError>>()?;
+    files.extend(pages);
     let folder = OutputFolder::check("--out", out, files.iter().map(|(name, _)| name), force)?;
     folder.create(&["entry"])?;
     // Each file is synced to the disk before its rename (a few ms each): written in
@@ -187,23 +200,12 @@ fn index(cat: &Catalogue) -> String {
     )
 }
 
-/// The dimension of a pattern's motion (its dof).
-fn dof(name: &PatternName) -> usize {
-    match *name {
-        PatternName::Group { kind, .. } => kind.dimension(),
-        PatternName::NonGroup {
-            translations,
-            rotations,
-        } => translations + rotations,
-    }
-}
-
-/// `entry/ID.html`.
+/// `entry/ID.html`; `seed` is the catalogue's verification seed (the chain's geometry).
 #[allow(
     clippy::too_many_lines,
     reason = "a page template: one line or three per fact, then the page's text"
 )]
-fn entry_page(e: &Entry) -> Result<String, CliError> {
+fn entry_page(e: &Entry, seed: u64) -> Result<String, CliError> {
     let picture = schematic::entry(e)
         .map_err(|err| CliError::Internal(format!("{}: cannot draw: {err}", e.id)))?;
     let mut facts = String::new();
@@ -276,6 +278,10 @@ fn entry_page(e: &Entry) -> Result<String, CliError> {
         fact("reading", &escape(&note));
     }
     let mut locks = String::new();
+    let rows = e.verification.as_ref().map(lock_rows).unwrap_or_default();
+    let view = chain_view(e, seed, &rows)
+        .map_err(|err| CliError::Internal(format!("cannot draw in 3D: {err}")))?;
+    let view = parts(&view, Scripts::Linked("../"));
     if let Some(v) = &e.verification {
         fact(
             "verification",
@@ -285,7 +291,7 @@ fn entry_page(e: &Entry) -> Result<String, CliError> {
                 escape(&v.summary())
             ),
         );
-        locks = lock_table(v);
+        locks = lock_table(&rows);
     } else {
         fact("verification", "not verified");
     }
@@ -304,6 +310,15 @@ fn entry_page(e: &Entry) -> Result<String, CliError> {
 <h1>{id} <code>{notation}</code></h1>
 </header>
 <main>
+<figure class="view">
+<div id="kinsyn-canvas"></div>
+<div class="view-controls">
+<p class="legend">{LEGEND}</p>
+{controls}</div>
+<div hidden="hidden">
+{lists}</div>
+<figcaption>The chain in 3D: the leg chain of the numerical verification (the axes below at the reference configuration, a C, U or S on one point, generic offsets between joint letters) at a generic configuration. Drag to orbit, scroll to zoom, right-drag to pan. <em>animate</em> in the lock table moves the free joints with that lock set's joints held at their reference values.</figcaption>
+</figure>
 <figure class="schematic">
 {picture}
 <figcaption>Base on the left, end link on the right; seen along y (x to the right, z up). P: a box on its guide (■ with a dot: along y). R: a circle when its axis is along y, two bars across its axis otherwise. C, U, S: their primitive joints on a shaded band, S as a ball. Numbers: positions in the word (the lock sets' numbers) and axes; colours and letters a, b, c: parallel groups; hatched and !: actuated.</figcaption>
@@ -311,36 +326,46 @@ fn entry_page(e: &Entry) -> Result<String, CliError> {
 <table class="facts">{facts}</table>
 <h2>Lock table</h2>
 <p>Each minimal lock set (joint positions in the word; - for none): the motion left with these joints locked, and its dof. Minimal sets only: no smaller set gives the same pattern; <code>kinsyn catalogue show {id} --lock SET</code> classifies any other set.</p>
-<table class="locks"><thead><tr><th>lock set</th><th>locked</th><th>dof</th><th>pattern</th></tr></thead><tbody>{locks}</tbody></table>
+<table class="locks"><thead><tr><th>lock set</th><th>locked</th><th>dof</th><th>pattern</th><th>motion</th></tr></thead><tbody>{locks}</tbody></table>
 </main>
-</body>
+{scripts}</body>
 </html>
 "#,
         id = escape(&e.id),
         notation = escape(&e.notation),
+        controls = view.controls,
+        lists = view.lists,
+        scripts = view.scripts,
     ))
 }
 
-/// The rows of an entry's lock table: each minimal lock set with its size, the dof and the
-/// pattern it leaves, fewest locks first.
-fn lock_table(v: &Verification) -> String {
-    let mut locks = String::new();
-    let mut rows: Vec<(usize, String, usize, &PatternName)> = v
+/// An entry's minimal lock sets with the pattern each leaves, in the lock table's order:
+/// fewest locks first, then by the set's text and the pattern. The 3D view's mode `k` is row
+/// `k`.
+fn lock_rows(v: &Verification) -> Vec<(LockSet, PatternName)> {
+    let mut rows: Vec<(LockSet, PatternName)> = v
         .patterns
         .iter()
-        .flat_map(|(name, sets)| {
-            sets.iter()
-                .map(move |l| (l.len(), l.to_string(), dof(name), name))
-        })
+        .flat_map(|(name, sets)| sets.iter().map(move |l| (*l, *name)))
         .collect();
-    rows.sort_by(|a, b| (a.0, &a.1, a.3).cmp(&(b.0, &b.1, b.3)));
-    for (n, set, dof, name) in rows {
+    rows.sort_by_cached_key(|(l, name)| (l.len(), l.to_string(), *name));
+    rows
+}
+
+/// The rows of an entry's lock table: each minimal lock set with its size, the dof and the
+/// pattern it leaves, and a link that animates its motion in the 3D view (mode `k` of row `k`).
+fn lock_table(rows: &[(LockSet, PatternName)]) -> String {
+    let mut locks = String::new();
+    for (k, (set, name)) in rows.iter().enumerate() {
         let _ = write!(
             locks,
-            r#"<tr class="{}"><td><code>{}</code></td><td>{n}</td><td>{dof}</td><td>{}</td></tr>"#,
+            r##"<tr class="{}"><td><code>{}</code></td><td>{}</td><td>{}</td><td>{}</td><td><a class="play" href="#play={k}" onclick="if (location.hash === this.hash) window.dispatchEvent(new HashChangeEvent('hashchange'))">{}</a></td></tr>"##,
             if name.is_group() { "group" } else { "nongroup" },
-            escape(&set),
-            escape(&name.to_string())
+            escape(&set.to_string()),
+            set.len(),
+            name.dof(),
+            escape(&name.to_string()),
+            if name.dof() == 0 { "show" } else { "animate" }
         );
     }
     locks

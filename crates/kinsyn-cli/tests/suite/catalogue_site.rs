@@ -1,7 +1,9 @@
 //! `kinsyn catalogue site`: the static site loaded in headless Chromium. The rows its index
 //! shows for a filter in the address are the rows of `kinsyn query` with the same options (an
 //! independent path: the query command against the page's script), and every entry page's
-//! schematic is well-formed XML (Chromium's XML parser) with one symbol per joint letter.
+//! schematic is well-formed XML (Chromium's XML parser) with one symbol per joint letter. An
+//! entry page's 3D view draws the entry's chain where kinsyn's forward kinematics
+//! (`SerialChain::forward`, Rust) puts it, along the animation of a lock set of its lock table.
 //!
 //! Chromium is required in CI (`CI` set; `.ci/run` sets it and installs Chromium): without it
 //! the test fails there. Elsewhere a missing Chromium prints a notice and the test passes, like
@@ -9,8 +11,13 @@
 
 use crate::common;
 
-use common::browser::{chromium, dump_dom, url};
+use common::browser::{Screenshot, chromium, dump_dom, numbers, screenshot, url, view_states};
 use common::{kinsyn, stdout};
+use kinsyn::catalogue::{Catalogue, VERIFICATION_SEED};
+use kinsyn::chain::SerialChain;
+use kinsyn::lockset::LockSet;
+use serde_json::Value;
+use std::path::Path;
 
 /// The site, built by the binary into a temporary folder.
 fn build_site() -> tempfile::TempDir {
@@ -194,4 +201,158 @@ fn every_schematic_is_well_formed_xml_with_one_symbol_per_joint_letter() {
     std::fs::write(&broken, doc.replacen("</g>", "", 1)).unwrap();
     let dom = dump_dom(&chromium, &url(site.path(), "broken.xhtml"));
     assert!(dom.contains("parsererror"));
+}
+
+/// The data of the 3D view an entry page carries.
+fn view_data(site: &Path, id: &str) -> (String, Value) {
+    let page = std::fs::read_to_string(site.join(format!("entry/{id}.html"))).unwrap();
+    let json = between(
+        &page,
+        "<script type=\"application/json\" id=\"kinsyn-data\">",
+        "</script>",
+    );
+    assert_eq!(json.len(), 1, "{id}: one view");
+    let data = serde_json::from_str(json[0]).expect("the view's data is JSON");
+    (page, data)
+}
+
+/// The page's end-effector frame (`state`, computed by its script from joint values `q`) is the
+/// chain's end link frame by kinsyn's forward kinematics, to 1e-9.
+fn assert_chain_frame(chain: &SerialChain, q: &[f64], state: &Value, what: &str) {
+    let g = chain.forward(q);
+    let origin = chain.joints().last().unwrap().point;
+    let expected = g * nalgebra::Point3::from(origin);
+    let position = numbers(&state["end_effector_position"]);
+    for (i, p) in position.iter().enumerate() {
+        let d = (p - expected[i]).abs();
+        assert!(
+            d <= 1e-9 * (1.0 + expected.coords.norm()),
+            "{what}: position {i} off by {d:e}"
+        );
+    }
+    let rotation = numbers(&state["end_effector_rotation"]);
+    let r = g.rotation.matrix();
+    for k in 0..9 {
+        let d = (rotation[k] - r[(k / 3, k % 3)]).abs();
+        assert!(d <= 1e-9, "{what}: rotation {k} off by {d:e}");
+    }
+}
+
+/// The canvas on an entry page's screenshot (1200 × 800): below the title, 420 pixels high.
+const CANVAS_COLUMNS: std::ops::Range<usize> = 40..1140;
+const CANVAS_ROWS: std::ops::Range<usize> = 130..520;
+
+#[test]
+#[allow(clippy::too_many_lines, reason = "one scenario per entry, in order")]
+fn entry_pages_draw_the_chain_in_3d_and_animate_each_lock_set_where_kinsyn_puts_it() {
+    let Some(chromium) = chromium("the catalogue site test") else {
+        return;
+    };
+    let site = build_site();
+    let cat = Catalogue::committed().unwrap();
+    let seed = cat.verification.map_or(VERIFICATION_SEED, |(_, seed)| seed);
+    // An RRRRRR with an S and a U, a PPPRRR with a C and a U, the first PRRRRR.
+    let prrrrr = cat.entries.iter().find(|e| e.family == "PRRRRR").unwrap();
+    for id in ["T7-002", "T1-002", prrrrr.id.as_str()] {
+        let entry = cat.entries.iter().find(|e| e.id == id).unwrap();
+        let chain = entry.serial_chain(seed).unwrap();
+        let (page, data) = view_data(site.path(), id);
+        // The scene is the chain of the verification: its joints' axes and points.
+        let joints = data["scene"]["joints"].as_array().unwrap();
+        assert_eq!(joints.len(), chain.len(), "{id}");
+        for (j, k) in joints.iter().zip(chain.joints()) {
+            let (axis, point) = (numbers(&j["axis"]), numbers(&j["point"]));
+            for i in 0..3 {
+                assert!((axis[i] - k.axis[i]).abs() < 1e-12, "{id}: axis");
+                assert!((point[i] - k.point[i]).abs() < 1e-12, "{id}: point");
+            }
+        }
+        // One mode per row of the lock table, in its order, named by the row's lock set.
+        let table = between(&page, "<table class=\"locks\">", "</table>")[0];
+        let sets: Vec<&str> = between(table, "<tr class=\"", "</code>")
+            .into_iter()
+            .map(|row| &row[row.find("<code>").unwrap() + 6..])
+            .collect();
+        let modes = data["modes"].as_array().unwrap();
+        let locks: Vec<&str> = modes.iter().map(|m| m["locks"].as_str().unwrap()).collect();
+        assert_eq!(locks, sets, "{id}");
+        let links: Vec<&str> = between(table, "href=\"#play=", "\"");
+        let expected: Vec<String> = (0..modes.len()).map(|k| k.to_string()).collect();
+        assert_eq!(links, expected, "{id}: a link per row");
+        // The start is generic (not the reference), and shown where kinsyn puts it.
+        let start = numbers(&data["start"]);
+        assert!(
+            start.iter().any(|v| v.abs() > 1e-3),
+            "{id}: the start is the reference"
+        );
+        // A lock set that locks some joints and leaves motion: its walk, end to end.
+        let (k, mode) = modes
+            .iter()
+            .enumerate()
+            .find(|(_, m)| m["locks"] != "-" && m["dof"].as_u64().unwrap() > 0)
+            .unwrap();
+        let set: LockSet = mode["locks"].as_str().unwrap().parse().unwrap();
+        let walk: Vec<Vec<f64>> = mode["joint_values"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(numbers)
+            .collect();
+        assert!(walk.len() > 2, "{id}: the walk of {set} does not move");
+        for q in &walk {
+            for j in set.joints() {
+                // Exactly zero, the reference value, at every frame.
+                assert!(
+                    q[j - 1].to_bits() == 0f64.to_bits(),
+                    "{id} {set}: joint {j} is not held at its reference"
+                );
+            }
+        }
+        let last = walk.len() - 1;
+        let frames = [
+            0,
+            usize::try_from(mode["start"].as_u64().unwrap()).unwrap(),
+            last / 3,
+            last,
+        ];
+        let mut items = vec!["start:0".to_string()];
+        items.extend(frames.iter().map(|f| format!("mode:{k}:{f}")));
+        let shown = view_states(&chromium, site.path(), &format!("entry/{id}.html"), &items);
+        assert_chain_frame(&chain, &start, &shown[0], &format!("{id} start"));
+        for (f, state) in frames.iter().zip(&shown[1..]) {
+            assert_chain_frame(&chain, &walk[*f], state, &format!("{id} {set} frame {f}"));
+        }
+        // The end link moves along the walk (dof > 0): kinsyn's frames at its two ends.
+        let (a, b) = (chain.forward(&walk[0]), chain.forward(&walk[last]));
+        let moved = (a.translation.vector - b.translation.vector).norm()
+            + (a.rotation.matrix() - b.rotation.matrix()).norm();
+        assert!(
+            moved > 1e-2,
+            "{id} {set}: the end link does not move ({moved:e})"
+        );
+        // Drawn: the canvas is not blank, and it changes between the walk's two ends.
+        let dir = tempfile::tempdir().unwrap();
+        let shots: Vec<Screenshot> = [0, last]
+            .iter()
+            .map(|f| {
+                let png = dir.path().join(format!("{f}.png"));
+                let address = format!(
+                    "{}#mode={k}&frame={f}",
+                    url(site.path(), &format!("entry/{id}.html"))
+                );
+                screenshot(&chromium, &address, &png);
+                Screenshot::read(&png)
+            })
+            .collect();
+        let share = shots[0].drawn_share(CANVAS_COLUMNS, CANVAS_ROWS);
+        assert!(share > 1e-3, "{id}: the canvas is blank ({share})");
+        let changed = CANVAS_ROWS
+            .flat_map(|y| CANVAS_COLUMNS.map(move |x| (x, y)))
+            .filter(|&(x, y)| shots[0].at(x, y) != shots[1].at(x, y))
+            .count();
+        assert!(
+            changed > 50,
+            "{id} {set}: the drawing does not move ({changed} pixels)"
+        );
+    }
 }

@@ -8,7 +8,7 @@
 
 use crate::common;
 
-use common::browser::{chromium, dump_dom, screenshot, url};
+use common::browser::{Screenshot, chromium, numbers, screenshot, url, view_states as states};
 use common::{assert_refused, kinsyn, stdout};
 use kinsyn::manipulator::Manipulator;
 use serde_json::Value;
@@ -36,39 +36,6 @@ fn write_view(file: &str, dir: &Path, extra: &[&str]) -> (String, Value) {
     let rest = &html[start..];
     let json = &rest[rest.find('>').unwrap() + 1..rest.find("</script>").unwrap()];
     (name, serde_json::from_str(json).expect("the data is JSON"))
-}
-
-/// The page's states after it loaded and showed each of `items` in turn (`mode:K:F`,
-/// `sweep:K:F`, `assembly:K`, `start:0`): none with an error, the mechanism on screen in each.
-fn states(chromium: &Path, dir: &Path, page: &str, items: &[String]) -> Vec<Value> {
-    let hash = format!("check={}", items.join(","));
-    let dom = dump_dom(chromium, &format!("{}#{hash}", url(dir, page)));
-    let start = dom
-        .find("<pre id=\"kinsyn-checks\">")
-        .expect("the checks element")
-        + 24;
-    let text = &dom[start..start + dom[start..].find("</pre>").unwrap()];
-    let states: Vec<Value> =
-        serde_json::from_str(&text.replace("&quot;", "\"").replace("&amp;", "&"))
-            .unwrap_or_else(|e| panic!("{page}#{hash}: checks {text:?}: {e}"));
-    assert_eq!(states.len(), items.len(), "{page}#{hash}");
-    for (s, item) in states.iter().zip(items) {
-        assert_eq!(s["errors"], Value::Array(vec![]), "{page} {item}: errors");
-        assert_eq!(
-            s["bounding_box_on_screen"],
-            Value::Bool(true),
-            "{page} {item}: the mechanism is off screen"
-        );
-    }
-    states
-}
-
-fn numbers(v: &Value) -> Vec<f64> {
-    v.as_array()
-        .unwrap()
-        .iter()
-        .map(|x| x.as_f64().unwrap())
-        .collect()
 }
 
 /// The page's end-effector frame equals kinsyn's at joint values `q`, to 1e-9 relative
@@ -99,24 +66,8 @@ fn manipulator(file: &str) -> Manipulator {
 
 /// The share of the canvas (the page's left part) whose pixels differ from the background.
 fn drawn_share(png: &Path) -> f64 {
-    let decoder = png::Decoder::new(std::io::BufReader::new(std::fs::File::open(png).unwrap()));
-    let mut reader = decoder.read_info().unwrap();
-    let mut buf = vec![0; reader.output_buffer_size()];
-    let info = reader.next_frame(&mut buf).unwrap();
-    let channels = info.line_size / info.width as usize;
-    let (w, h) = (info.width as usize, info.height as usize);
-    let canvas = w * 6 / 10;
-    let mut drawn = 0usize;
-    for y in 0..h {
-        for x in 0..canvas {
-            let p = &buf[y * info.line_size + x * channels..][..3];
-            let background = [0xf8u8, 0xf9, 0xfa];
-            if p.iter().zip(background).any(|(a, b)| a.abs_diff(b) > 40) {
-                drawn += 1;
-            }
-        }
-    }
-    drawn as f64 / (canvas * h) as f64
+    let image = Screenshot::read(png);
+    image.drawn_share(0..image.width * 6 / 10, 0..image.height)
 }
 
 #[test]

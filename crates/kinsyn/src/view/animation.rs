@@ -10,6 +10,7 @@
 //! workspace, a singularity, or (for a walk) a direction that no longer continues smoothly.
 
 use crate::manipulator::{Manipulator, PositionRequest};
+use crate::mechanism::Mechanism;
 use nalgebra::{DMatrix, DVector};
 use serde::Serialize;
 
@@ -159,14 +160,36 @@ pub struct Walk {
 
 /// The motion of `m` from the assembled configuration `start` with the inputs `locked` held,
 /// `steps` steps of [`WALK_STEP`] to either side along the joint rates that move the
-/// end-effector most (the leading right singular vector of its dimensionless twists over the
-/// compatible rates); one configuration when the locks leave nothing to move.
+/// end-effector most ([`walk`] of its mechanism and platform).
 #[must_use]
 pub fn mode_walk(m: &Manipulator, start: &[f64], locked: &[usize], steps: usize) -> Walk {
+    walk(
+        m.mechanism(),
+        m.platform(),
+        start,
+        &m.lock_mask(locked),
+        steps,
+        WALK_STEP,
+    )
+}
+
+/// The motion of `mech` from the assembled configuration `start` with the joints in `mask`
+/// held, `steps` steps of length `step` (dimensionless joint rates) to either side along the
+/// joint rates that move the body `end` most (the leading right singular vector of its
+/// dimensionless twists over the compatible rates), each step closed by Newton's method; one
+/// configuration when the locks leave nothing to move. Without loops (a serial chain) every
+/// rate of the free joints is compatible, and the walk is a straight line in joint space.
+#[must_use]
+pub fn walk(
+    mech: &Mechanism,
+    end: usize,
+    start: &[f64],
+    mask: &[bool],
+    steps: usize,
+    step: f64,
+) -> Walk {
     let steps = steps.clamp(1, MAX_STEPS);
-    let mech = m.mechanism();
-    let mask = m.lock_mask(locked);
-    let Some(direction) = leading_rates(m, start, &mask, None) else {
+    let Some(direction) = leading_rates(mech, end, start, mask, None) else {
         return Walk {
             joint_values: vec![start.to_vec()],
             start: 0,
@@ -183,9 +206,9 @@ pub fn mode_walk(m: &Manipulator, start: &[f64], locked: &[usize], steps: usize)
             let trial: Vec<f64> = q
                 .iter()
                 .enumerate()
-                .map(|(j, v)| v + WALK_STEP * d[j] * mech.unit(j))
+                .map(|(j, v)| v + step * d[j] * mech.unit(j))
                 .collect();
-            let next = match mech.assemble(&trial, &mask, None) {
+            let next = match mech.assemble(&trial, mask, None) {
                 Ok(next) => next,
                 Err(e) => {
                     stops.push(Stop {
@@ -196,7 +219,7 @@ pub fn mode_walk(m: &Manipulator, start: &[f64], locked: &[usize], steps: usize)
                     break;
                 }
             };
-            let Some(turned) = leading_rates(m, &next, &mask, Some(&d)) else {
+            let Some(turned) = leading_rates(mech, end, &next, mask, Some(&d)) else {
                 stops.push(Stop {
                     side,
                     steps: k - 1,
@@ -222,16 +245,16 @@ pub fn mode_walk(m: &Manipulator, start: &[f64], locked: &[usize], steps: usize)
 }
 
 /// A unit vector of dimensionless joint rates (all joints, zero on the locked ones) compatible
-/// with the loops at `q`: without `previous`, the one that moves the end-effector most; with
+/// with the loops at `q`: without `previous`, the one that moves body `end` most; with
 /// it, its projection on the compatible rates, `None` when that keeps less than
 /// [`SMOOTH_CONTINUATION`] of it. `None` also when nothing can move.
 fn leading_rates(
-    m: &Manipulator,
+    mech: &Mechanism,
+    end: usize,
     q: &[f64],
     mask: &[bool],
     previous: Option<&DVector<f64>>,
 ) -> Option<DVector<f64>> {
-    let mech = m.mechanism();
     let n = mech.joints().len();
     let free: Vec<usize> = (0..n).filter(|&j| !mask[j]).collect();
     let mobility = mech.mobility(q, mask);
@@ -254,7 +277,7 @@ fn leading_rates(
     } else {
         let screws = mech.joint_screws(q);
         let physical = DMatrix::from_fn(n, mobility.dof, |j, c| orthonormal[(j, c)] * mech.unit(j));
-        let twists = mech.unitless_twists(&(mech.body_jacobian(m.platform(), &screws) * physical));
+        let twists = mech.unitless_twists(&(mech.body_jacobian(end, &screws) * physical));
         let svd = twists.svd(false, true);
         let v_t = svd.v_t?;
         let top = svd

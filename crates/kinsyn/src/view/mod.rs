@@ -7,14 +7,25 @@
 //! values, by the same product of exponentials as [`crate::mechanism::Mechanism::poses`] (a
 //! second implementation, which the tests compare with this one), and draws them with
 //! three.js (vendored with its licence: no network, no server).
+//!
+//! A catalogue entry's leg chain has its own view ([`chain_view`]): the serial chain of the
+//! catalogue's verification at a generic configuration, with a walk per minimal lock set. The
+//! catalogue site writes three.js and the viewer script once ([`SCRIPT_FILES`]) and each entry
+//! page refers to them ([`Scripts::Linked`]).
 
 mod animation;
+mod chain;
 mod page;
 mod scene;
 
-pub use animation::{InputSweep, MAX_STEPS, Stop, WALK_STEP, Walk, input_sweep, mode_walk};
-pub use page::{THREE_JS_VERSION, page};
-pub use scene::{Between, Scene, SceneBody, SceneJoint, TreeStep};
+pub use animation::{InputSweep, MAX_STEPS, Stop, WALK_STEP, Walk, input_sweep, mode_walk, walk};
+pub use chain::{
+    CHAIN_WALK_STEP, CHAIN_WALK_STEPS, ChainViewError, DECIMALS, chain_view, serial_mechanism,
+};
+pub use page::{
+    LEGEND, SCRIPT_FILES, Scripts, THREE_JS_VERSION, ViewParts, page, page_with, parts,
+};
+pub use scene::{Between, Roles, Scene, SceneBody, SceneJoint, TreeStep};
 
 use serde::Serialize;
 

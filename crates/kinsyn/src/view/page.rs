@@ -43,25 +43,142 @@ button:hover { background: #e9ecef; }
 #kinsyn-state, #kinsyn-checks { display: none; }
 ";
 
-/// The page of `view`: self-contained HTML (no network, no server).
+/// The colours of the drawing, as the legend says them (HTML).
+pub const LEGEND: &str = "<span style=\"background:#f76707\"></span>input\
+    <span style=\"background:#4c6ef5\"></span>passive joint<span style=\"background:#2f9e44\">\
+    </span>end-effector<span style=\"background:#343a40\"></span>ground";
+
+/// Where a page's scripts (three.js, its orbit controls, the viewer) come from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Scripts<'a> {
+    /// In the page, with three.js's licence in a comment: one self-contained file.
+    Inline,
+    /// `<script src>` references to the files of [`SCRIPT_FILES`] at this relative address
+    /// (`../` for a folder above the page, empty for the page's own folder): many pages share
+    /// one copy, with no network either.
+    Linked(&'a str),
+}
+
+/// The files pages with [`Scripts::Linked`] refer to, by name and content, with three.js's
+/// licence.
+pub const SCRIPT_FILES: [(&str, &str); 4] = [
+    ("three.min.js", THREE_JS),
+    ("OrbitControls.js", ORBIT_CONTROLS),
+    ("viewer.js", VIEWER),
+    ("three-LICENSE.txt", THREE_LICENCE),
+];
+
+/// The pieces of a view's page that another page can hold (the catalogue site's entry pages):
+/// with an element `<div id="kinsyn-canvas">` sized by the page's style, they make the view.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct ViewParts {
+    /// What is shown and the start and stop buttons.
+    pub controls: String,
+    /// The input sliders, operation modes and assemblies the script fills in, with their
+    /// headings and the view's notes.
+    pub lists: String,
+    /// The end of the body: the hidden state and check elements, the error collector, the
+    /// data and the scripts.
+    pub scripts: String,
+}
+
+/// The pieces of `view`'s page with its scripts from `scripts`.
 ///
 /// # Panics
 /// Never: a view holds only numbers, strings and lists, which always serialise.
 #[must_use]
-pub fn page(view: &View) -> String {
-    let scene = &view.scene;
+pub fn parts(view: &View, scripts: Scripts) -> ViewParts {
     // The data, as JSON that cannot close the script element holding it.
     let json = serde_json::to_string(view)
         .expect("a view serialises")
         .replace('<', "\\u003c");
-    let mut out = String::with_capacity(THREE_JS.len() + json.len() + 32_000);
+    let controls = "<p>Showing: <span id=\"kinsyn-shown\"></span></p>\n<p class=\"tools\">\
+         <button id=\"kinsyn-reset\">start</button> <button id=\"kinsyn-stop\">stop</button></p>\n"
+        .to_string();
+    let mut lists = String::new();
+    if !view.inputs.is_empty() {
+        let _ = writeln!(
+            lists,
+            "<p class=\"note\">Inputs at the start: {}</p>",
+            escape(&view.inputs.join(", "))
+        );
+    }
+    let _ = writeln!(
+        lists,
+        "<h2>Inputs</h2>\n<p class=\"note\">Each slider moves one input with the others held.</p>\n\
+         <div id=\"kinsyn-sliders\"></div>\n<h2>Operation modes</h2>\n\
+         <p class=\"note\">The motion left when the listed inputs are locked; choose one to animate it.</p>\n\
+         <div id=\"kinsyn-modes\"></div>\n<h2>Assemblies at these inputs</h2>\n<div id=\"kinsyn-assemblies\"></div>"
+    );
+    if !view.notes.is_empty() {
+        lists.push_str("<h2>Notes</h2>\n");
+        for note in &view.notes {
+            let _ = writeln!(lists, "<p class=\"note\">{}</p>", escape(note));
+        }
+    }
+    let licence = match scripts {
+        Scripts::Inline => "this page's source".to_string(),
+        Scripts::Linked(at) => format!(
+            "<a href=\"{0}three-LICENSE.txt\">{0}three-LICENSE.txt</a>",
+            escape(at)
+        ),
+    };
+    let _ = writeln!(
+        lists,
+        "<p class=\"note\">Drawn with three.js {THREE_JS_VERSION} (MIT licence, in {licence}).</p>"
+    );
+    let mut tail = String::with_capacity(json.len() + 1024);
+    let _ = writeln!(
+        tail,
+        "<pre id=\"kinsyn-state\"></pre>\n<pre id=\"kinsyn-checks\"></pre>\n<script>{ERRORS}</script>\n\
+         <script type=\"application/json\" id=\"kinsyn-data\">{json}</script>"
+    );
+    match scripts {
+        Scripts::Inline => {
+            let _ = writeln!(
+                tail,
+                "<!-- three.js {THREE_JS_VERSION}, https://threejs.org, licence:\n{}-->",
+                THREE_LICENCE.replace("--", "- -")
+            );
+            for text in [THREE_JS, ORBIT_CONTROLS, VIEWER] {
+                let _ = writeln!(tail, "<script>{text}</script>");
+            }
+        }
+        Scripts::Linked(at) => {
+            for (name, _) in &SCRIPT_FILES[..3] {
+                let _ = writeln!(tail, "<script src=\"{}{name}\"></script>", escape(at));
+            }
+        }
+    }
+    ViewParts {
+        controls,
+        lists,
+        scripts: tail,
+    }
+}
+
+/// The page of `view`: self-contained HTML (no network, no server).
+#[must_use]
+pub fn page(view: &View) -> String {
+    page_with(view, Scripts::Inline)
+}
+
+/// The page of `view` with its scripts from `scripts`: self-contained when inline, otherwise
+/// beside the files of [`SCRIPT_FILES`] (no network either way).
+#[must_use]
+pub fn page_with(view: &View, scripts: Scripts) -> String {
+    let scene = &view.scene;
+    let parts = parts(view, scripts);
+    let inline = matches!(scripts, Scripts::Inline);
+    let mut out = String::with_capacity(
+        if inline { THREE_JS.len() } else { 0 } + parts.scripts.len() + 32_000,
+    );
     let title = escape(&scene.name);
     let _ = write!(
         out,
         "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n\
          <meta name=\"generator\" content=\"kinsyn {}\">\n<title>{title} — kinsyn view</title>\n\
          <style>{STYLE}</style>\n\
-         <script>{ERRORS}</script>\n\
          </head>\n<body>\n<div id=\"kinsyn-canvas\"></div>\n<aside>\n<h1>{title}</h1>\n",
         env!("CARGO_PKG_VERSION")
     );
@@ -77,52 +194,13 @@ pub fn page(view: &View) -> String {
     );
     let _ = writeln!(
         out,
-        "<p>{}</p>\n<p class=\"legend\"><span style=\"background:#f76707\"></span>input\
-         <span style=\"background:#4c6ef5\"></span>passive joint<span style=\"background:#2f9e44\">\
-         </span>end-effector<span style=\"background:#343a40\"></span>ground</p>",
+        "<p>{}</p>\n<p class=\"legend\">{LEGEND}</p>",
         escape(&view.classification)
     );
-    let _ = writeln!(
-        out,
-        "<p>Showing: <span id=\"kinsyn-shown\"></span></p>\n<p class=\"tools\">\
-         <button id=\"kinsyn-reset\">start</button> <button id=\"kinsyn-stop\">stop</button></p>"
-    );
-    if !view.inputs.is_empty() {
-        let _ = writeln!(
-            out,
-            "<p class=\"note\">Inputs at the start: {}</p>",
-            escape(&view.inputs.join(", "))
-        );
-    }
-    let _ = writeln!(
-        out,
-        "<h2>Inputs</h2>\n<p class=\"note\">Each slider moves one input with the others held.</p>\n\
-         <div id=\"kinsyn-sliders\"></div>\n<h2>Operation modes</h2>\n\
-         <p class=\"note\">The motion left when the listed inputs are locked; choose one to animate it.</p>\n\
-         <div id=\"kinsyn-modes\"></div>\n<h2>Assemblies at these inputs</h2>\n<div id=\"kinsyn-assemblies\"></div>"
-    );
-    if !view.notes.is_empty() {
-        out.push_str("<h2>Notes</h2>\n");
-        for note in &view.notes {
-            let _ = writeln!(out, "<p class=\"note\">{}</p>", escape(note));
-        }
-    }
-    let _ = writeln!(
-        out,
-        "<p class=\"note\">Drawn with three.js {THREE_JS_VERSION} (MIT licence, in this page's \
-         source).</p>\n<pre id=\"kinsyn-state\"></pre>\n<pre id=\"kinsyn-checks\"></pre>\n</aside>"
-    );
-    let _ = writeln!(
-        out,
-        "<script type=\"application/json\" id=\"kinsyn-data\">{json}</script>"
-    );
-    let _ = writeln!(
-        out,
-        "<!-- three.js {THREE_JS_VERSION}, https://threejs.org, licence:\n{}-->",
-        THREE_LICENCE.replace("--", "- -")
-    );
-    let _ = writeln!(out, "<script>{THREE_JS}</script>");
-    let _ = writeln!(out, "<script>{ORBIT_CONTROLS}</script>");
-    let _ = writeln!(out, "<script>{VIEWER}</script>\n</body>\n</html>");
+    out.push_str(&parts.controls);
+    out.push_str(&parts.lists);
+    out.push_str("</aside>\n");
+    out.push_str(&parts.scripts);
+    out.push_str("</body>\n</html>\n");
     out
 }

@@ -5,7 +5,9 @@
 //! [`crate::mechanism::Mechanism::poses`], done again in the page).
 
 use crate::manipulator::Manipulator;
+use crate::mechanism::Mechanism;
 use crate::notation::Primitive;
+use crate::spatial::Displacement;
 use nalgebra::{Matrix3, SymmetricEigen, Vector3};
 use serde::Serialize;
 
@@ -106,20 +108,59 @@ pub struct Scene {
     pub end_effector_origin: [f64; 3],
 }
 
+/// What a scene needs besides its mechanism: the names and units it shows, the joints as drawn
+/// and the roles of the bodies.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Roles {
+    /// The manipulator's or chain's name.
+    pub name: String,
+    /// The length unit.
+    pub length_unit: String,
+    /// The angle unit (`deg` or `rad`).
+    pub angle_unit: &'static str,
+    /// The primitive joints as drawn, indexed as in the mechanism.
+    pub joints: Vec<SceneJoint>,
+    /// The end-effector's body.
+    pub end_effector: usize,
+    /// The other bodies drawn as named bodies (a polygon through their joints), not links.
+    pub named: Vec<usize>,
+    /// The end-effector's frame at the reference configuration (ground frame).
+    pub end_effector_frame: Displacement,
+}
+
 impl Scene {
     /// The scene of manipulator `m`.
     #[must_use]
     pub fn of(m: &Manipulator) -> Self {
-        let mech = m.mechanism();
-        let joints = joints_of(m);
-        let named: Vec<usize> = m.bodies().iter().map(|b| b.body).collect();
+        Self::of_mechanism(
+            m.mechanism(),
+            Roles {
+                name: m.name().to_string(),
+                length_unit: m.units().length.clone(),
+                angle_unit: match m.units().angle {
+                    crate::manipulator::file::AngleUnit::Deg => "deg",
+                    crate::manipulator::file::AngleUnit::Rad => "rad",
+                },
+                joints: joints_of(m),
+                end_effector: m.platform(),
+                named: m.bodies().iter().map(|b| b.body).collect(),
+                end_effector_frame: m.platform_frame(&m.reference()),
+            },
+        )
+    }
+
+    /// The scene of mechanism `mech` with the bodies' and joints' `roles`: the ground is the
+    /// mechanism's, the spanning tree its own (the path of each body from the ground).
+    #[must_use]
+    pub fn of_mechanism(mech: &Mechanism, roles: Roles) -> Self {
+        let joints = roles.joints;
         let bodies = (0..mech.body_count())
             .map(|b| {
                 let role = if b == mech.ground() {
                     "ground"
-                } else if b == m.platform() {
+                } else if b == roles.end_effector {
                     "end-effector"
-                } else if named.contains(&b) {
+                } else if roles.named.contains(&b) {
                     "body"
                 } else {
                     "link"
@@ -153,21 +194,18 @@ impl Scene {
             })
             .collect();
         tree.sort_by_key(|s| mech.path(s.body).len());
-        let frame = m.platform_frame(&m.reference());
+        let frame = roles.end_effector_frame;
         let r = frame.rotation.matrix();
         Scene {
-            name: m.name().to_string(),
-            length_unit: m.units().length.clone(),
-            angle_unit: match m.units().angle {
-                crate::manipulator::file::AngleUnit::Deg => "deg",
-                crate::manipulator::file::AngleUnit::Rad => "rad",
-            },
+            name: roles.name,
+            length_unit: roles.length_unit,
+            angle_unit: roles.angle_unit,
             scale: mech.scale(),
             bodies,
             joints,
             tree,
             ground: mech.ground(),
-            end_effector: m.platform(),
+            end_effector: roles.end_effector,
             end_effector_rotation: std::array::from_fn(|k| r[(k / 3, k % 3)]),
             end_effector_origin: frame.translation.vector.into(),
         }
@@ -236,11 +274,7 @@ fn joints_of(m: &Manipulator) -> Vec<SceneJoint> {
 
 /// Each run of prismatic joints in a leg is drawn evenly spaced between the revolutes around
 /// it (at the one revolute when the run ends the leg).
-fn place_sliders(
-    out: &mut [Option<SceneJoint>],
-    range: std::ops::Range<usize>,
-    mech: &crate::mechanism::Mechanism,
-) {
+fn place_sliders(out: &mut [Option<SceneJoint>], range: std::ops::Range<usize>, mech: &Mechanism) {
     let is_r = |k: usize| mech.joints()[k].kind == Primitive::R;
     let mut k = range.start;
     while k < range.end {
