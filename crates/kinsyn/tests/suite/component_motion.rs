@@ -198,8 +198,8 @@ fn the_mechanism_is_placed_at_the_inputs_its_frames_were_found_at() {
             q[m.actuators()[a].joint]
         );
     }
-    for k in 0..m.bodies().len() {
-        let d = (m.body_frame(k, &q).to_homogeneous() - frames[k].to_homogeneous()).amax();
+    for (k, frame) in frames.iter().enumerate() {
+        let d = (m.body_frame(k, &q).to_homogeneous() - frame.to_homogeneous()).amax();
         assert!(d < 1e-9, "body {k} off by {d:e}");
     }
     // Asked for other crank values, a placement either fails or holds them.
