@@ -36,6 +36,27 @@ pub struct Stop {
     pub reason: String,
 }
 
+impl Stop {
+    /// Side `side` stopped after `steps` steps, for `reason`.
+    fn new(side: i8, steps: usize, reason: &dyn std::fmt::Display) -> Self {
+        Self {
+            side,
+            steps,
+            reason: reason.to_string(),
+        }
+    }
+}
+
+/// The configurations of both sides of a sweep or walk in one list, increasing: the first
+/// side's reversed, the start, the second side's; and the start's index.
+fn joined(sides: &[Vec<Vec<f64>>], start: &[f64]) -> (Vec<Vec<f64>>, usize) {
+    let mut all: Vec<Vec<f64>> = sides[0].iter().rev().cloned().collect();
+    let index = all.len();
+    all.push(start.to_vec());
+    all.extend(sides[1].iter().cloned());
+    (all, index)
+}
+
 /// An input swept with the others held.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct InputSweep {
@@ -93,29 +114,22 @@ pub fn input_sweep(
                     reached.push(q.clone());
                 }
                 Ok(_) => {
-                    stops.push(Stop {
+                    stops.push(Stop::new(
                         side,
-                        steps: k - 1,
-                        reason: "the continuation jumped to another assembly".to_string(),
-                    });
+                        k - 1,
+                        &"the continuation jumped to another assembly",
+                    ));
                     break;
                 }
                 Err(e) => {
-                    stops.push(Stop {
-                        side,
-                        steps: k - 1,
-                        reason: e.to_string(),
-                    });
+                    stops.push(Stop::new(side, k - 1, &e));
                     break;
                 }
             }
         }
         sides.push(reached);
     }
-    let mut joint_values: Vec<Vec<f64>> = sides[0].iter().rev().cloned().collect();
-    let start_index = joint_values.len();
-    joint_values.push(start.to_vec());
-    joint_values.extend(sides[1].iter().cloned());
+    let (joint_values, start_index) = joined(&sides, start);
     let a = &m.actuators()[actuator];
     let (unit, values) = match a.kind {
         crate::notation::Primitive::R => {
@@ -211,20 +225,16 @@ pub fn walk(
             let next = match mech.assemble(&trial, mask, None) {
                 Ok(next) => next,
                 Err(e) => {
-                    stops.push(Stop {
-                        side,
-                        steps: k - 1,
-                        reason: e.to_string(),
-                    });
+                    stops.push(Stop::new(side, k - 1, &e));
                     break;
                 }
             };
             let Some(turned) = leading_rates(mech, end, &next, mask, Some(&d)) else {
-                stops.push(Stop {
+                stops.push(Stop::new(
                     side,
-                    steps: k - 1,
-                    reason: "the motion turns sharply here (a singularity or a branch)".to_string(),
-                });
+                    k - 1,
+                    &"the motion turns sharply here (a singularity or a branch)",
+                ));
                 break;
             };
             d = turned;
@@ -233,10 +243,7 @@ pub fn walk(
         }
         sides.push(reached);
     }
-    let mut joint_values: Vec<Vec<f64>> = sides[0].iter().rev().cloned().collect();
-    let start_index = joint_values.len();
-    joint_values.push(start.to_vec());
-    joint_values.extend(sides[1].iter().cloned());
+    let (joint_values, start_index) = joined(&sides, start);
     Walk {
         joint_values,
         start: start_index,

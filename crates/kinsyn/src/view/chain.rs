@@ -242,19 +242,13 @@ fn scene_joints(entry: &Entry, chain: &SerialChain, mech: &Mechanism) -> Vec<Sce
                 .get(k)
                 .copied()
                 .unwrap_or((spec.kind.letter(), usize::MAX - k));
-            SceneJoint {
-                label: format!("{}{}", spec.kind.letter(), k + 1),
-                kind: spec.kind.letter(),
-                group,
-                group_id,
-                leg: 1,
-                from: spec.from,
-                to: spec.to,
-                actuated: false,
-                axis: spec.axis.into(),
-                point: spec.point.into(),
-                between: None,
-            }
+            SceneJoint::of(
+                spec,
+                format!("{}{}", spec.kind.letter(), k + 1),
+                (group, group_id),
+                1,
+                false,
+            )
         })
         .collect()
 }

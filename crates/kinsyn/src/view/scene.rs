@@ -55,6 +55,34 @@ pub struct SceneJoint {
     pub between: Option<Between>,
 }
 
+impl SceneJoint {
+    /// The joint `spec` as drawn: named `label`, part of the description joint `group` (its
+    /// letter and identifier), on leg `leg` (from 1; 0 for none), an input or not; where a
+    /// slider is drawn is set afterwards.
+    #[must_use]
+    pub fn of(
+        spec: &crate::mechanism::JointSpec,
+        label: String,
+        (group, group_id): (char, usize),
+        leg: usize,
+        actuated: bool,
+    ) -> Self {
+        Self {
+            label,
+            kind: spec.kind.letter(),
+            group,
+            group_id,
+            leg,
+            from: spec.from,
+            to: spec.to,
+            actuated,
+            axis: spec.axis.into(),
+            point: spec.point.into(),
+            between: None,
+        }
+    }
+}
+
 /// Where a prismatic joint is drawn: a fraction of the way between two revolute sites.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct Between {
@@ -224,24 +252,18 @@ fn joints_of(m: &Manipulator) -> Vec<SceneJoint> {
         for joint in leg.chain.joints() {
             for _ in joint.kind.primitives() {
                 let spec = &mech.joints()[k];
-                out[k] = Some(SceneJoint {
-                    label: format!(
+                out[k] = Some(SceneJoint::of(
+                    spec,
+                    format!(
                         "{}{}.{}",
                         spec.kind.letter(),
                         i + 1,
                         k - leg.joints.start + 1
                     ),
-                    kind: spec.kind.letter(),
-                    group: joint.kind.letter(),
-                    group_id,
-                    leg: i + 1,
-                    from: spec.from,
-                    to: spec.to,
-                    actuated: actuated.contains(&k),
-                    axis: spec.axis.into(),
-                    point: spec.point.into(),
-                    between: None,
-                });
+                    (joint.kind.letter(), group_id),
+                    i + 1,
+                    actuated.contains(&k),
+                ));
                 k += 1;
             }
             group_id += 1;
@@ -254,19 +276,13 @@ fn joints_of(m: &Manipulator) -> Vec<SceneJoint> {
         .map(|(k, j)| {
             j.unwrap_or_else(|| {
                 let spec = &mech.joints()[k];
-                SceneJoint {
-                    label: format!("joint {}", k + 1),
-                    kind: spec.kind.letter(),
-                    group: spec.kind.letter(),
-                    group_id: usize::MAX - k,
-                    leg: 0,
-                    from: spec.from,
-                    to: spec.to,
-                    actuated: actuated.contains(&k),
-                    axis: spec.axis.into(),
-                    point: spec.point.into(),
-                    between: None,
-                }
+                SceneJoint::of(
+                    spec,
+                    format!("joint {}", k + 1),
+                    (spec.kind.letter(), usize::MAX - k),
+                    0,
+                    actuated.contains(&k),
+                )
             })
         })
         .collect()
