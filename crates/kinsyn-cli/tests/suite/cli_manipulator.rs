@@ -548,8 +548,8 @@ fn review_findings_stay_fixed() {
     ]);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     assert!(
-        stdout(&o).contains("rotation vector [0.000000, 0.000000, -3.141593]")
-            || stdout(&o).contains("rotation vector [0.000000, 0.000000, 3.141593]"),
+        stdout(&o).contains("rotation vector [0.000000, 0.000000, -180.000000] deg")
+            || stdout(&o).contains("rotation vector [0.000000, 0.000000, 180.000000] deg"),
         "{}",
         stdout(&o)
     );

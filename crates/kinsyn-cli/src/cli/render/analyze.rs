@@ -126,7 +126,10 @@ fn study_text(r: &AnalyzeReport) -> String {
 fn configuration_text(m: &Manipulator, r: &AnalyzeReport) -> String {
     let mut s = String::new();
     let [px, py, pz] = r.point;
-    let [rx, ry, rz] = r.platform_rotation_vector_rad;
+    // In the description's angle unit, as `--pose` takes it and `modes` prints it.
+    let [rx, ry, rz] = r
+        .platform_rotation_vector_rad
+        .map(|a| m.units().angle.from_radians(a));
     let title = if m.bodies().len() > 1 {
         format!("{}, end-effector {:?}", r.manipulator, r.end_effector)
     } else {
@@ -134,7 +137,7 @@ fn configuration_text(m: &Manipulator, r: &AnalyzeReport) -> String {
     };
     let _ = writeln!(
         s,
-        "{title}: P = [{:.6}, {:.6}, {:.6}] {}; platform rotation vector [{:.6}, {:.6}, {:.6}] rad; locked: {}",
+        "{title}: P = [{:.6}, {:.6}, {:.6}] {}; platform rotation vector [{:.6}, {:.6}, {:.6}] {}; locked: {}",
         clean(px),
         clean(py),
         clean(pz),
@@ -142,6 +145,10 @@ fn configuration_text(m: &Manipulator, r: &AnalyzeReport) -> String {
         clean(rx),
         clean(ry),
         clean(rz),
+        match m.units().angle {
+            kinsyn::manipulator::file::AngleUnit::Deg => "deg",
+            kinsyn::manipulator::file::AngleUnit::Rad => "rad",
+        },
         r.locked
     );
     if !r.continuous_with_start {
