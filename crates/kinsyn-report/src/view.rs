@@ -19,6 +19,22 @@ pub const DEFAULT_STEPS: usize = 16;
 /// locks beyond.
 pub const MAX_MODE_SUBSETS: u128 = 256;
 
+/// The most configurations a page holds (sweeps and walks together): each is a continuation
+/// step or a Newton closure before the page is written, and a row of joint values in it.
+pub const MAX_CONFIGURATIONS: usize = 8192;
+
+/// The configurations already counted plus `walks` more of `steps` to either side, or the
+/// refusal when that passes [`MAX_CONFIGURATIONS`]: `what` names the walks.
+fn counted(so_far: usize, walks: usize, steps: usize, what: &str) -> Result<usize, Error> {
+    let total = so_far.saturating_add(walks.saturating_mul(2 * steps + 1));
+    if total > MAX_CONFIGURATIONS {
+        return Err(Error::Input(format!(
+            "--steps {steps}: {what} would bring the page to {total} configurations, beyond the {MAX_CONFIGURATIONS} it holds (docs/limits.md); give fewer --steps"
+        )));
+    }
+    Ok(total)
+}
+
 /// How far a sweep moves a revolute input to either side (radians): 30°.
 pub const REVOLUTE_SPAN: f64 = std::f64::consts::PI / 6.0;
 
@@ -63,7 +79,9 @@ impl Default for ViewOptions {
 ///
 /// # Errors
 /// [`Error::Input`] for inputs that do not read or that the manipulator cannot reach from its
-/// reference configuration, and steps out of range.
+/// reference configuration, steps out of range, and a page that would hold more than
+/// [`MAX_CONFIGURATIONS`] (known before the sweeps from the inputs, before the walks from the
+/// patterns reached), and the decomposition's refusal with `components`.
 pub fn view_of(m: &Manipulator, options: &ViewOptions) -> Result<View, Error> {
     if options.steps == 0 || options.steps > kinsyn::view::MAX_STEPS {
         return Err(Error::Input(format!(
@@ -73,11 +91,17 @@ pub fn view_of(m: &Manipulator, options: &ViewOptions) -> Result<View, Error> {
         )));
     }
     let inputs = inputs_or_reference(m, options.inputs.as_deref())?;
+    let mut budget = counted(
+        0,
+        m.actuators().len(),
+        options.steps,
+        &format!("the sweeps of {} inputs", m.actuators().len()),
+    )?;
     let mut notes = Vec::new();
     // The decomposition first: where the inputs leave a self-motion, its real point is the
     // start the continuation cannot give.
     let found = if options.components {
-        components(m, options, &mut notes)?
+        components(m, options, &mut budget, &mut notes)?
     } else {
         Vec::new()
     };
@@ -112,16 +136,27 @@ pub fn view_of(m: &Manipulator, options: &ViewOptions) -> Result<View, Error> {
         free.dof,
         free.pattern_text()
     );
+    // Progress on stderr when it is a terminal (the HEXA's sweeps take seconds).
+    let bar = crate::terminal::progress(m.actuators().len(), "inputs", "view: sweeps");
     let sweeps = (0..m.actuators().len())
         .map(|a| {
             let span = match m.actuators()[a].kind {
                 Primitive::R => REVOLUTE_SPAN,
                 Primitive::P => SLIDER_SPAN * m.mechanism().scale(),
             };
-            input_sweep(m, &start, a, span, options.steps)
+            let sweep = input_sweep(m, &start, a, span, options.steps);
+            bar.inc(1);
+            sweep
         })
         .collect();
-    let mut modes = modes(m, &start, &settings, options.steps, &mut notes);
+    bar.finish_and_clear();
+    let mut modes = modes(
+        m,
+        &start,
+        &settings,
+        (options.steps, &mut budget),
+        &mut notes,
+    )?;
     modes.extend(found);
     let assemblies = if options.assemblies {
         assemblies(m, options, &mut notes)
@@ -149,9 +184,9 @@ fn modes(
     m: &Manipulator,
     start: &[f64],
     settings: &SampleSettings,
-    steps: usize,
+    (steps, budget): (usize, &mut usize),
     notes: &mut Vec<String>,
-) -> Vec<ModeView> {
+) -> Result<Vec<ModeView>, Error> {
     let n = m.actuators().len();
     let max_locks = (0..=n)
         .take_while(|&k| m.lock_subset_count(k) <= MAX_MODE_SUBSETS)
@@ -163,7 +198,17 @@ fn modes(
             m.lock_subset_count(max_locks)
         ));
     }
-    let sampled = m.modes_from(start, &m.lock_subsets(max_locks), settings, &|| {});
+    let subsets = m.lock_subsets(max_locks);
+    let bar = crate::terminal::progress(subsets.len(), "lock subsets", "view: modes");
+    let sampled = m.modes_from(start, &subsets, settings, &|| bar.inc(1));
+    bar.finish_and_clear();
+    let patterns = sampled.groups.len() + sampled.non_groups.len();
+    *budget = counted(
+        *budget,
+        patterns,
+        steps,
+        &format!("the walks of {patterns} operation modes"),
+    )?;
     let mut out = Vec::new();
     for p in sampled.groups.iter().chain(&sampled.non_groups) {
         let Some(text) = p.lock_sets.first() else {
@@ -196,7 +241,7 @@ fn modes(
             sampled.singular_starts.join("; ")
         ));
     }
-    out
+    Ok(out)
 }
 
 /// One walk per component of the global decomposition (`kinsyn components`) that has a real
@@ -206,6 +251,7 @@ fn modes(
 fn components(
     m: &Manipulator,
     options: &ViewOptions,
+    budget: &mut usize,
     notes: &mut Vec<String>,
 ) -> Result<Vec<ModeView>, Error> {
     let asked = ComponentsOptions {
@@ -227,6 +273,16 @@ fn components(
     let Decomposed::Manipulator { mechanism, .. } = &found.decomposed else {
         return Ok(Vec::new());
     };
+    let moving = mechanism
+        .iter()
+        .filter(|on| matches!(on, Some(Ok(c)) if c.mode.dof > 0))
+        .count();
+    *budget = counted(
+        *budget,
+        moving,
+        options.steps,
+        &format!("the walks of {moving} components"),
+    )?;
     let mut out = Vec::new();
     let (mut complex, mut unplaced) = (0, 0);
     for (k, on) in mechanism.iter().enumerate() {

@@ -245,6 +245,34 @@ fn view_refuses_bad_requests_in_one_line() {
         assert_refused(&kinsyn(&args), &args.join(" "), &needles);
         assert!(!Path::new(out).exists(), "{args:?} wrote the page");
     }
+    // 18 inputs at 200 steps: their sweeps (18 × 401 configurations) and the walks of the
+    // patterns reached pass the page's 8 192; refused before any walk.
+    let ups = dir.path().join("ups18.json");
+    let o = kinsyn(&[
+        "build",
+        "--legs",
+        "6",
+        "--chain",
+        "U(!,!)P!S",
+        "-o",
+        ups.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{o:?}");
+    let args = [
+        "view",
+        ups.to_str().unwrap(),
+        "--out",
+        out,
+        "--steps",
+        "200",
+        "--no-assemblies",
+    ];
+    assert_refused(
+        &kinsyn(&args),
+        "18 inputs at 200 steps",
+        &["--steps 200", "8192", "fewer --steps"],
+    );
+    assert!(!Path::new(out).exists(), "the refused page was written");
     let o = kinsyn(&[
         "view",
         "mechanisms/3-rrr-planar.json",
