@@ -43,21 +43,11 @@ impl ExportTree {
             .collect();
         let mut order: Vec<usize> = (0..joints.len()).collect();
         order.sort_by_key(|&j| (!actuated[j], joints[j].kind == Primitive::R));
-        let mut set: Vec<usize> = (0..mech.body_count()).collect();
-        let find = |set: &mut Vec<usize>, mut b: usize| {
-            while set[b] != b {
-                set[b] = set[set[b]];
-                b = set[b];
-            }
-            b
-        };
+        // Kruskal: a joint enters the tree when it joins two bodies not yet connected.
+        let mut connected = petgraph::unionfind::UnionFind::<usize>::new(mech.body_count());
         let mut in_tree = vec![false; joints.len()];
         for &j in &order {
-            let (a, b) = (find(&mut set, joints[j].from), find(&mut set, joints[j].to));
-            if a != b {
-                set[a] = b;
-                in_tree[j] = true;
-            }
+            in_tree[j] = connected.union(joints[j].from, joints[j].to);
         }
         let mut parent = vec![None; mech.body_count()];
         let mut reached = vec![false; mech.body_count()];

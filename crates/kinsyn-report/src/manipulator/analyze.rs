@@ -3,7 +3,7 @@
 
 use super::{Loaded, leg_warnings, load_with_body};
 use crate::Error;
-use kinsyn::manipulator::file::{AngleUnit, Units};
+use kinsyn::manipulator::file::Units;
 use kinsyn::manipulator::{
     Analysis, ContinuationFailure, Manipulator, ManipulatorError, PRINTED_STUDY_TOLERANCE,
     PositionError, PositionRequest, RowKind, Singularity,
@@ -261,10 +261,7 @@ fn nearest_study(
     }
     let units = m.units();
     let angle = units.angle;
-    let angle_name = match angle {
-        AngleUnit::Deg => "deg",
-        AngleUnit::Rad => "rad",
-    };
+    let angle_name = angle.symbol();
     let length = units.length.clone();
     let nearest = match m.nearest_study(start, sets, PRINTED_STUDY_TOLERANCE, rounding) {
         Ok(n) => n,

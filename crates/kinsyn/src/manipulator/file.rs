@@ -87,6 +87,15 @@ impl AngleUnit {
         }
     }
 
+    /// The unit's symbol, as descriptions write it and reports print it: `deg` or `rad`.
+    #[must_use]
+    pub fn symbol(self) -> &'static str {
+        match self {
+            AngleUnit::Deg => "deg",
+            AngleUnit::Rad => "rad",
+        }
+    }
+
     /// The unit's name in words: `degrees` or `radians`.
     #[must_use]
     pub fn name(self) -> &'static str {

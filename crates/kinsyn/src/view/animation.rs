@@ -135,11 +135,7 @@ pub fn input_sweep(
         crate::notation::Primitive::R => {
             let angle = m.units().angle;
             (
-                match angle {
-                    crate::manipulator::file::AngleUnit::Deg => "deg",
-                    crate::manipulator::file::AngleUnit::Rad => "rad",
-                }
-                .to_string(),
+                angle.symbol().to_string(),
                 joint_values
                     .iter()
                     .map(|q| angle.from_radians(q[joint]))
@@ -274,7 +270,7 @@ fn leading_rates(
             .position(|&f| f == j)
             .map_or(0.0, |k| mobility.rates[(k, c)] / mech.unit(j))
     });
-    let orthonormal = basis.clone().qr().q();
+    let orthonormal = basis.qr().q();
     let chosen = if let Some(d) = previous {
         let projected = &orthonormal * (orthonormal.transpose() * d);
         if projected.norm() < SMOOTH_CONTINUATION * d.norm() {

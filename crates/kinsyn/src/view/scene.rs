@@ -165,10 +165,7 @@ impl Scene {
             Roles {
                 name: m.name().to_string(),
                 length_unit: m.units().length.clone(),
-                angle_unit: match m.units().angle {
-                    crate::manipulator::file::AngleUnit::Deg => "deg",
-                    crate::manipulator::file::AngleUnit::Rad => "rad",
-                },
+                angle_unit: m.units().angle.symbol(),
                 joints: joints_of(m),
                 end_effector: m.platform(),
                 named: m.bodies().iter().map(|b| b.body).collect(),

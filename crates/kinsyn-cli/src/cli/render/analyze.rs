@@ -145,10 +145,7 @@ fn configuration_text(m: &Manipulator, r: &AnalyzeReport) -> String {
         clean(rx),
         clean(ry),
         clean(rz),
-        match m.units().angle {
-            kinsyn::manipulator::file::AngleUnit::Deg => "deg",
-            kinsyn::manipulator::file::AngleUnit::Rad => "rad",
-        },
+        m.units().angle.symbol(),
         r.locked
     );
     if !r.continuous_with_start {
